@@ -1,0 +1,30 @@
+# glad generates the GL 4.5 core and EGL 1.5 loaders at configure time, into the build tree.
+# --reproducible makes it use the spec shipped with the package (no download: we are offline).
+set(OCEAN_GLAD_DIR "${CMAKE_BINARY_DIR}/glad")
+set(OCEAN_GLAD_EXTENSIONS
+  GL_KHR_debug
+  EGL_EXT_platform_base EGL_EXT_platform_device EGL_EXT_device_base EGL_EXT_device_enumeration
+  EGL_EXT_device_query EGL_MESA_platform_surfaceless EGL_KHR_create_context
+  EGL_KHR_surfaceless_context EGL_KHR_no_config_context)
+string(REPLACE ";" "," _glad_ext "${OCEAN_GLAD_EXTENSIONS}")
+set(_glad_args --quiet --reproducible --api gl:core=4.5,egl=1.5 --extensions ${_glad_ext}
+    --out-path "${OCEAN_GLAD_DIR}" c --loader)
+set(_glad_stamp "${OCEAN_GLAD_DIR}/args.txt")
+
+if(EXISTS "${_glad_stamp}")
+  file(READ "${_glad_stamp}" _glad_previous)
+endif()
+if(NOT "${_glad_previous}" STREQUAL "${_glad_args}" OR NOT EXISTS "${OCEAN_GLAD_DIR}/src/gl.c")
+  message(STATUS "Generating the GL/EGL loader with glad")
+  execute_process(COMMAND "${GLAD_EXECUTABLE}" ${_glad_args}
+                  RESULT_VARIABLE _glad_result ERROR_VARIABLE _glad_error)
+  if(NOT _glad_result EQUAL 0)
+    message(FATAL_ERROR "glad failed (${_glad_result}):\n${_glad_error}")
+  endif()
+  file(WRITE "${_glad_stamp}" "${_glad_args}")
+endif()
+
+add_library(glad STATIC "${OCEAN_GLAD_DIR}/src/gl.c" "${OCEAN_GLAD_DIR}/src/egl.c")
+target_include_directories(glad SYSTEM PUBLIC "${OCEAN_GLAD_DIR}/include")
+target_link_libraries(glad PUBLIC ${CMAKE_DL_LIBS})
+set_target_properties(glad PROPERTIES POSITION_INDEPENDENT_CODE ON)

@@ -1,0 +1,262 @@
+#include "common/app.hpp"
+
+#include "common/error.hpp"
+#include "common/gl_debug.hpp"
+#include "common/image.hpp"
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace ocean {
+
+namespace fs = std::filesystem;
+
+App::App(StepInfo info) : info_(std::move(info)) {}
+
+App::~App() {
+    programs_.clear();
+    empty_vao_.reset();
+    timers_ = GpuTimers();
+    shutdown_imgui();
+}
+
+int App::run(int argc, char** argv, const StepLocation& where) {
+    return run(std::vector<std::string>(argv + 1, argv + argc), where);
+}
+
+int App::run(const std::vector<std::string>& args, const StepLocation& where) {
+    where_ = where;
+    const ParseResult parsed = parse_command_line(args);
+    auto fail = [](ExitCode code, const std::string& message) {
+        std::cerr << "error: " << message << std::endl;
+        return int(code);
+    };
+    if (parsed.error) return fail(kExitUsage, *parsed.error);
+    const Options& options = parsed.options;
+    if (options.help) {
+        std::cout << usage_text(step_name(), info_.title + " (seed " + info_.seed_sections + ")");
+        return kExitOk;
+    }
+    if (options.list_params) {
+        std::cout << params_.list_text();
+        return kExitOk;
+    }
+    if (!options.preset.empty())
+        if (auto error = params_.load_preset(options.preset)) return fail(kExitUsage, *error);
+    for (const auto& assignment : options.sets)
+        if (auto error = params_.set_assignment(assignment)) return fail(kExitUsage, *error);
+    if (!options.save_preset.empty()) {
+        if (auto error = params_.save_preset(options.save_preset, step_name() + " preset"))
+            return fail(kExitRuntimeError, *error);
+        std::cout << "preset: " << options.save_preset << "\n";
+        return kExitOk;
+    }
+    try {
+        return run_loop(options);
+    } catch (const Error& e) {
+        return fail(kExitRuntimeError, e.what());
+    }
+}
+
+float App::aspect() const {
+    return framebuffer_size_.y > 0 ? float(framebuffer_size_.x) / float(framebuffer_size_.y) : 1.0f;
+}
+
+bool App::headless() const { return context_ && context_->headless(); }
+
+void App::bind_target() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, context_->target_framebuffer());
+    glViewport(0, 0, framebuffer_size_.x, framebuffer_size_.y);
+}
+
+void App::draw_fullscreen_triangle() const {
+    glBindVertexArray(empty_vao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void App::use_camera(glm::vec3 target, float distance, float yaw_deg, float pitch_deg) {
+    camera_.declare_params(params_, target, distance, yaw_deg, pitch_deg);
+    camera_enabled_ = true;
+}
+
+ShaderProgram& App::load_program(const std::string& name, const std::vector<std::string>& stage_files) {
+    // A file the step does not have comes from common/shaders (fullscreen.vert, for one).
+    std::vector<std::string> paths;
+    for (const auto& file : stage_files) {
+        const fs::path own = fs::path(shader_dir_) / file;
+        const fs::path shared = fs::path(OCEAN_SOURCE_DIR) / "common" / "shaders" / file;
+        paths.push_back((fs::exists(own) || !fs::exists(shared) ? own : shared).string());
+    }
+    auto program = std::make_unique<ShaderProgram>(name, paths);
+    if (auto error = program->build())
+        throw Error("shader program '" + name + "' does not build: " + first_line_summary(*error));
+    programs_.push_back(std::move(program));
+    return *programs_.back();
+}
+
+void App::reload_changed_shaders() {
+    for (auto& program : programs_) {
+        if (!program->sources_changed()) continue;
+        if (auto error = program->build()) {
+            std::cerr << "shader reload failed, keeping the last good '" << program->name()
+                      << "':\n" << *error;
+            panel_message_ = "reload failed (last good program kept):\n" + *error;
+        } else {
+            std::cerr << "shader '" << program->name() << "' reloaded\n";
+            panel_message_.clear();
+        }
+    }
+}
+
+int App::run_loop(const Options& options) {
+    const bool headless = options.headless || !display_available();
+    if (!options.headless && headless) std::cout << "no display: rendering headless\n";
+    shader_dir_ = options.shader_dir.empty() ? where_.dir + "/shaders" : options.shader_dir;
+    if (!fs::is_directory(shader_dir_)) throw Error("shader directory '" + shader_dir_ + "' does not exist");
+
+    context_ = Context::create({headless, options.width, options.height, step_name()});
+    enable_gl_debug_output();
+    std::cout << step_name() << ": " << context_->description() << "\n";
+    empty_vao_ = make_vertex_array();
+    timers_.set_enabled(options.bench);
+    framebuffer_size_ = context_->framebuffer_size();
+    init_imgui();
+    init();
+
+    const int frame_limit = options.frames > 0 ? options.frames : (headless ? 10 : 0);
+    const bool fixed_clock = options.start_time.has_value() || options.fixed_dt.has_value();
+    const double fixed_dt = options.fixed_dt.value_or(0.0);
+    time_ = options.start_time.value_or(0.0);
+    panel_visible_ = !headless || options.show_ui;
+
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    auto previous = start;
+    auto bench_start = start;
+    Image screenshot;
+    int frame = 0;
+    for (; frame_limit == 0 || frame < frame_limit; ++frame) {
+        context_->poll_events();
+        if (context_->should_close()) break;
+        const auto now = clock::now();
+        const double real_dt = std::chrono::duration<double>(now - previous).count();
+        const double wall = std::chrono::duration<double>(now - start).count();
+        previous = now;
+        if (frame == 1) bench_start = now;  // the first frame pays for compilation and uploads
+        const double dt = paused_ ? 0.0 : (fixed_clock ? fixed_dt : real_dt);
+        if (frame > 0) time_ += dt;
+
+        if (wall - last_reload_check_ > 0.5) {
+            last_reload_check_ = wall;
+            reload_changed_shaders();
+        }
+        framebuffer_size_ = context_->framebuffer_size();
+        if (camera_enabled_) camera_.apply(read_camera_input(), float(real_dt));
+
+        ImGui_ImplOpenGL3_NewFrame();
+        if (context_->window() != nullptr) {
+            ImGui_ImplGlfw_NewFrame();
+        } else {
+            ImGui::GetIO().DisplaySize = ImVec2(float(framebuffer_size_.x), float(framebuffer_size_.y));
+            ImGui::GetIO().DeltaTime = float(dt > 0 ? dt : 1.0 / 60.0);
+        }
+        ImGui::NewFrame();
+        draw_panel(float(real_dt * 1000.0));
+        ImGui::Render();
+
+        update(time_, dt);
+        if (framebuffer_size_.x > 0 && framebuffer_size_.y > 0) {  // zero while minimised
+            bind_target();
+            render();
+            if (panel_visible_) {
+                bind_target();
+                ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            }
+        }
+        check_gl_errors("the frame");
+        const bool last = frame_limit > 0 && frame + 1 == frame_limit;
+        if (last && (!options.screenshot.empty() || headless))
+            screenshot = read_framebuffer(context_->target_framebuffer(), framebuffer_size_.x,
+                                          framebuffer_size_.y);
+        context_->swap_buffers();
+        timers_.collect();
+    }
+    const double bench_seconds = std::chrono::duration<double>(clock::now() - bench_start).count();
+
+    if (!screenshot.rgba.empty()) {
+        const std::string path = options.screenshot.empty() ? "screenshots/" + step_name() + ".png"
+                                                            : options.screenshot;
+        const fs::path parent = fs::path(path).parent_path();
+        std::error_code ec;
+        if (!parent.empty()) fs::create_directories(parent, ec);
+        if (auto error = save_png(screenshot, path)) throw Error(*error);
+        std::cout << "screenshot: " << fs::absolute(path).string() << "\n";
+    }
+    if (options.bench) std::cout << timers_.report(bench_seconds, std::max(0, frame - 1));
+
+    const GlDebugStats& gl = gl_debug_stats();
+    if (gl.errors > 0 && headless) {
+        std::cerr << "error: " << gl.errors << " OpenGL error(s) in a headless run; first: "
+                  << gl.first_error << std::endl;
+        return kExitGlError;
+    }
+    return kExitOk;
+}
+
+void App::on_scroll(GLFWwindow* window, double /*dx*/, double dy) {
+    auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    if (app != nullptr && !ImGui::GetIO().WantCaptureMouse) app->scroll_accumulated_ += float(dy);
+}
+
+void App::init_imgui() {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini files left in the working directory
+    ImGui::StyleColorsDark();
+    if (GLFWwindow* window = context_->window()) {
+        glfwSetWindowUserPointer(window, this);
+        glfwSetScrollCallback(window, &App::on_scroll);  // before ImGui, which chains to it
+        ImGui_ImplGlfw_InitForOpenGL(window, true);
+    }
+    if (!ImGui_ImplOpenGL3_Init("#version 450 core"))
+        throw Error("ImGui's OpenGL 3 backend cannot start on this context");
+    imgui_ready_ = true;
+}
+
+void App::shutdown_imgui() {
+    if (!imgui_ready_) return;
+    ImGui_ImplOpenGL3_Shutdown();
+    if (context_ && context_->window() != nullptr) ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    imgui_ready_ = false;
+}
+
+CameraInput App::read_camera_input() {
+    CameraInput input;
+    GLFWwindow* window = context_->window();
+    if (window == nullptr) return input;
+    const ImGuiIO& io = ImGui::GetIO();
+    glm::dvec2 mouse;
+    glfwGetCursorPos(window, &mouse.x, &mouse.y);
+    if (!io.WantCaptureMouse && glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS)
+        input.drag = glm::vec2(mouse - last_mouse_);
+    last_mouse_ = mouse;
+    input.scroll = std::exchange(scroll_accumulated_, 0.0f);
+    if (!io.WantCaptureKeyboard) {
+        auto key = [&](int k) { return glfwGetKey(window, k) == GLFW_PRESS ? 1.0f : 0.0f; };
+        input.move = {key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
+                      key(GLFW_KEY_W) - key(GLFW_KEY_S)};
+        input.fast = key(GLFW_KEY_LEFT_SHIFT) > 0;
+    }
+    if (input.drag != glm::vec2(0.0f) || input.scroll != 0.0f) params_.mark_changed();
+    return input;
+}
+
+}  // namespace ocean

@@ -1,0 +1,118 @@
+// The base class of every step. A step declares its parameters in its constructor, then
+// overrides a few hooks; the framework owns the context, the run loop, the clock, input, the
+// ImGui panel, shaders, screenshots and benchmarks.
+//
+//   class Step02 : public ocean::App {
+//       Step02() : App({"Sum of sines in 3D", "1.2.2", "..."}) { params().add_float(...); }
+//       void init() override;                        // GL resources, programs
+//       void update(double time, double dt) override; // simulation
+//       void render() override;                      // draw into the bound target
+//       void ui() override;                          // extra panel widgets (optional)
+//   };
+//   OCEAN_MAIN(Step02)
+#pragma once
+
+#include "common/camera.hpp"
+#include "common/cli.hpp"
+#include "common/context.hpp"
+#include "common/gpu_timer.hpp"
+#include "common/params.hpp"
+#include "common/shader.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ocean {
+
+struct StepInfo {
+    std::string title;          // "Sum of sines in 3D"
+    std::string seed_sections;  // "1.2.2"
+    std::string description;    // a paragraph: what the step shows and what is new
+};
+
+struct StepLocation {
+    std::string name;  // "step02_sine3d": folder, target and window title
+    std::string dir;   // the step's source folder, where shaders/ lives
+};
+
+// Exit statuses, the same for every step (README: "Exit status").
+enum ExitCode { kExitOk = 0, kExitRuntimeError = 1, kExitUsage = 2, kExitGlError = 3 };
+
+class App {
+public:
+    explicit App(StepInfo info);
+    virtual ~App();
+    App(const App&) = delete;
+    App& operator=(const App&) = delete;
+
+    // `where` names the step's folder and target (OCEAN_MAIN passes what CMake fixed).
+    int run(int argc, char** argv, const StepLocation& where);
+    int run(const std::vector<std::string>& args, const StepLocation& where);
+
+    const StepInfo& info() const { return info_; }
+    const std::string& step_name() const { return where_.name; }
+
+protected:
+    virtual void init() {}
+    virtual void update(double /*time*/, double /*dt*/) {}
+    virtual void render() = 0;
+    virtual void ui() {}
+
+    ParamRegistry& params() { return params_; }
+    // Loads a program from files in the step's shaders/ folder (or --shader-dir); throws
+    // ocean::Error at start-up if it does not build. It then hot-reloads on its own.
+    ShaderProgram& load_program(const std::string& name, const std::vector<std::string>& stage_files);
+    // Declares the camera_* parameters and turns on mouse/keyboard camera control.
+    void use_camera(glm::vec3 target, float distance, float yaw_deg, float pitch_deg);
+    Camera& camera() { return camera_; }
+    GpuTimers& timers() { return timers_; }
+
+    glm::ivec2 framebuffer_size() const { return framebuffer_size_; }
+    float aspect() const;
+    double time() const { return time_; }
+    bool headless() const;
+    // Binds the output framebuffer (window or offscreen) with a full viewport.
+    void bind_target() const;
+    // One triangle that covers the screen; pair with common/shaders/fullscreen.vert.
+    void draw_fullscreen_triangle() const;
+
+private:
+    int run_loop(const Options& options);
+    void init_imgui();
+    void shutdown_imgui();
+    void reload_changed_shaders();
+    void draw_panel(float frame_ms);
+    CameraInput read_camera_input();
+    static void on_scroll(struct GLFWwindow* window, double dx, double dy);
+
+    StepInfo info_;
+    StepLocation where_;
+    ParamRegistry params_;
+    Camera camera_;
+    bool camera_enabled_ = false;
+    // Declared before every GL object below so that it is destroyed after them.
+    std::unique_ptr<Context> context_;
+    std::vector<std::unique_ptr<ShaderProgram>> programs_;
+    std::string shader_dir_;
+    GpuTimers timers_;
+    VertexArray empty_vao_;
+    glm::ivec2 framebuffer_size_{0};
+    double time_ = 0;
+    bool paused_ = false;
+    bool panel_visible_ = true;
+    bool imgui_ready_ = false;
+    float scroll_accumulated_ = 0;
+    glm::dvec2 last_mouse_{0.0};
+    std::string preset_path_ = "preset.txt";
+    std::string panel_message_;
+    double last_reload_check_ = 0;
+};
+
+}  // namespace ocean
+
+#define OCEAN_MAIN(StepClass)                 \
+    int main(int argc, char** argv) {         \
+        StepClass app;                        \
+        return app.run(argc, argv, {OCEAN_STEP_NAME, OCEAN_STEP_DIR}); \
+    }

@@ -1,0 +1,60 @@
+#include "common/camera.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ocean {
+
+void Camera::declare_params(ParamRegistry& params, glm::vec3 initial_target, float initial_distance,
+                            float initial_yaw, float initial_pitch) {
+    params.add_choice("camera_mode", &mode, Orbit, {"orbit", "fly"},
+                      "orbit turns around the target; fly moves the eye (WASD, Q/E)").in_group("camera");
+    params.add_float("camera_yaw", &yaw_deg, initial_yaw, -360, 360,
+                     "heading of the view, degrees (0 looks along -z)").in_group("camera");
+    params.add_float("camera_pitch", &pitch_deg, initial_pitch, -89, 89,
+                     "how far the view looks down, degrees").in_group("camera");
+    params.add_float("camera_distance", &distance, initial_distance, 0.5f, 1000,
+                     "eye-to-target distance, metres").in_group("camera").logarithmic();
+    params.add_float("camera_target_x", &target.x, initial_target.x, -10000, 10000,
+                     "point looked at, x (metres)").in_group("camera");
+    params.add_float("camera_target_y", &target.y, initial_target.y, -1000, 1000,
+                     "point looked at, y (metres, up)").in_group("camera");
+    params.add_float("camera_target_z", &target.z, initial_target.z, -10000, 10000,
+                     "point looked at, z (metres)").in_group("camera");
+    params.add_float("camera_fov", &fov_deg, 50, 10, 120, "vertical field of view, degrees")
+        .in_group("camera");
+}
+
+glm::vec3 Camera::forward() const {
+    const float yaw = glm::radians(yaw_deg), pitch = glm::radians(pitch_deg);
+    return {std::cos(pitch) * std::sin(yaw), -std::sin(pitch), -std::cos(pitch) * std::cos(yaw)};
+}
+
+glm::vec3 Camera::eye() const { return target - forward() * distance; }
+
+glm::mat4 Camera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
+
+glm::mat4 Camera::projection(float aspect) const {
+    return glm::perspective(glm::radians(fov_deg), std::max(aspect, 1e-3f), near_plane, far_plane);
+}
+
+void Camera::apply(const CameraInput& input, float dt) {
+    const float degrees_per_pixel = 0.25f;
+    const glm::vec3 eye_before = eye();
+    yaw_deg = std::fmod(yaw_deg + input.drag.x * degrees_per_pixel, 360.0f);
+    pitch_deg = std::clamp(pitch_deg + input.drag.y * degrees_per_pixel, -89.0f, 89.0f);
+    if (mode == Fly) {
+        // Turning in fly mode keeps the eye where it is: move the target around it instead.
+        target = eye_before + forward() * distance;
+        const glm::vec3 f = forward();
+        const glm::vec3 right = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0)));
+        const float speed = (input.fast ? 40.0f : 8.0f) * dt;
+        target += (right * input.move.x + glm::vec3(0, 1, 0) * input.move.y + f * input.move.z) * speed;
+    } else {
+        distance = std::clamp(distance * std::pow(0.9f, input.scroll), 0.5f, 1000.0f);
+    }
+}
+
+}  // namespace ocean

@@ -1,0 +1,41 @@
+// One camera, two ways to drive it. Its state is a target point, a distance and two angles;
+// orbit mode turns the eye around the target, fly mode turns the view around the eye and moves
+// both. Because both modes share that state, switching keeps the view, and the state is four
+// parameters that --set, presets and screenshots can reproduce.
+#pragma once
+
+#include "common/params.hpp"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace ocean {
+
+struct CameraInput {
+    glm::vec2 drag{0.0f};     // pixels the mouse moved with the left button down
+    float scroll = 0;         // wheel steps
+    glm::vec3 move{0.0f};     // fly: right, up, forward in [-1, 1]
+    bool fast = false;        // shift held
+};
+
+class Camera {
+public:
+    enum Mode { Orbit = 0, Fly = 1 };
+
+    // Declares camera_* parameters; the step chooses the defaults of its view.
+    void declare_params(ParamRegistry& params, glm::vec3 target, float distance, float yaw_deg,
+                        float pitch_deg);
+
+    void apply(const CameraInput& input, float dt);
+    glm::vec3 eye() const;
+    glm::vec3 forward() const;  // unit vector from the eye to the target
+    glm::mat4 view() const;
+    glm::mat4 projection(float aspect) const;
+
+    int mode = Orbit;
+    glm::vec3 target{0.0f};
+    float distance = 10, yaw_deg = 0, pitch_deg = 20, fov_deg = 50;
+    float near_plane = 0.1f, far_plane = 2000.0f;
+};
+
+}  // namespace ocean

@@ -1,0 +1,157 @@
+#include "common/cli.hpp"
+
+#include "common/text.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace ocean {
+
+namespace {
+
+std::optional<double> parse_double(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size() || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::optional<long long> parse_integer(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    char* end = nullptr;
+    const long long value = std::strtoll(text.c_str(), &end, 10);
+    if (end != text.c_str() + text.size()) return std::nullopt;
+    return value;
+}
+
+}  // namespace
+
+ParseResult parse_command_line(const std::vector<std::string>& args) {
+    ParseResult result;
+    Options& o = result.options;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& flag = args[i];
+        // Flags with a value take it from the next argument or after '=' (--size=320x180).
+        std::string value;
+        bool has_inline_value = false;
+        std::string name = flag;
+        if (flag.rfind("--", 0) == 0 && flag.find('=') != std::string::npos) {
+            name = flag.substr(0, flag.find('='));
+            value = flag.substr(flag.find('=') + 1);
+            has_inline_value = true;
+        }
+        auto take_value = [&](const char* what) -> bool {
+            if (has_inline_value) return true;
+            if (i + 1 >= args.size()) {
+                result.error = name + " needs a value (" + what + ")";
+                return false;
+            }
+            value = args[++i];
+            return true;
+        };
+        auto bad = [&](const std::string& expected) {
+            result.error = name + " expects " + expected + ", got '" + ellipsize(value, 40) + "'";
+            return result;
+        };
+        auto no_value = [&]() {
+            if (has_inline_value) result.error = name + " takes no value";
+            return !has_inline_value;
+        };
+
+        if (name == "--help" || name == "-h") {
+            if (!no_value()) return result;
+            o.help = true;
+        } else if (name == "--headless") {
+            if (!no_value()) return result;
+            o.headless = true;
+        } else if (name == "--list-params") {
+            if (!no_value()) return result;
+            o.list_params = true;
+        } else if (name == "--bench") {
+            if (!no_value()) return result;
+            o.bench = true;
+        } else if (name == "--ui") {
+            if (!no_value()) return result;
+            o.show_ui = true;
+        } else if (name == "--size") {
+            if (!take_value("WxH")) return result;
+            const auto parts = split(lowercase(value), 'x');
+            const auto w = parts.size() == 2 ? parse_integer(parts[0]) : std::nullopt;
+            const auto h = parts.size() == 2 ? parse_integer(parts[1]) : std::nullopt;
+            if (!w || !h) return bad("WIDTHxHEIGHT such as 1280x720");
+            if (*w < 1 || *h < 1 || *w > kMaxImageSide || *h > kMaxImageSide)
+                return bad("each side in [1, " + std::to_string(kMaxImageSide) + "]");
+            o.width = static_cast<int>(*w);
+            o.height = static_cast<int>(*h);
+        } else if (name == "--frames") {
+            if (!take_value("a count")) return result;
+            const auto n = parse_integer(value);
+            if (!n || *n < 1 || *n > 100000000) return bad("a frame count in [1, 100000000]");
+            o.frames = static_cast<int>(*n);
+        } else if (name == "--time") {
+            if (!take_value("seconds")) return result;
+            const auto t = parse_double(value);
+            if (!t || *t < 0 || *t > 1e9) return bad("a time in seconds in [0, 1e9]");
+            o.start_time = *t;
+        } else if (name == "--dt") {
+            if (!take_value("seconds")) return result;
+            const auto dt = parse_double(value);
+            if (!dt || *dt < 0 || *dt > 10) return bad("a time step in seconds in [0, 10]");
+            o.fixed_dt = *dt;
+        } else if (name == "--screenshot") {
+            if (!take_value("a .png path")) return result;
+            if (value.size() < 5 || lowercase(value.substr(value.size() - 4)) != ".png")
+                return bad("a path ending in .png");
+            o.screenshot = value;
+        } else if (name == "--set") {
+            if (!take_value("name=value")) return result;
+            if (value.find('=') == std::string::npos) return bad("name=value");
+            o.sets.push_back(value);
+        } else if (name == "--preset") {
+            if (!take_value("a preset file")) return result;
+            if (value.empty()) return bad("a preset file");
+            o.preset = value;
+        } else if (name == "--save-preset") {
+            if (!take_value("a preset file")) return result;
+            if (value.empty()) return bad("a preset file");
+            o.save_preset = value;
+        } else if (name == "--shader-dir") {
+            if (!take_value("a directory")) return result;
+            if (value.empty()) return bad("a directory");
+            o.shader_dir = value;
+        } else {
+            result.error = "unknown flag '" + ellipsize(flag, 40) + "' (--help lists the flags)";
+            return result;
+        }
+    }
+    return result;
+}
+
+std::string usage_text(const std::string& step, const std::string& description) {
+    return step + ": " + description + R"(
+
+usage: )" + step + R"( [flags]
+
+  --headless            render offscreen through EGL (implied when DISPLAY is unset)
+  --size WxH            framebuffer size in pixels (default 1280x720)
+  --frames N            stop after N frames (default: run until closed; headless: 10)
+  --time T              start the clock at T seconds and keep it fixed (see --dt)
+  --dt S                fixed time step: the clock advances S seconds per frame
+  --screenshot FILE.png write the last frame to FILE.png
+                        (headless default: screenshots/<step>.png)
+  --set name=value      set a parameter (repeatable; applied after --preset)
+  --preset FILE         load parameters from a preset file
+  --save-preset FILE    write the parameters (after --preset and --set) to FILE and exit
+  --list-params         list the parameters with their defaults and ranges, and exit
+  --bench               print per-pass GPU times and frames per second after the run
+  --ui                  draw the ImGui panel in headless runs too
+  --shader-dir DIR      read this step's shaders from DIR instead of its source folder
+  --help                this text
+
+Keys (windowed): drag to orbit, wheel to zoom, C switches orbit/fly camera (WASD, Q/E in fly),
+F1 hides the panel, F5 reloads shaders now (they also reload when their file changes), Esc quits.
+)";
+}
+
+}  // namespace ocean

@@ -1,0 +1,137 @@
+// Headless GL through EGL: no window system at all. On GPU servers the EGL device platform
+// reaches the real driver; on machines without a GPU, Mesa's surfaceless platform gives
+// llvmpipe. Rendering goes into an offscreen framebuffer of the requested size.
+#include "common/context.hpp"
+#include "common/error.hpp"
+
+#include <glad/egl.h>
+
+#include <cstring>
+#include <vector>
+
+namespace ocean {
+
+namespace {
+
+bool has_extension(const char* list, const char* name) {
+    if (list == nullptr) return false;
+    const std::size_t n = std::strlen(name);
+    for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n)
+        if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+    return false;
+}
+
+class EglContext final : public Context {
+public:
+    explicit EglContext(const ContextOptions& options) : size_(options.width, options.height) {
+        // First load: only the client functions, enough to choose a platform.
+        if (gladLoaderLoadEGL(EGL_NO_DISPLAY) == 0)
+            throw Error("cannot load libEGL.so.1 (install libegl1 and libegl-mesa0)");
+        const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+        std::string platform;
+        if (has_extension(client, "EGL_EXT_platform_device")) {
+            display_ = open_gpu_device();
+            if (display_ != EGL_NO_DISPLAY) platform = "EGL device";
+        }
+        if (display_ == EGL_NO_DISPLAY && has_extension(client, "EGL_MESA_platform_surfaceless")) {
+            display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+            if (display_ != EGL_NO_DISPLAY && eglInitialize(display_, nullptr, nullptr) != EGL_TRUE)
+                display_ = EGL_NO_DISPLAY;
+            if (display_ != EGL_NO_DISPLAY) platform = "EGL surfaceless";
+        }
+        if (display_ == EGL_NO_DISPLAY)
+            throw Error("no headless EGL display: neither a GPU EGL device nor Mesa's surfaceless "
+                        "platform is available");
+        gladLoaderLoadEGL(display_);  // second load: the display's extensions too
+
+        if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) throw Error("EGL cannot bind the OpenGL API");
+        const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+        EGLConfig config = nullptr;
+        EGLint count = 0;
+        eglChooseConfig(display_, config_attribs, &config, 1, &count);
+        const EGLint context_attribs[] = {
+            EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+            EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
+        context_ = eglCreateContext(display_, count > 0 ? config : EGL_NO_CONFIG_KHR,
+                                    EGL_NO_CONTEXT, context_attribs);
+        if (context_ == EGL_NO_CONTEXT)
+            throw Error("EGL cannot create an OpenGL 4.5 core context (" + platform + ")");
+        if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE)
+            throw Error("EGL cannot make the context current without a surface (" + platform + ")");
+        if (gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)) == 0)
+            throw Error("cannot load the OpenGL 4.5 functions through EGL");
+        description_ = describe_current_gl(platform);
+        create_target();
+    }
+
+    ~EglContext() override {
+        color_.reset();
+        depth_.reset();
+        framebuffer_.reset();
+        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        eglDestroyContext(display_, context_);
+        eglTerminate(display_);
+        gladLoaderUnloadEGL();
+    }
+
+    bool headless() const override { return true; }
+    bool should_close() const override { return close_requested_; }
+    void request_close() override { close_requested_ = true; }
+    void poll_events() override {}
+    void swap_buffers() override {}
+    glm::ivec2 framebuffer_size() const override { return size_; }
+    GLuint target_framebuffer() const override { return framebuffer_.id(); }
+    GLFWwindow* window() const override { return nullptr; }
+
+private:
+    // A device whose driver is not Mesa's software renderer, so a GPU server uses its GPU.
+    EGLDisplay open_gpu_device() {
+        EGLint count = 0;
+        if (eglQueryDevicesEXT == nullptr || eglQueryDevicesEXT(0, nullptr, &count) != EGL_TRUE)
+            return EGL_NO_DISPLAY;
+        std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
+        eglQueryDevicesEXT(count, devices.data(), &count);
+        for (EGLDeviceEXT device : devices) {
+            const char* extensions = eglQueryDeviceStringEXT(device, EGL_EXTENSIONS);
+            if (has_extension(extensions, "EGL_MESA_device_software")) continue;
+            EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+            if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr) == EGL_TRUE)
+                return display;
+        }
+        return EGL_NO_DISPLAY;
+    }
+
+    void create_target() {
+        GLint max_side = 0;
+        glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_side);
+        if (size_.x > max_side || size_.y > max_side)
+            throw Error("--size " + std::to_string(size_.x) + "x" + std::to_string(size_.y) +
+                        " exceeds this GPU's limit of " + std::to_string(max_side) + " pixels a side");
+        color_ = make_renderbuffer();
+        glNamedRenderbufferStorage(color_.id(), GL_RGBA8, size_.x, size_.y);
+        depth_ = make_renderbuffer();
+        glNamedRenderbufferStorage(depth_.id(), GL_DEPTH24_STENCIL8, size_.x, size_.y);
+        framebuffer_ = make_framebuffer();
+        glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
+        glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+        if (glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw Error("the offscreen framebuffer of " + std::to_string(size_.x) + "x" +
+                        std::to_string(size_.y) + " is incomplete (too large for this GPU?)");
+    }
+
+    glm::ivec2 size_;
+    EGLDisplay display_ = EGL_NO_DISPLAY;
+    EGLContext context_ = EGL_NO_CONTEXT;
+    Renderbuffer color_, depth_;
+    Framebuffer framebuffer_;
+    bool close_requested_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Context> make_egl_context(const ContextOptions& options) {
+    return std::make_unique<EglContext>(options);
+}
+
+}  // namespace ocean

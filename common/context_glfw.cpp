@@ -1,0 +1,90 @@
+// Windowed GL through GLFW: a GL 4.5 core debug context, vsync on.
+#include "common/context.hpp"
+#include "common/error.hpp"
+
+#include <GLFW/glfw3.h>
+
+#include <cstdlib>
+
+namespace ocean {
+
+std::unique_ptr<Context> make_egl_context(const ContextOptions& options);
+
+namespace {
+
+class GlfwContext final : public Context {
+public:
+    explicit GlfwContext(const ContextOptions& options) {
+        glfwSetErrorCallback(nullptr);  // failures are reported below, in one line
+        if (glfwInit() != GLFW_TRUE) throw Error("GLFW cannot start (is DISPLAY set to a running X server?)");
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
+        glfwWindowHint(GLFW_SAMPLES, 4);
+        window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+        if (window_ == nullptr) {
+            const char* reason = nullptr;
+            glfwGetError(&reason);
+            glfwTerminate();
+            throw Error(std::string("cannot open a window with OpenGL 4.5 core") +
+                        (reason ? std::string(": ") + reason : std::string()));
+        }
+        glfwMakeContextCurrent(window_);
+        glfwSwapInterval(1);
+        if (gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0)
+            throw Error("cannot load the OpenGL 4.5 functions through GLFW");
+        description_ = describe_current_gl("GLFW window");
+    }
+
+    ~GlfwContext() override {
+        glfwDestroyWindow(window_);
+        glfwTerminate();
+    }
+
+    bool headless() const override { return false; }
+    bool should_close() const override { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
+    void request_close() override { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+    void poll_events() override { glfwPollEvents(); }
+    void swap_buffers() override { glfwSwapBuffers(window_); }
+    glm::ivec2 framebuffer_size() const override {
+        glm::ivec2 size;
+        glfwGetFramebufferSize(window_, &size.x, &size.y);
+        return size;
+    }
+    GLuint target_framebuffer() const override { return 0; }
+    GLFWwindow* window() const override { return window_; }
+
+private:
+    GLFWwindow* window_ = nullptr;
+};
+
+}  // namespace
+
+bool display_available() {
+    const char* x11 = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0');
+}
+
+std::string describe_current_gl(const std::string& platform) {
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major < 4 || (major == 4 && minor < 5))
+        throw Error("OpenGL 4.5 is required, this context offers " + std::to_string(major) + "." +
+                    std::to_string(minor));
+    const auto text = [](GLenum name) {
+        const auto* s = reinterpret_cast<const char*>(glGetString(name));
+        return std::string(s ? s : "?");
+    };
+    return text(GL_RENDERER) + " / OpenGL " + text(GL_VERSION) + " (" + platform + ")";
+}
+
+std::unique_ptr<Context> Context::create(const ContextOptions& options) {
+    if (options.headless) return make_egl_context(options);
+    return std::make_unique<GlfwContext>(options);
+}
+
+}  // namespace ocean

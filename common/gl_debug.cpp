@@ -1,0 +1,70 @@
+#include "common/gl_debug.hpp"
+
+#include "common/gl.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace ocean {
+
+namespace {
+
+GlDebugStats g_stats;  // the GL callback has no user object we own; one context per process
+bool g_verbose = false;
+
+const char* type_name(GLenum type) {
+    switch (type) {
+        case GL_DEBUG_TYPE_ERROR: return "error";
+        case GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR: return "deprecated";
+        case GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR: return "undefined behaviour";
+        case GL_DEBUG_TYPE_PORTABILITY: return "portability";
+        case GL_DEBUG_TYPE_PERFORMANCE: return "performance";
+        default: return "info";
+    }
+}
+
+void record_error(const std::string& message) {
+    if (g_stats.errors++ == 0) g_stats.first_error = message;
+}
+
+void GLAPIENTRY on_gl_message(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum severity,
+                              GLsizei /*length*/, const GLchar* message, const void* /*user*/) {
+    const bool is_error = type == GL_DEBUG_TYPE_ERROR;
+    const bool is_warning = type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR ||
+                            type == GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR ||
+                            type == GL_DEBUG_TYPE_PORTABILITY || severity == GL_DEBUG_SEVERITY_HIGH;
+    // Shader compile/link failures are reported to the user by the shader loader in file:line
+    // form; the driver's copy of the same log would only repeat it less readably.
+    const bool is_shader_compiler = std::strstr(message, "compile") != nullptr ||
+                                    std::strstr(message, "link") != nullptr;
+    if (is_error) record_error(message);
+    if ((is_error || is_warning) && !(is_shader_compiler && !is_error))
+        std::fprintf(stderr, "GL %s: %s\n", type_name(type), message);
+    else if (g_verbose)
+        std::fprintf(stderr, "GL %s: %s\n", type_name(type), message);
+}
+
+}  // namespace
+
+void enable_gl_debug_output() {
+    const char* env = std::getenv("OCEAN_GL_DEBUG");
+    g_verbose = env != nullptr && std::strcmp(env, "verbose") == 0;
+    glEnable(GL_DEBUG_OUTPUT);
+    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    glDebugMessageCallback(on_gl_message, nullptr);
+    glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
+}
+
+const GlDebugStats& gl_debug_stats() { return g_stats; }
+
+void check_gl_errors(const char* where) {
+    for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError()) {
+        char message[128];
+        std::snprintf(message, sizeof message, "glGetError 0x%04x after %s", e, where);
+        std::fprintf(stderr, "GL error: %s\n", message);
+        record_error(message);
+    }
+}
+
+}  // namespace ocean

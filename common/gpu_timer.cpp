@@ -1,0 +1,78 @@
+#include "common/gpu_timer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <sstream>
+
+namespace ocean {
+
+void GpuTimers::begin(const std::string& pass) {
+    if (!enabled_) return;
+    if (spare_.empty()) spare_.push_back(make_query(GL_TIME_ELAPSED));
+    open_query_ = std::move(spare_.back());
+    spare_.pop_back();
+    open_pass_ = pass;
+    glBeginQuery(GL_TIME_ELAPSED, open_query_.id());
+}
+
+void GpuTimers::end() {
+    if (!enabled_ || !open_query_) return;
+    glEndQuery(GL_TIME_ELAPSED);
+    if (std::find(order_.begin(), order_.end(), open_pass_) == order_.end()) order_.push_back(open_pass_);
+    pending_.push_back({open_pass_, std::move(open_query_)});
+}
+
+void GpuTimers::collect(bool wait) {
+    while (!pending_.empty()) {
+        Pending& front = pending_.front();
+        GLint available = GL_FALSE;
+        if (!wait) glGetQueryObjectiv(front.query.id(), GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!wait && available != GL_TRUE) break;
+        GLuint64 nanoseconds = 0;
+        glGetQueryObjectui64v(front.query.id(), GL_QUERY_RESULT, &nanoseconds);
+        samples_ms_[front.pass].push_back(double(nanoseconds) * 1e-6);
+        spare_.push_back(std::move(front.query));
+        pending_.pop_front();
+    }
+}
+
+std::vector<GpuTimers::PassStats> GpuTimers::stats() {
+    collect(true);
+    std::vector<PassStats> out;
+    for (const auto& name : order_) {
+        std::vector<double> v = samples_ms_[name];
+        if (v.empty()) continue;
+        std::sort(v.begin(), v.end());
+        PassStats s;
+        s.name = name;
+        s.samples = int(v.size());
+        s.median_ms = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+        s.mean_ms = std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
+        s.min_ms = v.front();
+        out.push_back(s);
+    }
+    return out;
+}
+
+std::string GpuTimers::report(double wall_seconds, int frames) {
+    std::ostringstream out;
+    char line[160];
+    out << "bench: pass              median ms    mean ms     min ms  samples\n";
+    double total = 0;
+    for (const auto& s : stats()) {
+        std::snprintf(line, sizeof line, "bench: %-16s %10.3f %10.3f %10.3f  %7d\n", s.name.c_str(),
+                      s.median_ms, s.mean_ms, s.min_ms, s.samples);
+        out << line;
+        total += s.median_ms;
+    }
+    std::snprintf(line, sizeof line, "bench: %-16s %10.3f\n", "all passes", total);
+    out << line;
+    const double fps = wall_seconds > 0 ? frames / wall_seconds : 0;
+    std::snprintf(line, sizeof line, "bench: %d frames in %.3f s: %.1f frames per second (wall clock)\n",
+                  frames, wall_seconds, fps);
+    out << line;
+    return out.str();
+}
+
+}  // namespace ocean

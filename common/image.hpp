@@ -1,0 +1,43 @@
+// Images: load through stb_image, write PNG, read back a framebuffer, and compare two images
+// (the smoke tests hold every step's screenshot to a golden image with this comparison).
+#pragma once
+
+#include "common/gl.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ocean {
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba;  // 4 bytes a pixel, top row first
+};
+
+// Any format stb_image reads, converted to RGBA8. Errors: "'path': reason".
+std::optional<Image> load_image(const std::string& path, std::string* error);
+std::optional<std::string> save_png(const Image& image, const std::string& path);
+// The colour attachment of `framebuffer` (0: the window's back buffer), flipped top-down.
+Image read_framebuffer(GLuint framebuffer, int width, int height);
+
+struct ImageDifference {
+    bool same_size = false;
+    double rmse = 0;              // root mean square channel difference, in 0..255 units
+    double max_difference = 0;    // largest channel difference, 0..255
+    double bad_fraction = 0;      // fraction of pixels with a channel off by more than `threshold`
+};
+ImageDifference compare_images(const Image& a, const Image& b, int threshold);
+// Differences magnified (x4) for a human to look at when a comparison fails.
+Image difference_image(const Image& a, const Image& b);
+
+struct ImageStatistics {
+    double luminance_stddev = 0;  // 0..255
+    int distinct_colours = 0;     // counted up to 4096
+};
+ImageStatistics image_statistics(const Image& image);
+// Blank: one flat colour, or nearly (a clear colour with no geometry drawn).
+bool is_blank(const Image& image);
+
+}  // namespace ocean

@@ -1,0 +1,136 @@
+// The ImGui panel every step shows: who the step is, how fast it runs, its parameters (drawn
+// from the registry, so a new parameter needs no UI code), presets, shader errors, and then
+// the step's own ui() hook.
+#include "common/app.hpp"
+#include "common/panel_widgets.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+
+namespace ocean {
+
+bool param_widget(Param& p) {
+    const char* label = p.name().c_str();
+    bool changed = false;
+    switch (p.type()) {
+        case ParamType::Float:
+            changed = ImGui::SliderFloat(label, p.float_value(), float(p.min()), float(p.max()), "%.3g",
+                                         p.is_logarithmic() ? ImGuiSliderFlags_Logarithmic : 0);
+            // Typed values (ctrl-click) can leave the slider's range; the registry's range holds.
+            *p.float_value() = std::clamp(*p.float_value(), float(p.min()), float(p.max()));
+            break;
+        case ParamType::Int:
+            changed = ImGui::SliderInt(label, p.int_value(), int(p.min()), int(p.max()));
+            *p.int_value() = std::clamp(*p.int_value(), int(p.min()), int(p.max()));
+            break;
+        case ParamType::Bool: changed = ImGui::Checkbox(label, p.bool_value()); break;
+        case ParamType::Choice: {
+            const auto& choices = p.choices();
+            int& value = *p.int_value();
+            if (ImGui::BeginCombo(label, choices[std::size_t(value)].c_str())) {
+                for (int i = 0; i < int(choices.size()); ++i)
+                    if (ImGui::Selectable(choices[std::size_t(i)].c_str(), i == value)) {
+                        value = i;
+                        changed = true;
+                    }
+                ImGui::EndCombo();
+            }
+            break;
+        }
+        case ParamType::Color: changed = ImGui::ColorEdit3(label, &p.color_value()->x); break;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\nrange %s, default %s", p.help().c_str(),
+                                                  p.range_text().c_str(), p.default_text().c_str());
+    return changed;
+}
+
+bool param_widgets(ParamRegistry& params) {
+    bool changed = false;
+    std::string open_group;
+    bool group_open = true;
+    const auto& all = params.all();
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const auto& p = all[i];
+        if (p->group() != open_group) {
+            open_group = p->group();
+            // A group whose parameters are all hidden (wave 7 of 3) gets no header at all.
+            bool any_visible = false;
+            for (std::size_t j = i; j < all.size() && all[j]->group() == open_group; ++j)
+                any_visible = any_visible || all[j]->visible();
+            // Ungrouped parameters are always shown; groups start folded to keep the panel short.
+            group_open = open_group.empty() || (any_visible && ImGui::CollapsingHeader(open_group.c_str()));
+        }
+        if (!group_open || !p->visible()) continue;
+        if (param_widget(*p)) changed = true;
+    }
+    if (changed) params.mark_changed();
+    return changed;
+}
+
+void App::draw_panel(float frame_ms) {
+    GLFWwindow* window = context_->window();
+    if (window != nullptr && !ImGui::GetIO().WantCaptureKeyboard) {
+        if (ImGui::IsKeyPressed(GLFW_KEY_F1)) panel_visible_ = !panel_visible_;
+        if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) context_->request_close();
+        if (ImGui::IsKeyPressed(GLFW_KEY_F5))
+            for (auto& program : programs_) program->build();
+        if (camera_enabled_ && ImGui::IsKeyPressed(GLFW_KEY_C)) {
+            camera_.mode = camera_.mode == Camera::Orbit ? Camera::Fly : Camera::Orbit;
+            params_.mark_changed();
+        }
+    }
+    if (!panel_visible_) return;
+
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin(step_name().c_str());
+    ImGui::TextUnformatted(info_.title.c_str());
+    ImGui::TextDisabled("seed sections %s", info_.seed_sections.c_str());
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextUnformatted(info_.description.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::Separator();
+
+    static constexpr int kHistory = 120;
+    static std::array<float, kHistory> history{};  // ImGui's plot wants a plain array
+    static int cursor = 0;
+    history[std::size_t(cursor++ % kHistory)] = frame_ms;
+    ImGui::Text("%.2f ms/frame (%.0f fps), %dx%d", double(frame_ms),
+                frame_ms > 0 ? 1000.0 / double(frame_ms) : 0.0, framebuffer_size_.x, framebuffer_size_.y);
+    ImGui::PlotLines("##frame_ms", history.data(), kHistory, cursor % kHistory, nullptr, 0, 50,
+                     ImVec2(-1, 40));
+    ImGui::Text("t = %.3f s", time_);
+    ImGui::SameLine();
+    ImGui::Checkbox("pause", &paused_);
+
+    ImGui::Separator();
+    param_widgets(params_);
+    if (ImGui::Button("reset to defaults")) params_.reset_all();
+    std::array<char, 256> path{};
+    preset_path_.copy(path.data(), path.size() - 1);
+    if (ImGui::InputText("preset file", path.data(), path.size())) preset_path_ = path.data();
+    if (ImGui::Button("load preset")) {
+        const auto error = params_.load_preset(preset_path_);
+        panel_message_ = error ? *error : "loaded " + preset_path_;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("save preset")) {
+        const auto error = params_.save_preset(preset_path_, step_name() + " preset");
+        panel_message_ = error ? *error : "saved " + preset_path_;
+    }
+
+    ui();
+
+    if (!panel_message_.empty()) {
+        ImGui::Separator();
+        ImGui::PushTextWrapPos(0);
+        ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", panel_message_.c_str());
+        ImGui::PopTextWrapPos();
+    }
+    ImGui::End();
+}
+
+}  // namespace ocean

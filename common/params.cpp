@@ -1,0 +1,338 @@
+#include "common/params.hpp"
+
+#include "common/text.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace ocean {
+
+namespace {
+
+// Reads a whole finite number, or nothing ("1e3" yes, "1e3x", "", "nan", "inf" no).
+std::optional<double> parse_number(const std::string& text, bool* non_finite) {
+    const std::string t = trim(text);
+    *non_finite = false;
+    if (t.empty()) return std::nullopt;
+    char* end = nullptr;
+    const double value = std::strtod(t.c_str(), &end);
+    if (end != t.c_str() + t.size()) return std::nullopt;
+    if (!std::isfinite(value)) {
+        *non_finite = true;
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::optional<bool> parse_bool(const std::string& text) {
+    const std::string t = lowercase(trim(text));
+    if (t == "true" || t == "1" || t == "on" || t == "yes") return true;
+    if (t == "false" || t == "0" || t == "off" || t == "no") return false;
+    return std::nullopt;
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+}  // namespace
+
+std::string Param::range_text() const {
+    switch (type_) {
+        case ParamType::Float:
+        case ParamType::Int: return "[" + format_number(min_) + ", " + format_number(max_) + "]";
+        case ParamType::Bool: return "true|false";
+        case ParamType::Choice: return join(choices_, "|");
+        case ParamType::Color: return "r,g,b each in [0, 1]";
+    }
+    return "";
+}
+
+std::string Param::value_text() const {
+    switch (type_) {
+        case ParamType::Float: return format_number(*float_);
+        case ParamType::Int: return std::to_string(*int_);
+        case ParamType::Bool: return *bool_ ? "true" : "false";
+        case ParamType::Choice: return choices_.at(static_cast<std::size_t>(*int_));
+        case ParamType::Color:
+            return format_number(color_->r) + "," + format_number(color_->g) + "," +
+                   format_number(color_->b);
+    }
+    return "";
+}
+
+std::string Param::default_text() const {
+    switch (type_) {
+        case ParamType::Float:
+        case ParamType::Int: return format_number(default_number_);
+        case ParamType::Bool: return default_number_ != 0 ? "true" : "false";
+        case ParamType::Choice: return choices_.at(static_cast<std::size_t>(default_number_));
+        case ParamType::Color:
+            return format_number(default_color_.r) + "," + format_number(default_color_.g) + "," +
+                   format_number(default_color_.b);
+    }
+    return "";
+}
+
+std::optional<std::string> Param::parse(const std::string& text, Parsed& out) const {
+    const std::string shown = "'" + ellipsize(text, 40) + "'";
+    bool non_finite = false;
+    switch (type_) {
+        case ParamType::Float:
+        case ParamType::Int: {
+            const auto number = parse_number(text, &non_finite);
+            const bool whole = number && (type_ == ParamType::Float || *number == std::floor(*number));
+            if (non_finite)
+                return "parameter '" + name_ + "' must be a finite number in " + range_text() +
+                       ", got " + shown;
+            if (!number || !whole)
+                return "parameter '" + name_ + "' expects " +
+                       (type_ == ParamType::Int ? "an integer" : "a number") + " in " +
+                       range_text() + ", got " + shown;
+            if (*number < min_ || *number > max_)
+                return "parameter '" + name_ + "' = " + trim(text) + " is outside its range " +
+                       range_text();
+            out.number = *number;
+            return std::nullopt;
+        }
+        case ParamType::Bool: {
+            const auto value = parse_bool(text);
+            if (!value)
+                return "parameter '" + name_ + "' expects true or false, got " + shown;
+            out.number = *value ? 1 : 0;
+            return std::nullopt;
+        }
+        case ParamType::Choice: {
+            const std::string t = lowercase(trim(text));
+            for (std::size_t i = 0; i < choices_.size(); ++i)
+                if (t == choices_[i]) {
+                    out.number = static_cast<double>(i);
+                    return std::nullopt;
+                }
+            return "parameter '" + name_ + "' expects one of " + range_text() + ", got " + shown;
+        }
+        case ParamType::Color: {
+            const auto parts = split(text, ',');
+            if (parts.size() != 3)
+                return "parameter '" + name_ + "' expects a colour r,g,b with each in [0, 1], got " +
+                       shown;
+            for (int c = 0; c < 3; ++c) {
+                const auto v = parse_number(parts[static_cast<std::size_t>(c)], &non_finite);
+                if (!v || *v < 0 || *v > 1)
+                    return "parameter '" + name_ + "' expects a colour r,g,b with each in [0, 1], got " +
+                           shown;
+                out.color[c] = static_cast<float>(*v);
+            }
+            return std::nullopt;
+        }
+    }
+    return "internal: unknown parameter type";
+}
+
+std::optional<std::string> Param::check_text(const std::string& text) const {
+    Parsed parsed;
+    return parse(text, parsed);
+}
+
+std::optional<std::string> Param::set_from_text(const std::string& text) {
+    Parsed parsed;
+    if (auto error = parse(text, parsed)) return error;
+    switch (type_) {
+        case ParamType::Float: *float_ = static_cast<float>(parsed.number); break;
+        case ParamType::Int:
+        case ParamType::Choice: *int_ = static_cast<int>(parsed.number); break;
+        case ParamType::Bool: *bool_ = parsed.number != 0; break;
+        case ParamType::Color: *color_ = parsed.color; break;
+    }
+    return std::nullopt;
+}
+
+void Param::reset() {
+    switch (type_) {
+        case ParamType::Float: *float_ = static_cast<float>(default_number_); break;
+        case ParamType::Int:
+        case ParamType::Choice: *int_ = static_cast<int>(default_number_); break;
+        case ParamType::Bool: *bool_ = default_number_ != 0; break;
+        case ParamType::Color: *color_ = default_color_; break;
+    }
+}
+
+Param& ParamRegistry::add(std::unique_ptr<Param> param) {
+    if (find(param->name_) != nullptr)
+        throw std::logic_error("parameter '" + param->name_ + "' declared twice");
+    param->reset();
+    params_.push_back(std::move(param));
+    return *params_.back();
+}
+
+Param& ParamRegistry::add_float(const std::string& name, float* value, float def, float min,
+                                float max, const std::string& help) {
+    auto p = std::make_unique<Param>();
+    p->name_ = name; p->help_ = help; p->type_ = ParamType::Float; p->float_ = value;
+    p->default_number_ = def; p->min_ = min; p->max_ = max;
+    return add(std::move(p));
+}
+
+Param& ParamRegistry::add_int(const std::string& name, int* value, int def, int min, int max,
+                              const std::string& help) {
+    auto p = std::make_unique<Param>();
+    p->name_ = name; p->help_ = help; p->type_ = ParamType::Int; p->int_ = value;
+    p->default_number_ = def; p->min_ = min; p->max_ = max;
+    return add(std::move(p));
+}
+
+Param& ParamRegistry::add_bool(const std::string& name, bool* value, bool def,
+                               const std::string& help) {
+    auto p = std::make_unique<Param>();
+    p->name_ = name; p->help_ = help; p->type_ = ParamType::Bool; p->bool_ = value;
+    p->default_number_ = def ? 1 : 0; p->min_ = 0; p->max_ = 1;
+    return add(std::move(p));
+}
+
+Param& ParamRegistry::add_choice(const std::string& name, int* value, int def,
+                                 std::vector<std::string> choices, const std::string& help) {
+    auto p = std::make_unique<Param>();
+    p->name_ = name; p->help_ = help; p->type_ = ParamType::Choice; p->int_ = value;
+    p->default_number_ = def; p->min_ = 0; p->max_ = static_cast<double>(choices.size()) - 1;
+    p->choices_ = std::move(choices);
+    return add(std::move(p));
+}
+
+Param& ParamRegistry::add_color(const std::string& name, glm::vec3* value, glm::vec3 def,
+                                const std::string& help) {
+    auto p = std::make_unique<Param>();
+    p->name_ = name; p->help_ = help; p->type_ = ParamType::Color; p->color_ = value;
+    p->default_color_ = def; p->min_ = 0; p->max_ = 1;
+    return add(std::move(p));
+}
+
+Param* ParamRegistry::find(const std::string& name) {
+    for (auto& p : params_)
+        if (p->name() == name) return p.get();
+    return nullptr;
+}
+
+std::string ParamRegistry::unknown_name_message(const std::string& name) const {
+    std::string message = "unknown parameter '" + ellipsize(name, 40) + "'";
+    const Param* closest = nullptr;
+    std::size_t best = 4;  // suggest only near misses
+    for (const auto& p : params_) {
+        const std::size_t d = edit_distance(name, p->name());
+        if (d < best) { best = d; closest = p.get(); }
+    }
+    if (closest != nullptr) message += " (did you mean '" + closest->name() + "'?)";
+    return message + "; --list-params lists them";
+}
+
+std::optional<std::string> ParamRegistry::set(const std::string& name, const std::string& value) {
+    Param* p = find(name);
+    if (p == nullptr) return unknown_name_message(name);
+    if (auto error = p->set_from_text(value)) return error;
+    mark_changed();
+    return std::nullopt;
+}
+
+std::optional<std::string> ParamRegistry::set_assignment(const std::string& assignment) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || trim(assignment.substr(0, eq)).empty())
+        return "--set expects name=value, got '" + ellipsize(assignment, 40) + "'";
+    return set(trim(assignment.substr(0, eq)), assignment.substr(eq + 1));
+}
+
+void ParamRegistry::reset_all() {
+    for (auto& p : params_) p->reset();
+    mark_changed();
+}
+
+std::optional<std::string> ParamRegistry::apply_preset_text(const std::string& text,
+                                                            const std::string& origin) {
+    std::vector<std::pair<Param*, std::string>> assignments;
+    std::istringstream lines(text);
+    std::string line;
+    int number = 0;
+    while (std::getline(lines, line)) {
+        ++number;
+        const std::string where = origin + ":" + std::to_string(number) + ": ";
+        const std::string content = trim(line.substr(0, line.find('#')));
+        if (content.empty()) continue;
+        const auto eq = content.find('=');
+        if (eq == std::string::npos || trim(content.substr(0, eq)).empty())
+            return where + "expected 'name = value', got '" + ellipsize(content, 40) + "'";
+        const std::string name = trim(content.substr(0, eq));
+        const std::string value = trim(content.substr(eq + 1));
+        Param* p = find(name);
+        if (p == nullptr) return where + unknown_name_message(name);
+        if (auto error = p->check_text(value)) return where + *error;
+        assignments.emplace_back(p, value);
+    }
+    if (text.find('\0') != std::string::npos) return origin + ": not a text file";
+    for (auto& [param, value] : assignments) param->set_from_text(value);
+    mark_changed();
+    return std::nullopt;
+}
+
+std::optional<std::string> ParamRegistry::load_preset(const std::string& path) {
+    std::string text;
+    if (auto error = read_text_file(path, &text)) return "cannot read preset " + *error;
+    return apply_preset_text(text, path);
+}
+
+std::string ParamRegistry::preset_text(const std::string& header) const {
+    std::ostringstream out;
+    out << "# " << header << "\n"
+        << "# One 'name = value' per line; '#' starts a comment. Missing names keep their\n"
+        << "# defaults; unknown names and out-of-range values are refused.\n";
+    std::string group;
+    for (const auto& p : params_) {
+        if (p->group() != group) {
+            group = p->group();
+            out << "\n# " << group << "\n";
+        }
+        out << p->name() << " = " << p->value_text() << "    # " << p->range_text() << " "
+            << p->help() << "\n";
+    }
+    return out.str();
+}
+
+std::optional<std::string> ParamRegistry::save_preset(const std::string& path,
+                                                      const std::string& header) const {
+    std::ofstream file(path);
+    if (!file) return "cannot write preset '" + path + "'";
+    file << preset_text(header);
+    if (!file.flush()) return "cannot write preset '" + path + "'";
+    return std::nullopt;
+}
+
+std::string ParamRegistry::list_text() const {
+    std::size_t name_width = 4, range_width = 5, value_width = 7;
+    for (const auto& p : params_) {
+        name_width = std::max(name_width, p->name().size());
+        range_width = std::max(range_width, p->range_text().size());
+        value_width = std::max(value_width, p->default_text().size());
+    }
+    std::ostringstream out;
+    auto row = [&](const std::string& a, const std::string& b, const std::string& c,
+                   const std::string& d) {
+        out << pad_right(a, name_width) << "  " << pad_right(b, value_width) << "  "
+            << pad_right(c, range_width) << "  " << d << "\n";
+    };
+    row("name", "default", "range", "meaning");
+    for (const auto& p : params_) row(p->name(), p->default_text(), p->range_text(), p->help());
+    return out.str();
+}
+
+}  // namespace ocean

@@ -1,0 +1,117 @@
+// The parameter registry: a step declares each tunable value once, bound to one of its members,
+// and gets from that one declaration the ImGui widget, `--set name=value`, `--list-params`,
+// preset save/load and reset-to-defaults. Values are always validated: unknown names, text that
+// is not a value, non-finite numbers and values outside the declared range are refused with a
+// message that names the parameter and its range.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ocean {
+
+enum class ParamType { Float, Int, Bool, Choice, Color };
+
+class Param {
+public:
+    const std::string& name() const { return name_; }
+    const std::string& help() const { return help_; }
+    const std::string& group() const { return group_; }
+    ParamType type() const { return type_; }
+
+    // Chainable refinements of a declaration.
+    Param& in_group(std::string group) { group_ = std::move(group); return *this; }
+    Param& visible_if(std::function<bool()> predicate) { visible_ = std::move(predicate); return *this; }
+    Param& logarithmic() { logarithmic_ = true; return *this; }
+
+    bool visible() const { return !visible_ || visible_(); }
+    bool is_logarithmic() const { return logarithmic_; }
+
+    // Text form, as written by presets and read by --set.
+    std::string value_text() const;
+    std::string default_text() const;
+    std::string range_text() const;  // "[0, 10]", "true|false", "orbit|fly", "r,g,b in [0, 1]"
+
+    // Parses and validates `text`; on success stores it, on failure returns the message.
+    std::optional<std::string> set_from_text(const std::string& text);
+    // Parses and validates without storing (presets check every line before applying any).
+    std::optional<std::string> check_text(const std::string& text) const;
+    void reset();
+
+    // Bound storage and limits, for the UI.
+    float* float_value() const { return float_; }
+    int* int_value() const { return int_; }
+    bool* bool_value() const { return bool_; }
+    glm::vec3* color_value() const { return color_; }
+    double min() const { return min_; }
+    double max() const { return max_; }
+    const std::vector<std::string>& choices() const { return choices_; }
+
+private:
+    friend class ParamRegistry;
+    struct Parsed { double number = 0; glm::vec3 color{0.0f}; };
+    std::optional<std::string> parse(const std::string& text, Parsed& out) const;
+
+    std::string name_, help_, group_;
+    ParamType type_ = ParamType::Float;
+    float* float_ = nullptr;
+    int* int_ = nullptr;  // Int and Choice
+    bool* bool_ = nullptr;
+    glm::vec3* color_ = nullptr;
+    double default_number_ = 0;
+    glm::vec3 default_color_{0.0f};
+    double min_ = 0, max_ = 0;
+    std::vector<std::string> choices_;
+    std::function<bool()> visible_;
+    bool logarithmic_ = false;
+};
+
+class ParamRegistry {
+public:
+    // Each declaration stores the default into *value at once. Names are snake_case, unique.
+    Param& add_float(const std::string& name, float* value, float def, float min, float max,
+                     const std::string& help);
+    Param& add_int(const std::string& name, int* value, int def, int min, int max,
+                   const std::string& help);
+    Param& add_bool(const std::string& name, bool* value, bool def, const std::string& help);
+    Param& add_choice(const std::string& name, int* value, int def,
+                      std::vector<std::string> choices, const std::string& help);
+    Param& add_color(const std::string& name, glm::vec3* value, glm::vec3 def,
+                     const std::string& help);
+
+    Param* find(const std::string& name);
+    const std::vector<std::unique_ptr<Param>>& all() const { return params_; }
+
+    // "name=value" as given to --set. Returns an error message or nothing.
+    std::optional<std::string> set_assignment(const std::string& assignment);
+    std::optional<std::string> set(const std::string& name, const std::string& value);
+    void reset_all();
+
+    // Presets: `name = value` lines, '#' comments, blank lines ignored (see README).
+    // Loading checks every line first and applies nothing if any line is bad.
+    std::optional<std::string> load_preset(const std::string& path);
+    std::optional<std::string> save_preset(const std::string& path, const std::string& header) const;
+    std::optional<std::string> apply_preset_text(const std::string& text, const std::string& origin);
+    std::string preset_text(const std::string& header) const;
+
+    std::string list_text() const;  // the table --list-params prints
+
+    // Bumped on every change through the registry (set, preset, reset, UI), so a step can
+    // rebuild what depends on its parameters only when one changed.
+    unsigned generation() const { return generation_; }
+    void mark_changed() { ++generation_; }
+
+private:
+    Param& add(std::unique_ptr<Param> param);
+    std::string unknown_name_message(const std::string& name) const;
+
+    std::vector<std::unique_ptr<Param>> params_;
+    unsigned generation_ = 0;
+};
+
+}  // namespace ocean

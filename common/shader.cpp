@@ -1,0 +1,257 @@
+#include "common/shader.hpp"
+
+#include "common/error.hpp"
+#include "common/text.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#ifndef OCEAN_SOURCE_DIR
+#error "OCEAN_SOURCE_DIR must name the repository root"
+#endif
+
+namespace ocean {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Preprocessor {
+    std::vector<std::string> include_dirs;
+    std::vector<std::string> files;
+    std::set<std::string> included;
+    std::ostringstream out;
+
+    int file_number(const std::string& path) {
+        files.push_back(path);
+        return static_cast<int>(files.size()) - 1;
+    }
+
+    std::string resolve(const std::string& name, const std::string& from) const {
+        std::vector<fs::path> candidates{fs::path(from).parent_path() / name};
+        for (const auto& dir : include_dirs) candidates.push_back(fs::path(dir) / name);
+        for (const auto& c : candidates)
+            if (fs::is_regular_file(c)) return fs::weakly_canonical(c).string();
+        return "";
+    }
+
+    void expand(const std::string& path, bool is_main) {
+        std::string text;
+        if (auto error = read_text_file(path, &text)) throw Error("cannot read shader " + *error);
+        const int number = file_number(path);
+        std::istringstream lines(text);
+        std::string line;
+        int line_number = 0;
+        bool version_seen = false;
+        if (!is_main) out << "#line 1 " << number << "\n";
+        static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+        static const std::regex version_re(R"(^\s*#\s*version\b.*)");
+        while (std::getline(lines, line)) {
+            ++line_number;
+            std::smatch match;
+            if (std::regex_match(line, version_re)) {
+                if (!is_main)
+                    throw Error(path + ":" + std::to_string(line_number) +
+                                ": an included file must not have #version");
+                out << line << "\n#line " << line_number + 1 << " " << number << "\n";
+                version_seen = true;
+            } else if (std::regex_match(line, match, include_re)) {
+                const std::string target = resolve(match[1].str(), path);
+                if (target.empty())
+                    throw Error(path + ":" + std::to_string(line_number) + ": cannot find include \"" +
+                                match[1].str() + "\"");
+                if (included.insert(target).second) expand(target, false);
+                out << "#line " << line_number + 1 << " " << number << "\n";
+            } else {
+                out << line << "\n";
+            }
+        }
+        if (is_main && !version_seen)
+            throw Error(path + ": a shader must start with #version (we use #version 450 core)");
+    }
+};
+
+}  // namespace
+
+std::vector<std::string> default_include_dirs() {
+    return {OCEAN_SOURCE_DIR, std::string(OCEAN_SOURCE_DIR) + "/common/shaders"};
+}
+
+ShaderSource preprocess_shader(const std::string& path, const std::vector<std::string>& include_dirs) {
+    Preprocessor pre;
+    pre.include_dirs = include_dirs;
+    const std::string main_path = fs::exists(path) ? fs::weakly_canonical(path).string() : path;
+    pre.included.insert(main_path);
+    pre.expand(main_path, true);
+    return {pre.out.str(), pre.files};
+}
+
+std::string map_log_to_files(const std::string& log, const std::vector<std::string>& files) {
+    static const std::regex mesa_re(R"(^(\d+):(\d+)\((\d+)\):\s*(.*)$)");
+    static const std::regex nvidia_re(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");
+    std::ostringstream out;
+    std::istringstream lines(log);
+    std::string line;
+    auto file_name = [&](const std::string& number) {
+        const std::size_t i = std::stoul(number);
+        return i < files.size() ? files[i] : "<source " + number + ">";
+    };
+    while (std::getline(lines, line)) {
+        std::smatch m;
+        if (std::regex_match(line, m, mesa_re))
+            out << file_name(m[1]) << ":" << m[2] << ":" << m[3] << ": " << m[4] << "\n";
+        else if (std::regex_match(line, m, nvidia_re))
+            out << file_name(m[1]) << ":" << m[2] << ": " << m[3] << "\n";
+        else if (!trim(line).empty())
+            out << line << "\n";
+    }
+    return out.str();
+}
+
+GLenum shader_stage_for(const std::string& path) {
+    const std::string ext = fs::path(path).extension().string();
+    if (ext == ".vert") return GL_VERTEX_SHADER;
+    if (ext == ".frag") return GL_FRAGMENT_SHADER;
+    if (ext == ".comp") return GL_COMPUTE_SHADER;
+    if (ext == ".geom") return GL_GEOMETRY_SHADER;
+    if (ext == ".tesc") return GL_TESS_CONTROL_SHADER;
+    if (ext == ".tese") return GL_TESS_EVALUATION_SHADER;
+    return 0;
+}
+
+std::string first_line_summary(const std::string& log) {
+    std::vector<std::string> lines;
+    for (const auto& l : split(log, '\n'))
+        if (!trim(l).empty()) lines.push_back(trim(l));
+    if (lines.empty()) return "(no message)";
+    // Prefer the first line that says "error" over warnings printed before it.
+    auto first = std::find_if(lines.begin(), lines.end(),
+                              [](const std::string& l) { return l.find("error") != std::string::npos; });
+    if (first == lines.end()) first = lines.begin();
+    std::string summary = *first;
+    if (lines.size() > 1)
+        summary += " (and " + std::to_string(lines.size() - 1) + " more line" +
+                   (lines.size() > 2 ? "s" : "") + " of log)";
+    return summary;
+}
+
+Shader compile_shader_stage(GLenum stage, const ShaderSource& source, std::string* error) {
+    Shader shader(glCreateShader(stage));
+    const char* text = source.text.c_str();
+    glShaderSource(shader.id(), 1, &text, nullptr);
+    glCompileShader(shader.id());
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+    if (ok == GL_TRUE) return shader;
+    GLint length = 0;
+    glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
+    *error = map_log_to_files(log.c_str(), source.files);
+    if (trim(*error).empty()) *error = source.files.front() + ": failed to compile (no log)";
+    return Shader();
+}
+
+ShaderProgram::ShaderProgram(std::string name, std::vector<std::string> stage_paths,
+                             std::vector<std::string> feedback_varyings)
+    : name_(std::move(name)), stage_paths_(std::move(stage_paths)),
+      feedback_varyings_(std::move(feedback_varyings)) {}
+
+std::optional<std::string> ShaderProgram::build() {
+    std::vector<Shader> stages;
+    std::vector<std::pair<std::string, fs::file_time_type>> watched;
+    auto fail = [&](const std::string& message) {
+        last_error_ = message;
+        // Watch what we could read, so fixing the file triggers the next reload.
+        if (!watched.empty()) watched_ = watched;
+        return std::optional<std::string>(message);
+    };
+    for (const auto& path : stage_paths_) {
+        const GLenum stage = shader_stage_for(path);
+        if (stage == 0) return fail(path + ": unknown shader stage (use .vert .frag .comp ...)");
+        ShaderSource source;
+        try {
+            source = preprocess_shader(path, default_include_dirs());
+        } catch (const Error& e) {
+            if (fs::exists(path)) watched.emplace_back(path, fs::last_write_time(path));
+            return fail(e.what());
+        }
+        for (const auto& file : source.files) {
+            std::error_code ec;
+            watched.emplace_back(file, fs::last_write_time(file, ec));
+        }
+        std::string error;
+        Shader shader = compile_shader_stage(stage, source, &error);
+        if (!shader) return fail(error);
+        stages.push_back(std::move(shader));
+    }
+    Program program(glCreateProgram());
+    for (const auto& s : stages) glAttachShader(program.id(), s.id());
+    if (!feedback_varyings_.empty()) {
+        std::vector<const char*> names;
+        for (const auto& v : feedback_varyings_) names.push_back(v.c_str());
+        glTransformFeedbackVaryings(program.id(), static_cast<GLsizei>(names.size()), names.data(),
+                                    GL_INTERLEAVED_ATTRIBS);
+    }
+    glLinkProgram(program.id());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        GLint length = 0;
+        glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+        std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+        glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+        return fail(name_ + ": link failed: " + trim(log.c_str()));
+    }
+    program_ = std::move(program);
+    watched_ = std::move(watched);
+    locations_.clear();
+    last_error_.clear();
+    return std::nullopt;
+}
+
+bool ShaderProgram::sources_changed() const {
+    for (const auto& [path, time] : watched_) {
+        std::error_code ec;
+        const auto now = fs::last_write_time(path, ec);
+        if (!ec && now != time) return true;
+    }
+    return false;
+}
+
+GLint ShaderProgram::location(const std::string& uniform) const {
+    auto it = locations_.find(uniform);
+    if (it == locations_.end())
+        it = locations_.emplace(uniform, glGetUniformLocation(program_.id(), uniform.c_str())).first;
+    return it->second;
+}
+
+// glProgramUniform* writes into the program without binding it; location -1 (a uniform the
+// compiler optimised away) is silently ignored by GL, which is what we want while editing.
+void ShaderProgram::set(const std::string& u, float v) const { glProgramUniform1f(id(), location(u), v); }
+void ShaderProgram::set(const std::string& u, int v) const { glProgramUniform1i(id(), location(u), v); }
+void ShaderProgram::set(const std::string& u, const glm::vec2& v) const {
+    glProgramUniform2fv(id(), location(u), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const std::string& u, const glm::vec3& v) const {
+    glProgramUniform3fv(id(), location(u), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const std::string& u, const glm::vec4& v) const {
+    glProgramUniform4fv(id(), location(u), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const std::string& u, const glm::mat4& v) const {
+    glProgramUniformMatrix4fv(id(), location(u), 1, GL_FALSE, glm::value_ptr(v));
+}
+void ShaderProgram::set(const std::string& u, const std::vector<glm::vec4>& v) const {
+    if (!v.empty())
+        glProgramUniform4fv(id(), location(u), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+}
+void ShaderProgram::set(const std::string& u, const std::vector<float>& v) const {
+    if (!v.empty()) glProgramUniform1fv(id(), location(u), static_cast<GLsizei>(v.size()), v.data());
+}
+
+}  // namespace ocean

@@ -1,0 +1,56 @@
+#version 450 core
+// The plot, one pixel at a time: for each curve y = f(x) the pixel's distance to it is
+// |y - f(x)| / sqrt(1 + f'(x)^2) (in pixels), which keeps lines the same width on steep slopes.
+#include "sine_sum.glsl"
+
+in vec2 v_uv;
+out vec4 out_color;
+
+uniform vec2 u_resolution;     // pixels
+uniform vec2 u_x_range;        // metres at the left and right edges
+uniform float u_y_extent;      // metres from the axis to the top edge
+uniform bool u_show_waves;
+uniform bool u_show_sum;
+uniform float u_line_width;    // pixels
+uniform vec3 u_wave_colors[MAX_WAVES];
+
+// 1 on the curve, fading to 0 one pixel beyond half the line width.
+float line(float value, float curve, float slope, vec2 metres_per_pixel, float width) {
+    float dy = (value - curve) / metres_per_pixel.y;
+    float pixel_slope = slope * metres_per_pixel.x / metres_per_pixel.y;
+    float distance = abs(dy) / sqrt(1.0 + pixel_slope * pixel_slope);
+    return clamp(0.5 * width + 0.5 - distance, 0.0, 1.0);
+}
+
+// Thin lines along one axis at a round spacing (1, 10, 100 ... or 0.1 ...) giving 4 to 40 lines.
+float grid(float coordinate, float span, float metres_per_pixel) {
+    float spacing = pow(10.0, floor(log(span / 4.0) / log(10.0)));
+    float d = abs(fract(coordinate / spacing + 0.5) - 0.5) * spacing / metres_per_pixel;
+    return clamp(1.0 - d, 0.0, 1.0);
+}
+
+void main() {
+    vec2 metres_per_pixel = vec2(u_x_range.y - u_x_range.x, 2.0 * u_y_extent) / u_resolution;
+    float x = mix(u_x_range.x, u_x_range.y, v_uv.x);
+    float y = mix(-u_y_extent, u_y_extent, v_uv.y);
+
+    vec3 color = vec3(0.06, 0.07, 0.09);
+    float minor = max(grid(x, u_x_range.y - u_x_range.x, metres_per_pixel.x),
+                      grid(y, 2.0 * u_y_extent, metres_per_pixel.y));
+    color = mix(color, vec3(0.13, 0.15, 0.18), minor);
+    float axes = max(clamp(1.0 - abs(x) / metres_per_pixel.x, 0.0, 1.0),
+                     clamp(1.0 - abs(y) / metres_per_pixel.y, 0.0, 1.0));
+    color = mix(color, vec3(0.45, 0.48, 0.52), axes);
+
+    if (u_show_waves) {
+        for (int i = 0; i < u_wave_count; ++i) {
+            float c = line(y, wave_height(i, x), wave_slope(i, x), metres_per_pixel, u_line_width);
+            color = mix(color, u_wave_colors[i], 0.85 * c);
+        }
+    }
+    if (u_show_sum) {
+        float c = line(y, sum_of_sines(x), sum_of_sines_slope(x), metres_per_pixel, 2.0 * u_line_width);
+        color = mix(color, vec3(0.95, 0.97, 1.0), c);
+    }
+    out_color = vec4(color, 1.0);
+}

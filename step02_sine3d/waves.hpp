@@ -1,0 +1,51 @@
+// Chapter 1.2.2 on the CPU, in double precision: a sum of directional sines over the plane.
+//
+//   h(x, z, t) = sum_i a_i sin(d_i . (x, z) w_i + t phi_i),   d_i = (cos theta_i, sin theta_i)
+//
+// with w and phi as in step01 (2 pi / wavelength, speed * 2 pi / wavelength). This is the
+// reference that the vertex shader's displaced positions are tested against.
+#pragma once
+
+#include "step01_sine2d/sine_sum.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace step02 {
+
+using step01::kTwoPi;
+
+struct DirectionalWave {
+    double direction_deg = 0;  // heading of the crests' travel in the x-z plane, 0 = +x
+    double wavelength = 1;     // metres
+    double amplitude = 0;      // metres
+    double speed = 0;          // metres per second along the direction
+};
+
+struct Direction { double x, z; };
+
+inline Direction direction(const DirectionalWave& wave) {
+    const double theta = wave.direction_deg * kTwoPi / 360.0;
+    return {std::cos(theta), std::sin(theta)};
+}
+
+inline double angular_wavenumber(const DirectionalWave& wave) { return kTwoPi / wave.wavelength; }
+inline double phase_rate(const DirectionalWave& wave) { return wave.speed * kTwoPi / wave.wavelength; }
+
+// The phase t * phi, reduced to [0, 2 pi) in double precision before it becomes a float.
+inline double phase_at(const DirectionalWave& wave, double time) {
+    const double phase = std::fmod(time * phase_rate(wave), kTwoPi);
+    return phase < 0 ? phase + kTwoPi : phase;
+}
+
+inline double height(const std::vector<DirectionalWave>& waves, double x, double z, double time) {
+    double h = 0;
+    for (const auto& wave : waves) {
+        const Direction d = direction(wave);
+        h += wave.amplitude * std::sin((d.x * x + d.z * z) * angular_wavenumber(wave) +
+                                       time * phase_rate(wave));
+    }
+    return h;
+}
+
+}  // namespace step02
