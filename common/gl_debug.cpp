@@ -28,21 +28,20 @@ void record_error(const std::string& message) {
     if (g_stats.errors++ == 0) g_stats.first_error = message;
 }
 
-void GLAPIENTRY on_gl_message(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum severity,
+void GLAPIENTRY on_gl_message(GLenum source, GLenum type, GLuint /*id*/, GLenum severity,
                               GLsizei /*length*/, const GLchar* message, const void* /*user*/) {
+    // A shader that fails to compile is not a GL error: the shader loader reports it in
+    // file:line form (and keeps the last good program); the driver's copy would only repeat it.
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) {
+        if (g_verbose) std::fprintf(stderr, "GL shader compiler: %s\n", message);
+        return;
+    }
     const bool is_error = type == GL_DEBUG_TYPE_ERROR;
     const bool is_warning = type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR ||
                             type == GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR ||
                             type == GL_DEBUG_TYPE_PORTABILITY || severity == GL_DEBUG_SEVERITY_HIGH;
-    // Shader compile/link failures are reported to the user by the shader loader in file:line
-    // form; the driver's copy of the same log would only repeat it less readably.
-    const bool is_shader_compiler = std::strstr(message, "compile") != nullptr ||
-                                    std::strstr(message, "link") != nullptr;
     if (is_error) record_error(message);
-    if ((is_error || is_warning) && !(is_shader_compiler && !is_error))
-        std::fprintf(stderr, "GL %s: %s\n", type_name(type), message);
-    else if (g_verbose)
-        std::fprintf(stderr, "GL %s: %s\n", type_name(type), message);
+    if (is_error || is_warning || g_verbose) std::fprintf(stderr, "GL %s: %s\n", type_name(type), message);
 }
 
 }  // namespace

@@ -1,0 +1,88 @@
+// Every shader in the repository compiles, and every program links. The list comes from CMake
+// (add_step's SHADERS and the tests' own); programs are formed by file stem: ocean.vert +
+// ocean.frag is the program "ocean"; a fragment shader with no vertex shader of its stem is a
+// fullscreen pass and links with common/shaders/fullscreen.vert; a .comp links alone.
+#include "common/shader.hpp"
+#include "tests/gpu/gl_test_context.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> repository_shaders() {
+    std::ifstream list(OCEAN_SHADER_LIST);
+    std::vector<std::string> files;
+    for (std::string line; std::getline(list, line);)
+        if (!line.empty() && ocean::shader_stage_for(line) != 0) files.push_back(line);
+    return files;
+}
+
+using ShaderBuild = ocean_test::GlTest;
+
+TEST_F(ShaderBuild, TheListHasEveryStepsShaders) {
+    const auto files = repository_shaders();
+    EXPECT_GE(files.size(), 4u);
+    bool has_step01 = false, has_step02 = false;
+    for (const auto& f : files) {
+        has_step01 = has_step01 || f.find("step01_sine2d/shaders/plot.frag") != std::string::npos;
+        has_step02 = has_step02 || f.find("step02_sine3d/shaders/ocean.vert") != std::string::npos;
+    }
+    EXPECT_TRUE(has_step01 && has_step02);
+}
+
+TEST_F(ShaderBuild, EveryShaderCompilesAndEveryProgramLinks) {
+    std::map<std::string, std::vector<std::string>> programs;  // folder/stem -> stage files
+    for (const auto& file : repository_shaders()) {
+        const fs::path p(file);
+        programs[(p.parent_path() / p.stem()).string()].push_back(file);
+    }
+    const std::string fullscreen = std::string(OCEAN_SOURCE_DIR) + "/common/shaders/fullscreen.vert";
+    int built = 0;
+    for (auto& [name, stages] : programs) {
+        const bool has_vertex = std::any_of(stages.begin(), stages.end(), [](const std::string& s) {
+            return ocean::shader_stage_for(s) == GL_VERTEX_SHADER;
+        });
+        const bool has_fragment = std::any_of(stages.begin(), stages.end(), [](const std::string& s) {
+            return ocean::shader_stage_for(s) == GL_FRAGMENT_SHADER;
+        });
+        if (has_fragment && !has_vertex) stages.push_back(fullscreen);
+        ocean::ShaderProgram program(name, stages);
+        const auto error = program.build();
+        EXPECT_FALSE(error) << name << ":\n" << error.value_or("");
+        ++built;
+    }
+    EXPECT_GE(built, 3);
+}
+
+TEST_F(ShaderBuild, ABrokenEditKeepsTheLastGoodProgram) {
+    const fs::path dir = fs::temp_directory_path() / ("ocean_reload_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path frag = dir / "pass.frag";
+    std::ofstream(frag) << "#version 450 core\nout vec4 c;\nvoid main() { c = vec4(1); }\n";
+    ocean::ShaderProgram program("pass", {std::string(OCEAN_SOURCE_DIR) + "/common/shaders/fullscreen.vert",
+                                          frag.string()});
+    ASSERT_FALSE(program.build());
+    const GLuint good = program.id();
+    EXPECT_FALSE(program.sources_changed());
+
+    std::ofstream(frag) << "#version 450 core\nout vec4 c;\nvoid main() { c = oops; }\n";
+    fs::last_write_time(frag, fs::last_write_time(frag) + std::chrono::seconds(2));
+    EXPECT_TRUE(program.sources_changed());
+    const auto error = program.build();
+    ASSERT_TRUE(error);
+    EXPECT_NE(error->find(frag.string() + ":3:"), std::string::npos) << "file:line of the edit: " << *error;
+    EXPECT_EQ(program.id(), good) << "the last good program stays in use";
+
+    std::ofstream(frag) << "#version 450 core\nout vec4 c;\nvoid main() { c = vec4(0.5); }\n";
+    fs::last_write_time(frag, fs::last_write_time(frag) + std::chrono::seconds(4));
+    EXPECT_FALSE(program.build());
+    EXPECT_NE(program.id(), 0u);
+    EXPECT_TRUE(program.last_error().empty());
+    fs::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,98 @@
+// The GPU's waves against the CPU reference in double precision.
+//  - step01: sine_sum.glsl evaluated by a compute shader into a buffer.
+//  - step02: the positions ocean.vert outputs, captured by transform feedback from the real
+//    vertex shader, fed by the real grid and the real uniform upload.
+// Tolerance 1e-4 m: float sin() of arguments up to ~60 rad has an absolute error near 1e-5.
+#include "common/grid.hpp"
+#include "common/shader.hpp"
+#include "step01_sine2d/sine_sum.hpp"
+#include "step02_sine3d/wave_uniforms.hpp"
+#include "tests/gpu/gl_test_context.hpp"
+
+#include <cmath>
+
+namespace {
+
+using WaveReadback = ocean_test::GlTest;
+
+const std::string kSource = OCEAN_SOURCE_DIR;
+
+TEST_F(WaveReadback, Step01SumOfSinesMatchesTheCpu) {
+    ocean::ShaderProgram program("eval", {kSource + "/tests/gpu/shaders/eval_sine_sum.comp"});
+    ASSERT_FALSE(program.build()) << program.last_error();
+    const std::vector<step01::Wave> waves{{9.0, 0.8, 3.7}, {5.6, 0.48, -2.9}, {3.5, 0.29, 2.3},
+                                          {0.7, 0.05, 1.0}};
+    constexpr int kSamples = 1024;
+    ocean::Buffer out = ocean::make_buffer();
+    glNamedBufferStorage(out.id(), kSamples * sizeof(float) * 2, nullptr, GL_MAP_READ_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, out.id());
+    for (double t : {0.0, 1.5, 37.25, 86400.0 * 3 + 0.1}) {
+        std::vector<glm::vec4> packed;
+        for (const auto& w : waves)
+            packed.emplace_back(float(step01::angular_wavenumber(w)), float(w.amplitude),
+                                float(step01::phase_at(w, t)), 0.0f);
+        program.set("u_wave_count", int(waves.size()));
+        program.set("u_waves", packed);
+        program.set("u_x_range", glm::vec2(-20.0f, 20.0f));
+        program.set("u_sample_count", kSamples);
+        glUseProgram(program.id());
+        glDispatchCompute(kSamples / 64, 1, 1);
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        std::vector<float> result(kSamples * 2);
+        glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(result.size() * sizeof(float)), result.data());
+        double worst = 0;
+        for (int i = 0; i < kSamples; ++i) {
+            const double x = -20.0 + 40.0 * i / (kSamples - 1);
+            ASSERT_NEAR(result[2 * i], x, 1e-5);
+            worst = std::max(worst, std::abs(result[2 * i + 1] - step01::sum_of_sines(waves, double(result[2 * i]), t)));
+        }
+        EXPECT_LT(worst, 1e-4) << "t = " << t;
+    }
+}
+
+TEST_F(WaveReadback, Step02DisplacedVerticesMatchTheCpu) {
+    ocean::ShaderProgram program("ocean", {kSource + "/step02_sine3d/shaders/ocean.vert"}, {"v_world_position"});
+    ASSERT_FALSE(program.build()) << program.last_error();
+    const std::vector<step02::DirectionalWave> waves{
+        {20, 18.0, 0.99, 5.3}, {87, 12.2, 0.67, 4.4}, {154, 8.3, 0.46, 3.6}, {221, 5.7, 0.31, 3.0},
+        {300, 1.3, 0.05, -1.4}};
+    ocean::GridMesh grid;
+    const int quads = 48;
+    grid.build({80.0f, 60.0f}, quads, quads);
+    const auto rest = ocean::grid_positions({80.0f, 60.0f}, quads, quads);
+    ASSERT_EQ(int(rest.size()), grid.vertex_count());
+
+    ocean::Buffer captured = ocean::make_buffer();
+    glNamedBufferStorage(captured.id(), GLsizeiptr(rest.size() * sizeof(glm::vec3)), nullptr, 0);
+    ocean::VertexArray points = ocean::make_vertex_array();
+    glVertexArrayVertexBuffer(points.id(), 0, grid.vertex_buffer(), 0, sizeof(glm::vec2));
+    glEnableVertexArrayAttrib(points.id(), 0);
+    glVertexArrayAttribFormat(points.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(points.id(), 0, 0);
+
+    for (double t : {0.0, 1.5, 12.75, 3600.0}) {
+        step02::upload_waves(program, waves, t);
+        program.set("u_view_projection", glm::mat4(1.0f));
+        glUseProgram(program.id());
+        glEnable(GL_RASTERIZER_DISCARD);
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captured.id());
+        glBeginTransformFeedback(GL_POINTS);
+        glBindVertexArray(points.id());
+        glDrawArrays(GL_POINTS, 0, GLsizei(rest.size()));
+        glEndTransformFeedback();
+        glDisable(GL_RASTERIZER_DISCARD);
+        std::vector<glm::vec3> positions(rest.size());
+        glGetNamedBufferSubData(captured.id(), 0, GLsizeiptr(positions.size() * sizeof(glm::vec3)),
+                                positions.data());
+        double worst = 0;
+        for (std::size_t i = 0; i < rest.size(); ++i) {
+            ASSERT_EQ(positions[i].x, rest[i].x);
+            ASSERT_EQ(positions[i].z, rest[i].y);
+            const double expected = step02::height(waves, rest[i].x, rest[i].y, t);
+            worst = std::max(worst, std::abs(double(positions[i].y) - expected));
+        }
+        EXPECT_LT(worst, 1e-4) << "t = " << t;
+    }
+}
+
+}  // namespace

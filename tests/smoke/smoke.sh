@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# smoke.sh STEP_EXE IMAGE_COMPARE GOLDEN.png OUT_DIR
+# Runs a step headless for 3 frames at t = 1.5 s and 320x180: it must exit 0 with no GL error,
+# and its screenshot must not be blank and must match GOLDEN.png within image_compare's stated
+# tolerance (RMSE <= 2.5/255, at most 0.5% of pixels off by more than 24/255).
+# OCEAN_UPDATE_GOLDEN=1 copies the new screenshot over the golden instead: only after looking at
+# both and understanding why the picture changed.
+set -u
+exe=$1 compare=$2 golden=$3 out=$4
+name=$(basename "$exe")
+mkdir -p "$out"
+shot="$out/$name.png"
+rm -f "$shot" "$out/$name.diff.png"
+
+"$exe" --headless --frames 3 --time 1.5 --size 320x180 --screenshot "$shot" > "$out/$name.log" 2>&1
+status=$?
+cat "$out/$name.log"
+[ "$status" -eq 0 ] || { echo "FAIL: $name exited with status $status"; exit 1; }
+if grep -q '^GL ' "$out/$name.log"; then echo "FAIL: the GL reported errors or warnings"; exit 1; fi
+[ -s "$shot" ] || { echo "FAIL: no screenshot at $shot"; exit 1; }
+
+if [ "${OCEAN_UPDATE_GOLDEN:-0}" = 1 ]; then
+  cp "$shot" "$golden" && echo "golden updated: $golden"
+  exit 0
+fi
+[ -f "$golden" ] || { echo "FAIL: no golden image $golden (see tests/README.md)"; exit 1; }
+"$compare" "$shot" "$golden" --diff "$out/$name.diff.png"

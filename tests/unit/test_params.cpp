@@ -1,0 +1,167 @@
+// The parameter registry: declarations, --set, validation, presets and their round trip.
+#include "common/params.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+struct Fixture : ::testing::Test {
+    ocean::ParamRegistry params;
+    float amplitude = 0;
+    int count = 0;
+    bool wireframe = false;
+    int mode = 0;
+    glm::vec3 colour{0.0f};
+
+    Fixture() {
+        params.add_float("amplitude", &amplitude, 1.5f, 0, 10, "metres");
+        params.add_int("wave_count", &count, 3, 1, 8, "waves");
+        params.add_bool("wireframe", &wireframe, false, "edges only");
+        params.add_choice("camera_mode", &mode, 0, {"orbit", "fly"}, "camera");
+        params.add_color("water_colour", &colour, {0.1f, 0.2f, 0.3f}, "albedo").in_group("look");
+    }
+
+    std::string temp_path(const std::string& name) {
+        return (std::filesystem::temp_directory_path() /
+                (std::to_string(::getpid()) + "_" + name)).string();
+    }
+};
+
+TEST_F(Fixture, DeclarationStoresTheDefault) {
+    EXPECT_FLOAT_EQ(amplitude, 1.5f);
+    EXPECT_EQ(count, 3);
+    EXPECT_FALSE(wireframe);
+    EXPECT_EQ(colour, glm::vec3(0.1f, 0.2f, 0.3f));
+}
+
+TEST_F(Fixture, SetsGoodValuesOfEveryType) {
+    EXPECT_FALSE(params.set_assignment("amplitude=2.25"));
+    EXPECT_FLOAT_EQ(amplitude, 2.25f);
+    EXPECT_FALSE(params.set_assignment("wave_count=8"));
+    EXPECT_EQ(count, 8);
+    EXPECT_FALSE(params.set_assignment("wireframe=on"));
+    EXPECT_TRUE(wireframe);
+    EXPECT_FALSE(params.set_assignment("camera_mode=fly"));
+    EXPECT_EQ(mode, 1);
+    EXPECT_FALSE(params.set_assignment("water_colour=0,0.5,1"));
+    EXPECT_EQ(colour, glm::vec3(0, 0.5f, 1));
+    EXPECT_FALSE(params.set_assignment("amplitude= 1e-1 "));
+    EXPECT_FLOAT_EQ(amplitude, 0.1f);
+}
+
+TEST_F(Fixture, RefusesBadValuesWithAMessageNamingTheParameterAndRange) {
+    struct Case { const char* assignment; const char* must_contain; };
+    const Case cases[] = {
+        {"nope=1", "unknown parameter 'nope'"},
+        {"amplitud=1", "did you mean 'amplitude'"},
+        {"amplitude=abc", "'amplitude' expects a number in [0, 10]"},
+        {"amplitude=", "'amplitude' expects a number"},
+        {"amplitude=nan", "'amplitude' must be a finite number in [0, 10]"},
+        {"amplitude=inf", "must be a finite number"},
+        {"amplitude=-1", "outside its range [0, 10]"},
+        {"amplitude=1e300", "outside its range"},
+        {"amplitude=1.5x", "expects a number"},
+        {"wave_count=2.5", "'wave_count' expects an integer in [1, 8]"},
+        {"wave_count=9", "outside its range [1, 8]"},
+        {"wireframe=maybe", "expects true or false"},
+        {"camera_mode=walk", "expects one of orbit|fly"},
+        {"water_colour=1,2", "expects a colour r,g,b"},
+        {"water_colour=0,0,1.5", "expects a colour r,g,b"},
+        {"no_equals_sign", "--set expects name=value"},
+    };
+    for (const auto& c : cases) {
+        const auto error = params.set_assignment(c.assignment);
+        ASSERT_TRUE(error.has_value()) << c.assignment;
+        EXPECT_NE(error->find(c.must_contain), std::string::npos) << *error;
+        EXPECT_EQ(error->find('\n'), std::string::npos) << "one line: " << *error;
+    }
+    EXPECT_FLOAT_EQ(amplitude, 1.5f) << "refused values change nothing";
+    EXPECT_EQ(count, 3);
+}
+
+TEST_F(Fixture, HugeInputIsShortenedInTheMessage) {
+    const auto error = params.set_assignment("amplitude=" + std::string(100000, '9') + "x");
+    ASSERT_TRUE(error);
+    EXPECT_LT(error->size(), 200u);
+}
+
+TEST_F(Fixture, ResetRestoresDefaultsAndBumpsTheGeneration) {
+    const unsigned before = params.generation();
+    params.set_assignment("amplitude=7");
+    params.set_assignment("water_colour=1,1,1");
+    EXPECT_GT(params.generation(), before);
+    params.reset_all();
+    EXPECT_FLOAT_EQ(amplitude, 1.5f);
+    EXPECT_EQ(colour, glm::vec3(0.1f, 0.2f, 0.3f));
+}
+
+TEST_F(Fixture, PresetRoundTripRestoresEveryValueExactly) {
+    params.set_assignment("amplitude=0.1");  // not exact in binary: must still round-trip
+    params.set_assignment("wave_count=5");
+    params.set_assignment("wireframe=true");
+    params.set_assignment("camera_mode=fly");
+    params.set_assignment("water_colour=0.3333333,0.7,0.9");
+    const std::string path = temp_path("roundtrip.preset");
+    ASSERT_FALSE(params.save_preset(path, "test"));
+    const float saved_amplitude = amplitude;
+    const glm::vec3 saved_colour = colour;
+
+    params.reset_all();
+    ASSERT_NE(amplitude, saved_amplitude);
+    const auto error = params.load_preset(path);
+    ASSERT_FALSE(error) << *error;
+    EXPECT_EQ(amplitude, saved_amplitude);
+    EXPECT_EQ(count, 5);
+    EXPECT_TRUE(wireframe);
+    EXPECT_EQ(mode, 1);
+    EXPECT_EQ(colour, saved_colour);
+    std::remove(path.c_str());
+}
+
+TEST_F(Fixture, PresetAllowsCommentsBlankLinesAndMissingNames) {
+    EXPECT_FALSE(params.apply_preset_text("# a comment\n\n  amplitude = 4   # trailing\n", "p"));
+    EXPECT_FLOAT_EQ(amplitude, 4.0f);
+    EXPECT_EQ(count, 3) << "names not in the preset keep their value";
+}
+
+TEST_F(Fixture, MalformedPresetIsRefusedWholeWithFileAndLine) {
+    const auto error = params.apply_preset_text("amplitude = 4\nwave_count 5\n", "calm.preset");
+    ASSERT_TRUE(error);
+    EXPECT_NE(error->find("calm.preset:2:"), std::string::npos) << *error;
+    EXPECT_FLOAT_EQ(amplitude, 1.5f) << "nothing applied when one line is bad";
+
+    const auto out_of_range = params.apply_preset_text("amplitude = 4\nwave_count = 50\n", "p");
+    ASSERT_TRUE(out_of_range);
+    EXPECT_NE(out_of_range->find("p:2: parameter 'wave_count'"), std::string::npos) << *out_of_range;
+    const auto unknown = params.apply_preset_text("nope = 1\n", "p");
+    ASSERT_TRUE(unknown);
+    EXPECT_NE(unknown->find("p:1: unknown parameter 'nope'"), std::string::npos);
+    EXPECT_TRUE(params.apply_preset_text(std::string("amplitude = 1\0\x01\x02", 17), "bin"));
+}
+
+TEST_F(Fixture, MissingOrDirectoryPresetFileIsAnError) {
+    const auto missing = params.load_preset("/nonexistent/calm.preset");
+    ASSERT_TRUE(missing);
+    EXPECT_NE(missing->find("/nonexistent/calm.preset"), std::string::npos);
+    EXPECT_TRUE(params.load_preset(std::filesystem::temp_directory_path().string()));
+}
+
+TEST_F(Fixture, ListNamesEveryParameterWithDefaultAndRange) {
+    const std::string list = params.list_text();
+    for (const char* expected : {"amplitude", "1.5", "[0, 10]", "wave_count", "orbit|fly", "water_colour"})
+        EXPECT_NE(list.find(expected), std::string::npos) << expected;
+}
+
+TEST(ParamRegistry, DuplicateNamesAreAProgrammingError) {
+    ocean::ParamRegistry params;
+    float a = 0, b = 0;
+    params.add_float("x", &a, 0, 0, 1, "");
+    EXPECT_THROW(params.add_float("x", &b, 0, 0, 1, ""), std::logic_error);
+}
+
+}  // namespace

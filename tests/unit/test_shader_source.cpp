@@ -1,0 +1,90 @@
+// The shader preprocessor (#include, #line tagging) and the mapping of driver messages back to
+// file:line. CPU only: no GL needed.
+#include "common/error.hpp"
+#include "common/shader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ShaderFiles : ::testing::Test {
+    fs::path dir = fs::temp_directory_path() / ("ocean_shader_test_" + std::to_string(::getpid()));
+    ShaderFiles() { fs::create_directories(dir / "lib"); }
+    ~ShaderFiles() override { fs::remove_all(dir); }
+    std::string write(const std::string& name, const std::string& text) {
+        std::ofstream(dir / name) << text;
+        return fs::canonical(dir / name).string();
+    }
+};
+
+TEST_F(ShaderFiles, IncludesAreExpandedOnceAndTaggedWithLineDirectives) {
+    const auto common = write("lib/common.glsl", "float a;\nfloat b;\n");
+    write("lib/more.glsl", "#include \"common.glsl\"\nfloat c;\n");
+    const auto main = write("main.frag",
+                            "#version 450 core\n#include \"lib/more.glsl\"\n#include \"lib/common.glsl\"\nvoid main() {}\n");
+    const auto source = ocean::preprocess_shader(main, {});
+    ASSERT_EQ(source.files.size(), 3u);
+    EXPECT_EQ(source.files[0], main);
+    EXPECT_EQ(source.files[2], common);
+    EXPECT_EQ(source.text,
+              "#version 450 core\n#line 2 0\n"
+              "#line 1 1\n"                   // lib/more.glsl
+              "#line 1 2\nfloat a;\nfloat b;\n"  // its include, common.glsl
+              "#line 2 1\nfloat c;\n"          // back in more.glsl, line 2
+              "#line 3 0\n"                    // back in main, line 3: common already included
+              "#line 4 0\nvoid main() {}\n");
+}
+
+TEST_F(ShaderFiles, IncludeDirectoriesAreSearchedAfterTheIncludingFolder) {
+    write("lib/found.glsl", "float x;\n");
+    const auto main = write("main.vert", "#version 450 core\n#include \"found.glsl\"\n");
+    const auto source = ocean::preprocess_shader(main, {(dir / "lib").string()});
+    EXPECT_NE(source.text.find("float x;"), std::string::npos);
+}
+
+TEST_F(ShaderFiles, MissingIncludeNamesFileAndLine) {
+    const auto main = write("main.frag", "#version 450 core\n\n#include \"absent.glsl\"\n");
+    try {
+        ocean::preprocess_shader(main, {});
+        FAIL() << "expected an error";
+    } catch (const ocean::Error& e) {
+        EXPECT_EQ(std::string(e.what()), main + ":3: cannot find include \"absent.glsl\"");
+    }
+}
+
+TEST_F(ShaderFiles, MissingVersionAndIncludedVersionAreErrors) {
+    EXPECT_THROW(ocean::preprocess_shader(write("a.frag", "void main() {}\n"), {}), ocean::Error);
+    write("v.glsl", "#version 450 core\n");
+    EXPECT_THROW(ocean::preprocess_shader(write("b.frag", "#version 450 core\n#include \"v.glsl\"\n"), {}),
+                 ocean::Error);
+    EXPECT_THROW(ocean::preprocess_shader((dir / "missing.frag").string(), {}), ocean::Error);
+}
+
+TEST(ShaderLog, MesaAndNvidiaMessagesMapToFileAndLine) {
+    const std::vector<std::string> files{"/s/ocean.frag", "/s/waves.glsl"};
+    EXPECT_EQ(ocean::map_log_to_files("0:12(5): error: `x' undeclared\n", files),
+              "/s/ocean.frag:12:5: error: `x' undeclared\n");
+    EXPECT_EQ(ocean::map_log_to_files("1(7) : error C1008: undefined variable \"y\"\n", files),
+              "/s/waves.glsl:7: error C1008: undefined variable \"y\"\n");
+    EXPECT_EQ(ocean::map_log_to_files("9:1(1): error: z\n", files), "<source 9>:1:1: error: z\n");
+}
+
+TEST(ShaderLog, SummaryIsOneLineStartingAtTheFirstError) {
+    EXPECT_EQ(ocean::first_line_summary("a.frag:1:1: warning: w\na.frag:2:1: error: e\nmore\n"),
+              "a.frag:2:1: error: e (and 2 more lines of log)");
+    EXPECT_EQ(ocean::first_line_summary("only\n"), "only");
+}
+
+TEST(ShaderStage, FromExtension) {
+    EXPECT_EQ(ocean::shader_stage_for("a/ocean.vert"), GLenum(GL_VERTEX_SHADER));
+    EXPECT_EQ(ocean::shader_stage_for("fft.comp"), GLenum(GL_COMPUTE_SHADER));
+    EXPECT_EQ(ocean::shader_stage_for("x.tese"), GLenum(GL_TESS_EVALUATION_SHADER));
+    EXPECT_EQ(ocean::shader_stage_for("waves.glsl"), 0u);
+}
+
+}  // namespace

@@ -1,0 +1,96 @@
+// Chapter 1's wave math against values worked out by hand.
+#include "step01_sine2d/sine_sum.hpp"
+#include "step02_sine3d/waves.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(Step01Waves, WavenumberIsTwoPiOverWavelength) {
+    // The seed's w = 2 / wavelength would make a 4 m wave repeat every 2 pi * 4 / 2 = 12.6 m.
+    const step01::Wave wave{4.0, 1.0, 0.0};
+    EXPECT_DOUBLE_EQ(step01::angular_wavenumber(wave), kPi / 2);
+    for (double x : {-3.3, 0.0, 0.7, 12.5})
+        EXPECT_NEAR(step01::wave_height(wave, x, 0), step01::wave_height(wave, x + 4.0, 0), 1e-12)
+            << "a wave repeats every wavelength";
+}
+
+TEST(Step01Waves, PhaseRateIsSpeedTimesWavenumber) {
+    const step01::Wave wave{4.0, 2.0, 1.0};  // w = pi/2 rad/m, phi = pi/2 rad/s
+    EXPECT_DOUBLE_EQ(step01::phase_rate(wave), kPi / 2);
+    EXPECT_NEAR(step01::wave_height(wave, 1.0, 0.0), 2.0, 1e-12);   // 2 sin(pi/2)
+    EXPECT_NEAR(step01::wave_height(wave, 0.0, 1.0), 2.0, 1e-12);   // 2 sin(pi/2)
+    EXPECT_NEAR(step01::wave_height(wave, 1.0, 1.0), 0.0, 1e-12);   // 2 sin(pi)
+    EXPECT_NEAR(step01::wave_height(wave, 0.5, 0.0), std::sqrt(2.0), 1e-12);  // 2 sin(pi/4)
+}
+
+TEST(Step01Waves, CrestsMoveAtTheirSpeed) {
+    // With x w + t phi, a crest at x0 is found at x0 - speed * t later (travel towards -x).
+    const step01::Wave wave{6.0, 1.0, 2.5};
+    for (double t : {0.3, 1.7, 40.0})
+        EXPECT_NEAR(step01::wave_height(wave, 1.5 - 2.5 * t, t), step01::wave_height(wave, 1.5, 0), 1e-9);
+}
+
+TEST(Step01Waves, SumAddsTheWaves) {
+    const std::vector<step01::Wave> waves{{4.0, 2.0, 1.0}, {2.0, 0.5, 0.0}};
+    // 2 sin(pi/2 * 0.5) + 0.5 sin(pi * 0.5) = sqrt(2) + 0.5
+    EXPECT_NEAR(step01::sum_of_sines(waves, 0.5, 0.0), std::sqrt(2.0) + 0.5, 1e-12);
+    EXPECT_DOUBLE_EQ(step01::sum_of_sines({}, 0.5, 0.0), 0.0);
+}
+
+TEST(Step01Waves, SlopeMatchesCentralDifferences) {
+    const std::vector<step01::Wave> waves{{7.0, 1.1, 3.0}, {2.3, 0.4, -1.0}, {0.9, 0.1, 1.2}};
+    const double h = 1e-5;
+    for (double x : {-5.0, 0.0, 0.37, 8.8})
+        for (double t : {0.0, 1.5}) {
+            const double numeric =
+                (step01::sum_of_sines(waves, x + h, t) - step01::sum_of_sines(waves, x - h, t)) / (2 * h);
+            EXPECT_NEAR(step01::sum_of_sines_slope(waves, x, t), numeric, 1e-7);
+        }
+}
+
+TEST(Step01Waves, ReducedPhaseKeepsLongRunsExact) {
+    const step01::Wave wave{4.0, 1.0, 1.0};  // phi = pi/2: t = 4 s is one whole period
+    const double ten_days = 864000.0;         // a multiple of 4 s
+    EXPECT_NEAR(step01::phase_at(wave, ten_days), 0.0, 1e-6);
+    EXPECT_NEAR(step01::phase_at(wave, ten_days + 1.0), kPi / 2, 1e-6);
+    const step01::Wave backwards{4.0, 1.0, -1.0};
+    const double phase = step01::phase_at(backwards, 1.0);
+    EXPECT_GE(phase, 0.0);
+    EXPECT_LT(phase, 2 * kPi);
+    EXPECT_NEAR(phase, 1.5 * kPi, 1e-12);  // -pi/2 brought into [0, 2 pi)
+}
+
+TEST(Step02Waves, DirectionIsAnAngleInTheXZPlane) {
+    const auto along_x = step02::direction({0, 1, 1, 0});
+    EXPECT_NEAR(along_x.x, 1, 1e-15);
+    EXPECT_NEAR(along_x.z, 0, 1e-15);
+    const auto along_z = step02::direction({90, 1, 1, 0});
+    EXPECT_NEAR(along_z.x, 0, 1e-15);
+    EXPECT_NEAR(along_z.z, 1, 1e-15);
+}
+
+TEST(Step02Waves, HandComputedHeights) {
+    // wavelength 2 pi: w = 1. Along +x: h = sin(x); along +z: h = 0.5 sin(z + t).
+    const std::vector<step02::DirectionalWave> waves{{0, 2 * kPi, 1.0, 0.0}, {90, 2 * kPi, 0.5, 1.0}};
+    EXPECT_NEAR(step02::height(waves, kPi / 2, 0, 0), 1.0, 1e-12);
+    EXPECT_NEAR(step02::height(waves, kPi / 2, kPi / 2, 0), 1.5, 1e-12);
+    EXPECT_NEAR(step02::height(waves, 0, 0, kPi / 2), 0.5, 1e-12);
+    // A diagonal wave (45 degrees) depends on (x + z) / sqrt(2) only.
+    const std::vector<step02::DirectionalWave> diagonal{{45, 2 * kPi, 1.0, 0.0}};
+    EXPECT_NEAR(step02::height(diagonal, 1.0, 0.0, 0), step02::height(diagonal, 0.0, 1.0, 0), 1e-12);
+    EXPECT_NEAR(step02::height(diagonal, 1.0, 1.0, 0), std::sin(std::sqrt(2.0)), 1e-12);
+}
+
+TEST(Step02Waves, ReducesToStep01AlongX) {
+    const step01::Wave flat{3.0, 0.7, 2.0};
+    const std::vector<step02::DirectionalWave> waves{{0, 3.0, 0.7, 2.0}};
+    for (double x : {-2.0, 0.1, 5.0})
+        EXPECT_NEAR(step02::height(waves, x, 123.0, 0.8), step01::wave_height(flat, x, 0.8), 1e-12);
+}
+
+}  // namespace
