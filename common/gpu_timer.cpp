@@ -7,18 +7,31 @@
 
 namespace ocean {
 
+namespace {
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+}  // namespace
+
 void GpuTimers::begin(const std::string& pass) {
     if (!enabled_) return;
     if (spare_.empty()) spare_.push_back(make_query(GL_TIME_ELAPSED));
     open_query_ = std::move(spare_.back());
     spare_.pop_back();
     open_pass_ = pass;
+    glFinish();
+    open_start_ = std::chrono::steady_clock::now();
     glBeginQuery(GL_TIME_ELAPSED, open_query_.id());
 }
 
 void GpuTimers::end() {
     if (!enabled_ || !open_query_) return;
     glEndQuery(GL_TIME_ELAPSED);
+    glFinish();
+    wall_ms_[open_pass_].push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - open_start_).count());
     if (std::find(order_.begin(), order_.end(), open_pass_) == order_.end()) order_.push_back(open_pass_);
     pending_.push_back({open_pass_, std::move(open_query_)});
 }
@@ -47,9 +60,10 @@ std::vector<GpuTimers::PassStats> GpuTimers::stats() {
         PassStats s;
         s.name = name;
         s.samples = int(v.size());
-        s.median_ms = v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+        s.median_ms = median(v);
         s.mean_ms = std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
         s.min_ms = v.front();
+        s.median_wall_ms = median(wall_ms_[name]);
         out.push_back(s);
     }
     return out;
@@ -58,15 +72,17 @@ std::vector<GpuTimers::PassStats> GpuTimers::stats() {
 std::string GpuTimers::report(double wall_seconds, int frames) {
     std::ostringstream out;
     char line[160];
-    out << "bench: pass              median ms    mean ms     min ms  samples\n";
-    double total = 0;
+    out << "bench: pass             GPU median ms  GPU mean ms  GPU min ms  wall median ms  samples\n";
+    double total = 0, total_wall = 0;
     for (const auto& s : stats()) {
-        std::snprintf(line, sizeof line, "bench: %-16s %10.3f %10.3f %10.3f  %7d\n", s.name.c_str(),
-                      s.median_ms, s.mean_ms, s.min_ms, s.samples);
+        std::snprintf(line, sizeof line, "bench: %-16s %13.3f %12.3f %11.3f %15.3f  %7d\n", s.name.c_str(),
+                      s.median_ms, s.mean_ms, s.min_ms, s.median_wall_ms, s.samples);
         out << line;
         total += s.median_ms;
+        total_wall += s.median_wall_ms;
     }
-    std::snprintf(line, sizeof line, "bench: %-16s %10.3f\n", "all passes", total);
+    std::snprintf(line, sizeof line, "bench: %-16s %13.3f %12s %11s %15.3f\n", "all passes", total, "", "",
+                  total_wall);
     out << line;
     const double fps = wall_seconds > 0 ? frames / wall_seconds : 0;
     std::snprintf(line, sizeof line, "bench: %d frames in %.3f s: %.1f frames per second (wall clock)\n",

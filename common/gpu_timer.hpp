@@ -1,9 +1,15 @@
-// GPU time per render pass, from GL timer queries, for --bench. Queries are read a few frames
-// late (when the GPU has finished) so timing never stalls the pipeline.
+// Time per render pass for --bench, measured two ways:
+//  - GPU time from GL timer queries (GL_TIME_ELAPSED), read a few frames late so reading never
+//    stalls: the figure to quote on a real GPU;
+//  - wall time from a glFinish() before and after the pass: the figure to quote on llvmpipe,
+//    which defers its work to the next flush and so gives timer queries little meaning.
+// The glFinish calls serialise CPU and GPU, so frames per second under --bench are a little
+// lower than without it.
 #pragma once
 
 #include "common/gl.hpp"
 
+#include <chrono>
 #include <deque>
 #include <map>
 #include <string>
@@ -25,7 +31,8 @@ public:
     struct PassStats {
         std::string name;
         int samples = 0;
-        double median_ms = 0, mean_ms = 0, min_ms = 0;
+        double median_ms = 0, mean_ms = 0, min_ms = 0;  // GPU (timer query)
+        double median_wall_ms = 0;                     // CPU wall clock around glFinish
     };
     // In the order the passes first ran.
     std::vector<PassStats> stats();
@@ -37,6 +44,8 @@ private:
     bool enabled_ = false;
     std::string open_pass_;
     Query open_query_;
+    std::chrono::steady_clock::time_point open_start_;
+    std::map<std::string, std::vector<double>> wall_ms_;
     std::deque<Pending> pending_;
     std::vector<Query> spare_;
     std::vector<std::string> order_;

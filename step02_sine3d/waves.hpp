@@ -16,10 +16,10 @@ namespace step02 {
 using step01::kTwoPi;
 
 struct DirectionalWave {
-    double direction_deg = 0;  // heading of the crests' travel in the x-z plane, 0 = +x
+    double direction_deg = 0;  // angle of d in the x-z plane, 0 = +x; crests travel along -d
     double wavelength = 1;     // metres
     double amplitude = 0;      // metres
-    double speed = 0;          // metres per second along the direction
+    double speed = 0;          // metres per second (towards -d for speed > 0, as in step01)
 };
 
 struct Direction { double x, z; };

@@ -86,6 +86,14 @@ TEST(Step02Waves, HandComputedHeights) {
     EXPECT_NEAR(step02::height(diagonal, 1.0, 1.0, 0), std::sin(std::sqrt(2.0)), 1e-12);
 }
 
+TEST(Step02Waves, CrestsTravelAlongMinusDirection) {
+    const std::vector<step02::DirectionalWave> waves{{60, 5.0, 1.0, 3.0}};
+    const auto d = step02::direction(waves[0]);
+    for (double t : {0.4, 2.0})
+        EXPECT_NEAR(step02::height(waves, 1.0 - d.x * 3.0 * t, 2.0 - d.z * 3.0 * t, t),
+                    step02::height(waves, 1.0, 2.0, 0.0), 1e-9);
+}
+
 TEST(Step02Waves, ReducesToStep01AlongX) {
     const step01::Wave flat{3.0, 0.7, 2.0};
     const std::vector<step02::DirectionalWave> waves{{0, 3.0, 0.7, 2.0}};
