@@ -49,6 +49,7 @@ void GLAPIENTRY on_gl_message(GLenum source, GLenum type, GLuint /*id*/, GLenum 
 void enable_gl_debug_output() {
     const char* env = std::getenv("OCEAN_GL_DEBUG");
     g_verbose = env != nullptr && std::strcmp(env, "verbose") == 0;
+    g_stats = GlDebugStats();  // counts belong to this context
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(on_gl_message, nullptr);

@@ -11,7 +11,7 @@ struct GlDebugStats {
     std::string first_error;
 };
 
-// Installs the callback on the current context. Set OCEAN_GL_DEBUG=verbose to also print
+// Installs the callback on the current context and starts counting afresh. Set OCEAN_GL_DEBUG=verbose to also print
 // the driver's performance and informational messages.
 void enable_gl_debug_output();
 const GlDebugStats& gl_debug_stats();

@@ -1,0 +1,115 @@
+// The run loop of ocean::App, driven the way a step is: a headless run with a GL error exits 3,
+// the fixed clock gives the times --time and --dt promise, --save-preset writes a preset that
+// loads back, and a screenshot is written. (Its own executable: App makes its own context.)
+#include "common/app.hpp"
+#include "common/image.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+class ProbeStep : public ocean::App {
+public:
+    ProbeStep() : App({"probe", "-", "a step for testing the framework"}) {
+        params().add_float("level", &level_, 0.25f, 0, 1, "grey level of the clear colour");
+        params().add_bool("make_gl_error", &make_gl_error_, false, "call GL with a bad enum once");
+    }
+    std::vector<double> times;
+    std::vector<double> dts;
+    int rendered = 0;
+
+private:
+    void update(double time, double dt) override {
+        times.push_back(time);
+        dts.push_back(dt);
+    }
+    void render() override {
+        ++rendered;
+        glClearColor(level_, level_, level_, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        // Some texture, so the screenshot is not a flat colour.
+        glEnable(GL_SCISSOR_TEST);
+        for (int i = 0; i < 8; ++i) {
+            glScissor(i * 4, i * 2, 4, 2);
+            glClearColor(float(i) / 8.0f, 0.5f, 1.0f - float(i) / 8.0f, 1);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
+        glDisable(GL_SCISSOR_TEST);
+        if (make_gl_error_) glEnable(GL_TEXTURE_1D_ARRAY);  // not a capability: GL_INVALID_ENUM
+    }
+    float level_ = 0;
+    bool make_gl_error_ = false;
+};
+
+const ocean::StepLocation kWhere{"probe", OCEAN_SOURCE_DIR "/common"};
+
+std::string temp(const std::string& name) {
+    return (fs::temp_directory_path() / ("ocean_app_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+TEST(App, FixedClockStartsAtTimeAndAdvancesByDt) {
+    ProbeStep step;
+    ASSERT_EQ(step.run({"--headless", "--size", "32x16", "--frames", "4", "--time", "2", "--dt", "0.5"}, kWhere), 0);
+    EXPECT_EQ(step.times, (std::vector<double>{2.0, 2.5, 3.0, 3.5}));
+    EXPECT_EQ(step.rendered, 4);
+}
+
+TEST(App, TimeAloneHoldsTheClock) {
+    ProbeStep step;
+    ASSERT_EQ(step.run({"--headless", "--size", "32x16", "--frames", "3", "--time", "1.5"}, kWhere), 0);
+    EXPECT_EQ(step.times, (std::vector<double>{1.5, 1.5, 1.5}));
+}
+
+TEST(App, HeadlessRunWithAGlErrorExitsThree) {
+    ProbeStep step;
+    EXPECT_EQ(step.run({"--headless", "--size", "32x16", "--frames", "2", "--set", "make_gl_error=true"}, kWhere),
+              ocean::kExitGlError);
+}
+
+TEST(App, ScreenshotIsTheLastFrame) {
+    const std::string path = temp("shot.png");
+    ProbeStep step;
+    ASSERT_EQ(step.run({"--headless", "--size", "32x16", "--frames", "2", "--set", "level=1",
+                        "--screenshot", path}, kWhere), 0);
+    std::string error;
+    const auto image = ocean::load_image(path, &error);
+    ASSERT_TRUE(image) << error;
+    EXPECT_EQ(image->width, 32);
+    EXPECT_EQ(image->height, 16);
+    // Top-left pixel: the clear colour (white); the scissored squares are at the bottom left.
+    EXPECT_EQ(image->rgba[0], 255);
+    const std::size_t bottom_left = std::size_t(15 * 32) * 4;
+    EXPECT_EQ(image->rgba[bottom_left + 1], 128);  // green 0.5 of the first square
+    fs::remove(path);
+}
+
+TEST(App, SavePresetWritesTheValuesAndLoadsBack) {
+    const std::string path = temp("probe.preset");
+    {
+        ProbeStep step;
+        ASSERT_EQ(step.run({"--set", "level=0.75", "--save-preset", path}, kWhere), 0);
+        EXPECT_EQ(step.rendered, 0) << "--save-preset exits before rendering";
+    }
+    ProbeStep step;
+    ASSERT_EQ(step.run({"--headless", "--size", "8x8", "--frames", "1", "--preset", path,
+                        "--screenshot", temp("p.png")}, kWhere), 0);
+    std::string error;
+    const auto image = ocean::load_image(temp("p.png"), &error);
+    ASSERT_TRUE(image) << error;
+    EXPECT_NEAR(image->rgba[0], 191, 1) << "level 0.75 came back from the preset";
+    fs::remove(path);
+    fs::remove(temp("p.png"));
+}
+
+TEST(App, BadInputIsRefusedBeforeAnyContextIsMade) {
+    ProbeStep step;
+    EXPECT_EQ(step.run({"--set", "level=2"}, kWhere), ocean::kExitUsage);
+    EXPECT_EQ(step.run({"--frames"}, kWhere), ocean::kExitUsage);
+    EXPECT_EQ(step.rendered, 0);
+}
+
+}  // namespace
