@@ -28,6 +28,7 @@ function(add_step name)
 
   add_test(NAME windowed.${name}
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/windowed.sh" $<TARGET_FILE:${name}>)
-  set_tests_properties(windowed.${name} PROPERTIES LABELS "windowed;gpu" TIMEOUT 300
+  # RESOURCE_LOCK: two `xvfb-run -a` starting at once can race for the same display number.
+  set_tests_properties(windowed.${name} PROPERTIES LABELS "windowed;gpu" TIMEOUT 300 RESOURCE_LOCK xvfb
     SKIP_RETURN_CODE 77)
 endfunction()
