@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <numeric>
 #include <sstream>
 
 namespace ocean {
@@ -61,7 +60,6 @@ std::vector<GpuTimers::PassStats> GpuTimers::stats() {
         s.name = name;
         s.samples = int(v.size());
         s.median_ms = median(v);
-        s.mean_ms = std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
         s.min_ms = v.front();
         s.median_wall_ms = median(wall_ms_[name]);
         out.push_back(s);
@@ -72,17 +70,17 @@ std::vector<GpuTimers::PassStats> GpuTimers::stats() {
 std::string GpuTimers::report(double wall_seconds, int frames) {
     std::ostringstream out;
     char line[160];
-    out << "bench: pass             GPU median ms  GPU mean ms  GPU min ms  wall median ms  samples\n";
+    // Medians, not means: one stalled frame (a shader compile, a swap) would dominate a mean.
+    out << "bench: pass             GPU median ms  GPU min ms  wall median ms  samples\n";
     double total = 0, total_wall = 0;
     for (const auto& s : stats()) {
-        std::snprintf(line, sizeof line, "bench: %-16s %13.3f %12.3f %11.3f %15.3f  %7d\n", s.name.c_str(),
-                      s.median_ms, s.mean_ms, s.min_ms, s.median_wall_ms, s.samples);
+        std::snprintf(line, sizeof line, "bench: %-16s %13.3f %11.3f %15.3f  %7d\n", s.name.c_str(),
+                      s.median_ms, s.min_ms, s.median_wall_ms, s.samples);
         out << line;
         total += s.median_ms;
         total_wall += s.median_wall_ms;
     }
-    std::snprintf(line, sizeof line, "bench: %-16s %13.3f %12s %11s %15.3f\n", "all passes", total, "", "",
-                  total_wall);
+    std::snprintf(line, sizeof line, "bench: %-16s %13.3f %11s %15.3f\n", "all passes", total, "", total_wall);
     out << line;
     const double fps = wall_seconds > 0 ? frames / wall_seconds : 0;
     std::snprintf(line, sizeof line, "bench: %d frames in %.3f s: %.1f frames per second (wall clock)\n",

@@ -31,7 +31,7 @@ public:
     struct PassStats {
         std::string name;
         int samples = 0;
-        double median_ms = 0, mean_ms = 0, min_ms = 0;  // GPU (timer query)
+        double median_ms = 0, min_ms = 0;  // GPU (timer query)
         double median_wall_ms = 0;                     // CPU wall clock around glFinish
     };
     // In the order the passes first ran.
