@@ -8,8 +8,10 @@
 #include "step01_sine2d/sine_sum.hpp"
 #include "step02_sine3d/wave_uniforms.hpp"
 #include "tests/gpu/gl_test_context.hpp"
+#include "tests/gpu/vertex_capture.hpp"
 
 #include <cmath>
+#include <cstring>
 
 namespace {
 
@@ -62,28 +64,12 @@ TEST_F(WaveReadback, Step02DisplacedVerticesMatchTheCpu) {
     const auto rest = ocean::grid_positions({80.0f, 60.0f}, quads, quads);
     ASSERT_EQ(int(rest.size()), grid.vertex_count());
 
-    ocean::Buffer captured = ocean::make_buffer();
-    glNamedBufferStorage(captured.id(), GLsizeiptr(rest.size() * sizeof(glm::vec3)), nullptr, 0);
-    ocean::VertexArray points = ocean::make_vertex_array();
-    glVertexArrayVertexBuffer(points.id(), 0, grid.vertex_buffer(), 0, sizeof(glm::vec2));
-    glEnableVertexArrayAttrib(points.id(), 0);
-    glVertexArrayAttribFormat(points.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(points.id(), 0, 0);
-
     for (double t : {0.0, 1.5, 12.75, 3600.0}) {
         step02::upload_waves(program, waves, t);
         program.set("u_view_projection", glm::mat4(1.0f));
-        glUseProgram(program.id());
-        glEnable(GL_RASTERIZER_DISCARD);
-        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captured.id());
-        glBeginTransformFeedback(GL_POINTS);
-        glBindVertexArray(points.id());
-        glDrawArrays(GL_POINTS, 0, GLsizei(rest.size()));
-        glEndTransformFeedback();
-        glDisable(GL_RASTERIZER_DISCARD);
+        const auto captured = ocean_test::capture_vertices(program, grid, 3);
         std::vector<glm::vec3> positions(rest.size());
-        glGetNamedBufferSubData(captured.id(), 0, GLsizeiptr(positions.size() * sizeof(glm::vec3)),
-                                positions.data());
+        std::memcpy(positions.data(), captured.data(), captured.size() * sizeof(float));
         double worst = 0;
         for (std::size_t i = 0; i < rest.size(); ++i) {
             ASSERT_EQ(positions[i].x, rest[i].x);
