@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/gl_debug.hpp"
 #include "common/image.hpp"
+#include "common/text.hpp"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -86,7 +87,7 @@ void App::use_camera(glm::vec3 target, float distance, float yaw_deg, float pitc
     camera_enabled_ = true;
 }
 
-ShaderProgram& App::load_program(const std::string& name, const std::vector<std::string>& stage_files) {
+std::vector<std::string> App::stage_paths(const std::vector<std::string>& stage_files) const {
     // A file the step does not have comes from common/shaders (fullscreen.vert, for one).
     std::vector<std::string> paths;
     for (const auto& file : stage_files) {
@@ -94,11 +95,32 @@ ShaderProgram& App::load_program(const std::string& name, const std::vector<std:
         const fs::path shared = fs::path(OCEAN_SOURCE_DIR) / "common" / "shaders" / file;
         paths.push_back((fs::exists(own) || !fs::exists(shared) ? own : shared).string());
     }
-    auto program = std::make_unique<ShaderProgram>(name, paths);
+    return paths;
+}
+
+ShaderProgram& App::load_program(const std::string& name, const std::vector<std::string>& stage_files) {
+    auto program = std::make_unique<ShaderProgram>(name, stage_paths(stage_files));
     if (auto error = program->build())
         throw Error("shader program '" + name + "' does not build: " + first_line_summary(*error));
     programs_.push_back(std::move(program));
     return *programs_.back();
+}
+
+ShaderProgram* App::program_variant(const std::string& name, const std::vector<std::string>& stage_files,
+                                    const std::vector<std::string>& defines) {
+    const std::string key = name + "|" + join(defines, "|");
+    if (auto it = variants_.find(key); it != variants_.end()) return it->second;
+    const std::string label = defines.empty() ? name : name + " [" + join(defines, ", ") + "]";
+    auto program = std::make_unique<ShaderProgram>(label, stage_paths(stage_files), std::vector<std::string>{},
+                                                   defines);
+    if (auto error = program->build()) {
+        if (!running_) throw Error("shader program '" + label + "' does not build: " + first_line_summary(*error));
+        std::cerr << "shader program '" << label << "' does not build:\n" << *error;
+        panel_message_ = "'" + label + "' does not build (previous program kept):\n" + *error;
+        return nullptr;
+    }
+    programs_.push_back(std::move(program));
+    return variants_[key] = programs_.back().get();
 }
 
 void App::reload_changed_shaders() {
@@ -187,6 +209,7 @@ int App::run_loop(const Options& options) {
                                           framebuffer_size_.y);
         context_->swap_buffers();
         timers_.collect();
+        running_ = true;  // a variant that fails to build from now on is shown, not fatal
     }
     const double bench_seconds = std::chrono::duration<double>(clock::now() - bench_start).count();
 

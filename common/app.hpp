@@ -19,6 +19,7 @@
 #include "common/params.hpp"
 #include "common/shader.hpp"
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -63,6 +64,12 @@ protected:
     // Loads a program from files in the step's shaders/ folder (or --shader-dir); throws
     // ocean::Error at start-up if it does not build. It then hot-reloads on its own.
     ShaderProgram& load_program(const std::string& name, const std::vector<std::string>& stage_files);
+    // A compile-time variant of a program (`defines` such as "VIEW 3"), built on first use and
+    // kept. Before the first frame a failure throws like load_program; later (the user switched
+    // to a variant after breaking a shader) it returns nullptr and shows the error in the panel,
+    // and the step keeps drawing with the program it had.
+    ShaderProgram* program_variant(const std::string& name, const std::vector<std::string>& stage_files,
+                                   const std::vector<std::string>& defines);
     // Declares the camera_* parameters and turns on mouse/keyboard camera control.
     void use_camera(glm::vec3 target, float distance, float yaw_deg, float pitch_deg);
     Camera& camera() { return camera_; }
@@ -82,6 +89,7 @@ private:
     void init_imgui();
     void shutdown_imgui();
     void reload_changed_shaders();
+    std::vector<std::string> stage_paths(const std::vector<std::string>& stage_files) const;
     void draw_panel(float frame_ms);
     CameraInput read_camera_input();
     static void on_scroll(struct GLFWwindow* window, double dx, double dy);
@@ -94,6 +102,8 @@ private:
     // Declared before every GL object below so that it is destroyed after them.
     std::unique_ptr<Context> context_;
     std::vector<std::unique_ptr<ShaderProgram>> programs_;
+    std::map<std::string, ShaderProgram*> variants_;  // name + defines -> one of programs_
+    bool running_ = false;  // past init(): build failures no longer end the program
     std::string shader_dir_;
     GpuTimers timers_;
     VertexArray empty_vao_;

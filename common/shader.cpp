@@ -22,6 +22,7 @@ namespace {
 
 struct Preprocessor {
     std::vector<std::string> include_dirs;
+    std::vector<std::string> defines;
     std::vector<std::string> files;
     std::set<std::string> included;
     std::ostringstream out;
@@ -57,7 +58,9 @@ struct Preprocessor {
                 if (!is_main)
                     throw Error(path + ":" + std::to_string(line_number) +
                                 ": an included file must not have #version");
-                out << line << "\n#line " << line_number + 1 << " " << number << "\n";
+                out << line << "\n";
+                for (const auto& define : defines) out << "#define " << define << "\n";
+                out << "#line " << line_number + 1 << " " << number << "\n";
                 version_seen = true;
             } else if (std::regex_match(line, match, include_re)) {
                 const std::string target = resolve(match[1].str(), path);
@@ -81,9 +84,11 @@ std::vector<std::string> default_include_dirs() {
     return {OCEAN_SOURCE_DIR, std::string(OCEAN_SOURCE_DIR) + "/common/shaders"};
 }
 
-ShaderSource preprocess_shader(const std::string& path, const std::vector<std::string>& include_dirs) {
+ShaderSource preprocess_shader(const std::string& path, const std::vector<std::string>& include_dirs,
+                               const std::vector<std::string>& defines) {
     Preprocessor pre;
     pre.include_dirs = include_dirs;
+    pre.defines = defines;
     const std::string main_path = fs::exists(path) ? fs::weakly_canonical(path).string() : path;
     pre.included.insert(main_path);
     pre.expand(main_path, true);
@@ -157,9 +162,9 @@ Shader compile_shader_stage(GLenum stage, const ShaderSource& source, std::strin
 }
 
 ShaderProgram::ShaderProgram(std::string name, std::vector<std::string> stage_paths,
-                             std::vector<std::string> feedback_varyings)
+                             std::vector<std::string> feedback_varyings, std::vector<std::string> defines)
     : name_(std::move(name)), stage_paths_(std::move(stage_paths)),
-      feedback_varyings_(std::move(feedback_varyings)) {}
+      feedback_varyings_(std::move(feedback_varyings)), defines_(std::move(defines)) {}
 
 std::optional<std::string> ShaderProgram::build() {
     std::vector<Shader> stages;
@@ -175,7 +180,7 @@ std::optional<std::string> ShaderProgram::build() {
         if (stage == 0) return fail(path + ": unknown shader stage (use .vert .frag .comp ...)");
         ShaderSource source;
         try {
-            source = preprocess_shader(path, default_include_dirs());
+            source = preprocess_shader(path, default_include_dirs(), defines_);
         } catch (const Error& e) {
             if (fs::exists(path)) watched.emplace_back(path, fs::last_write_time(path));
             return fail(e.what());

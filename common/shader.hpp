@@ -26,7 +26,10 @@ struct ShaderSource {
 // Expands `#include "name"` (looked up beside the including file, then in include_dirs), each
 // file at most once per shader, and tags every piece with `#line N file-number` so that error
 // messages can be mapped back. Throws ocean::Error naming file:line on a missing include.
-ShaderSource preprocess_shader(const std::string& path, const std::vector<std::string>& include_dirs);
+// `defines` ("NAME VALUE" or "NAME") become #define lines right after #version: how a step
+// builds compile-time variants of one shader.
+ShaderSource preprocess_shader(const std::string& path, const std::vector<std::string>& include_dirs,
+                               const std::vector<std::string>& defines = {});
 
 // Rewrites driver messages ("0:12(5): error" from Mesa, "0(12) : error" from NVIDIA) into
 // "path:12:5: error" using the file table of preprocess_shader.
@@ -41,9 +44,10 @@ std::vector<std::string> default_include_dirs();
 
 class ShaderProgram {
 public:
-    // `feedback_varyings` are captured by transform feedback (used by the read-back tests).
+    // `feedback_varyings` are captured by transform feedback (used by the read-back tests);
+    // `defines` select a compile-time variant (see preprocess_shader).
     ShaderProgram(std::string name, std::vector<std::string> stage_paths,
-                  std::vector<std::string> feedback_varyings = {});
+                  std::vector<std::string> feedback_varyings = {}, std::vector<std::string> defines = {});
 
     // Compiles and links every stage. On failure the previous program (if any) stays in use
     // and the message (file:line form) is returned and kept in last_error().
@@ -70,6 +74,7 @@ private:
     std::string name_;
     std::vector<std::string> stage_paths_;
     std::vector<std::string> feedback_varyings_;
+    std::vector<std::string> defines_;
     Program program_;
     std::string last_error_;
     std::vector<std::pair<std::string, std::filesystem::file_time_type>> watched_;

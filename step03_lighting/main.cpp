@@ -63,7 +63,14 @@ public:
     }
 
 private:
-    void init() override { ocean_ = &load_program("ocean", {"ocean.vert", "ocean.frag"}); }
+    void init() override {}
+
+    // The compile-time variant for the current choices (see surface.glsl for why).
+    ocean::ShaderProgram* ocean_variant() {
+        return program_variant("ocean", {"ocean.vert", "ocean.frag"},
+                               {"NORMAL_METHOD " + std::to_string(normal_method_), "VIEW " + std::to_string(view_),
+                                "PER_PIXEL " + std::to_string(int(lighting_ == 0))});
+    }
 
     void update(double /*time*/, double /*dt*/) override { grid_params_.update(grid_); }
 
@@ -83,15 +90,13 @@ private:
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glEnable(GL_DEPTH_TEST);
 
+        if (ocean::ShaderProgram* variant = ocean_variant()) ocean_ = variant;
         step02::upload_waves(*ocean_, waves_.waves(), time());
         step03::upload_light(*ocean_, light());
         ocean_->set("u_view_projection", camera().projection(aspect()) * camera().view());
         ocean_->set("u_eye", camera().eye());
-        ocean_->set("u_normal_method", normal_method_);
         ocean_->set("u_fd_step", fd_step_);
-        ocean_->set("u_view", view_);
         ocean_->set("u_angle_scale", angle_scale_);
-        ocean_->set("u_per_pixel", int(lighting_ == 0));
         ocean_->set("u_wireframe", int(wireframe_));
         ocean_->set("u_background", background);
 

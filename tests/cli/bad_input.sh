@@ -23,7 +23,7 @@ case "$case_name" in
     victim=$(ls "$out"/shaders/*.frag "$out"/shaders/*.vert 2>/dev/null | head -n 1)
     sed -i '2i this is not GLSL;' "$victim"
     args=(--shader-dir "$out/shaders" --frames 1 --size 64x64)
-    expect="shader program '[a-z_]+' does not build: .*$(basename "$victim"):2:" ;;
+    expect="shader program '[a-z_]+( \[[^]]*\])?' does not build: .*$(basename "$victim"):2:" ;;
   *) echo "bad_input.sh: unknown case $case_name"; exit 2 ;;
 esac
 

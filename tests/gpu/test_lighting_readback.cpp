@@ -12,9 +12,6 @@ namespace {
 using LightingReadback = ocean_test::GlTest;
 
 TEST_F(LightingReadback, NormalsAndPerVertexLightMatchTheCpu) {
-    ocean::ShaderProgram program("ocean", {OCEAN_SOURCE_DIR "/step03_lighting/shaders/ocean.vert"},
-                                 {"v_world_position", "v_normal", "v_vertex_colour"});
-    ASSERT_FALSE(program.build()) << program.last_error();
     const std::vector<step02::DirectionalWave> waves{
         {20, 18.0, 0.99, 5.3}, {87, 12.2, 0.67, 4.4}, {154, 8.3, 0.46, 3.6}, {221, 5.7, 0.31, 3.0},
         {300, 1.3, 0.05, -1.4}};
@@ -28,14 +25,16 @@ TEST_F(LightingReadback, NormalsAndPerVertexLightMatchTheCpu) {
 
     for (int method : {0, 1})
         for (double t : {0.0, 1.5, 700.125}) {
+            // The step's per-vertex, lit variant with this normal method.
+            ocean::ShaderProgram program("ocean", {OCEAN_SOURCE_DIR "/step03_lighting/shaders/ocean.vert"},
+                                         {"v_world_position", "v_normal", "v_vertex_colour"},
+                                         {"NORMAL_METHOD " + std::to_string(method), "VIEW 0", "PER_PIXEL 0"});
+            ASSERT_FALSE(program.build()) << program.last_error();
             step02::upload_waves(program, waves, t);
             step03::upload_light(program, light);
             program.set("u_view_projection", glm::mat4(1.0f));
             program.set("u_eye", eye);
-            program.set("u_normal_method", method);
             program.set("u_fd_step", 0.5f);
-            program.set("u_view", 0);
-            program.set("u_per_pixel", 0);
             const auto out = ocean_test::capture_vertices(program, grid, 9);
             double worst_normal = 0, worst_colour = 0;
             for (std::size_t i = 0; i < rest.size(); ++i) {
@@ -55,6 +54,24 @@ TEST_F(LightingReadback, NormalsAndPerVertexLightMatchTheCpu) {
             std::printf("method %d, t = %g: worst normal error %.2e, worst colour error %.2e\n", method, t,
                         worst_normal, worst_colour);
         }
+}
+
+}  // namespace
+
+namespace {
+
+// The step builds a variant per choice of normals, view and lighting (surface.glsl): all 24 build.
+TEST_F(LightingReadback, EveryVariantBuilds) {
+    const std::string dir = OCEAN_SOURCE_DIR "/step03_lighting/shaders/";
+    for (int method = 0; method < 2; ++method)
+        for (int view = 0; view < 6; ++view)
+            for (int per_pixel = 0; per_pixel < 2; ++per_pixel) {
+                ocean::ShaderProgram program("ocean", {dir + "ocean.vert", dir + "ocean.frag"}, {},
+                                             {"NORMAL_METHOD " + std::to_string(method), "VIEW " + std::to_string(view),
+                                              "PER_PIXEL " + std::to_string(per_pixel)});
+                EXPECT_FALSE(program.build()) << method << " " << view << " " << per_pixel << ": "
+                                              << program.last_error();
+            }
 }
 
 }  // namespace
