@@ -1,0 +1,144 @@
+// Chapter 3 on the CPU, in double precision: sharper waves, fractional Brownian motion, domain
+// warping, and several sums layered (cascades). The GPU (fbm.glsl) is tested against this.
+//
+// One cascade is a sum of N waves. Wave i has
+//   amplitude a_i = a_0 gain^i,  angular wavenumber w_i = w_0 lacunarity^i   (fBm: 0.82, 1.18)
+//   a direction d_i drawn from a seeded generator, and phase rate phi_i = speed sqrt(g w_i)
+//   (deep water: short waves are slower), and a shape W: sin, or exp(sin - 1) (sharp crests).
+// Domain warping: each wave is evaluated at a point q_i that the waves before it have pushed
+// downhill, q_{i+1} = q_i - s grad f_i(q_i), with strength s (metres per unit slope).
+// The normal stays exact: the chain rule carries J = dq_i/dp through the loop, and
+//   grad h(p) = sum_i J_i^T grad f_i(q_i),   J_{i+1} = (I - s a_i w_i^2 W''(theta_i) d_i d_i^T) J_i.
+#pragma once
+
+#include "step02_sine3d/waves.hpp"
+#include "step03_lighting/normals.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace step04 {
+
+using step02::kTwoPi;
+constexpr double kGravity = 9.81;
+
+enum class Shape { Sine = 0, ExpSine = 1 };
+
+// W(theta) and its first two derivatives.
+struct ShapeValue {
+    double value, first, second;
+};
+
+inline ShapeValue wave_shape(Shape shape, double theta) {
+    const double s = std::sin(theta), c = std::cos(theta);
+    if (shape == Shape::Sine) return {s, c, -s};
+    const double e = std::exp(s - 1.0);  // in [e^-2, 1]: a crest of 1, flat troughs
+    return {e, e * c, e * (c * c - s)};
+}
+
+struct FbmWave {
+    double dx, dz;       // unit direction
+    double wavenumber;   // w, radians per metre
+    double amplitude;    // a, metres
+    double phase_rate;   // phi, radians per second
+};
+
+struct CascadeSettings {
+    int wave_count = 24;
+    double base_wavelength = 40;  // metres, of wave 0
+    double base_amplitude = 1;    // metres, a_0
+    double gain = 0.82;           // amplitude ratio between neighbouring waves
+    double lacunarity = 1.18;     // frequency ratio between neighbouring waves
+    double speed = 1;             // 1 = deep-water phase speed
+    std::uint64_t seed = 1;
+};
+
+// A small, portable generator (splitmix64): the same seed gives the same sea on every machine,
+// which std::uniform_real_distribution does not promise.
+inline double uniform01(std::uint64_t& state) {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return double(z >> 11) * (1.0 / 9007199254740992.0);  // 53 bits -> [0, 1)
+}
+
+inline std::vector<FbmWave> fbm_waves(const CascadeSettings& s) {
+    std::vector<FbmWave> waves;
+    std::uint64_t state = s.seed;
+    double amplitude = s.base_amplitude, wavenumber = kTwoPi / s.base_wavelength;
+    for (int i = 0; i < s.wave_count; ++i) {
+        const double angle = kTwoPi * uniform01(state);
+        waves.push_back({std::cos(angle), std::sin(angle), wavenumber, amplitude,
+                         s.speed * std::sqrt(kGravity * wavenumber)});
+        amplitude *= s.gain;
+        wavenumber *= s.lacunarity;
+    }
+    return waves;
+}
+
+inline double phase_at(const FbmWave& wave, double time) {
+    const double phase = std::fmod(time * wave.phase_rate, kTwoPi);
+    return phase < 0 ? phase + kTwoPi : phase;
+}
+
+// Height and exact gradient of one warped cascade at p = (x, z).
+inline step03::HeightGradient cascade_height_gradient(const std::vector<FbmWave>& waves, Shape shape,
+                                                      double warp, double x, double z, double time) {
+    double qx = x, qz = z;                        // the warped point
+    double j00 = 1, j01 = 0, j10 = 0, j11 = 1;    // J = dq/dp, row-major: [dqx/dx dqx/dz; dqz/dx dqz/dz]
+    step03::HeightGradient g;
+    for (const FbmWave& wave : waves) {
+        const double theta = (wave.dx * qx + wave.dz * qz) * wave.wavenumber + phase_at(wave, time);
+        const ShapeValue v = wave_shape(shape, theta);
+        g.height += wave.amplitude * v.value;
+        const double slope = wave.amplitude * wave.wavenumber * v.first;  // df/d(along d)
+        const double fx = slope * wave.dx, fz = slope * wave.dz;          // grad_q f
+        g.dh_dx += j00 * fx + j10 * fz;                                   // J^T grad_q f
+        g.dh_dz += j01 * fx + j11 * fz;
+        // J <- (I - k d d^T) J with k = s a w^2 W''
+        const double k = warp * wave.amplitude * wave.wavenumber * wave.wavenumber * v.second;
+        const double r0 = wave.dx * j00 + wave.dz * j10, r1 = wave.dx * j01 + wave.dz * j11;  // d^T J
+        j00 -= k * wave.dx * r0;
+        j01 -= k * wave.dx * r1;
+        j10 -= k * wave.dz * r0;
+        j11 -= k * wave.dz * r1;
+        qx -= warp * fx;
+        qz -= warp * fz;
+    }
+    return g;
+}
+
+struct Cascade {
+    std::vector<FbmWave> waves;
+};
+
+// Several independent sums with different base wavelengths, added: their repeats do not line
+// up, which hides the periodicity of any one of them.
+inline step03::HeightGradient height_gradient(const std::vector<Cascade>& cascades, Shape shape, double warp,
+                                              double x, double z, double time) {
+    step03::HeightGradient total;
+    for (const auto& cascade : cascades) {
+        const auto g = cascade_height_gradient(cascade.waves, shape, warp, x, z, time);
+        total.height += g.height;
+        total.dh_dx += g.dh_dx;
+        total.dh_dz += g.dh_dz;
+    }
+    return total;
+}
+
+// Cascade c: base wavelength and amplitude scaled by ratio^c, its own seed.
+inline std::vector<Cascade> make_cascades(const CascadeSettings& first, int count, double ratio) {
+    std::vector<Cascade> cascades;
+    for (int c = 0; c < count; ++c) {
+        CascadeSettings s = first;
+        s.base_wavelength = first.base_wavelength * std::pow(ratio, c);
+        s.base_amplitude = first.base_amplitude * std::pow(ratio, c);
+        s.seed = first.seed + 7919u * std::uint64_t(c);
+        cascades.push_back({fbm_waves(s)});
+    }
+    return cascades;
+}
+
+}  // namespace step04
