@@ -6,9 +6,11 @@
 //   a direction d_i drawn from a seeded generator, and phase rate phi_i = speed sqrt(g w_i)
 //   (deep water: short waves are slower), and a shape W: sin, or exp(sin - 1) (sharp crests).
 // Domain warping: each wave is evaluated at a point q_i that the waves before it have pushed
-// downhill, q_{i+1} = q_i - s grad f_i(q_i), with strength s (metres per unit slope).
+// downhill, q_{i+1} = q_i - s a_i grad f_i(q_i), with a dimensionless strength s. The push is
+// weighted by the wave's amplitude (as Acerola's "drag" is): without it, the fBm's short waves,
+// whose slopes barely shrink from one to the next, would fold the domain into noise.
 // The normal stays exact: the chain rule carries J = dq_i/dp through the loop, and
-//   grad h(p) = sum_i J_i^T grad f_i(q_i),   J_{i+1} = (I - s a_i w_i^2 W''(theta_i) d_i d_i^T) J_i.
+//   grad h(p) = sum_i J_i^T grad f_i(q_i),   J_{i+1} = (I - s a_i^2 w_i^2 W''(theta_i) d_i d_i^T) J_i.
 #pragma once
 
 #include "step02_sine3d/waves.hpp"
@@ -97,15 +99,15 @@ inline step03::HeightGradient cascade_height_gradient(const std::vector<FbmWave>
         const double fx = slope * wave.dx, fz = slope * wave.dz;          // grad_q f
         g.dh_dx += j00 * fx + j10 * fz;                                   // J^T grad_q f
         g.dh_dz += j01 * fx + j11 * fz;
-        // J <- (I - k d d^T) J with k = s a w^2 W''
-        const double k = warp * wave.amplitude * wave.wavenumber * wave.wavenumber * v.second;
+        // J <- (I - k d d^T) J with k = s a^2 w^2 W''
+        const double k = warp * wave.amplitude * wave.amplitude * wave.wavenumber * wave.wavenumber * v.second;
         const double r0 = wave.dx * j00 + wave.dz * j10, r1 = wave.dx * j01 + wave.dz * j11;  // d^T J
         j00 -= k * wave.dx * r0;
         j01 -= k * wave.dx * r1;
         j10 -= k * wave.dz * r0;
         j11 -= k * wave.dz * r1;
-        qx -= warp * fx;
-        qz -= warp * fz;
+        qx -= warp * wave.amplitude * fx;
+        qz -= warp * wave.amplitude * fz;
     }
     return g;
 }

@@ -1,0 +1,60 @@
+// Chapter 3 on the GPU (fbm.hpp is the CPU reference): cascades of fBm waves, each wave a sine
+// or exp(sin - 1), with domain warping and the exact gradient of the warped sum.
+#ifndef SHAPE
+#define SHAPE 1  // 0: sin, 1: exp(sin - 1). A compile-time choice, like step03's variants.
+#endif
+
+const int MAX_CASCADES = 4;
+const int MAX_WAVES_PER_CASCADE = 64;
+
+struct FbmWave {
+    vec4 direction_wavenumber_amplitude;  // (d.x, d.z, w, a)
+    vec4 phase;                           // (t phi mod 2 pi, 0, 0, 0), reduced on the CPU in double
+};
+
+// Cascade c's waves are u_fbm_waves[c * MAX_WAVES_PER_CASCADE + i]. A uniform block, because
+// 4 x 64 waves would not fit in plain uniforms.
+layout(std140, binding = 0) uniform FbmWaves {
+    FbmWave u_fbm_waves[MAX_CASCADES * MAX_WAVES_PER_CASCADE];
+};
+uniform int u_cascade_count;
+uniform int u_waves_per_cascade;
+uniform float u_warp;  // s: the point moves by s a grad f of each wave before (dimensionless)
+
+// (W, W', W'') at theta.
+vec3 wave_shape(float theta) {
+    float s = sin(theta), c = cos(theta);
+#if SHAPE == 0
+    return vec3(s, c, -s);
+#else
+    float e = exp(s - 1.0);
+    return vec3(e, e * c, e * (c * c - s));
+#endif
+}
+
+// (h, dh/dx, dh/dz) at rest position p.
+vec3 fbm_height_gradient(vec2 p) {
+    vec3 total = vec3(0.0);
+    for (int c = 0; c < u_cascade_count; ++c) {
+        vec2 q = p;              // the warped point
+        mat2 jacobian = mat2(1.0);  // dq/dp
+        for (int i = 0; i < u_waves_per_cascade; ++i) {
+            FbmWave wave = u_fbm_waves[c * MAX_WAVES_PER_CASCADE + i];
+            vec2 d = wave.direction_wavenumber_amplitude.xy;
+            float w = wave.direction_wavenumber_amplitude.z;
+            float a = wave.direction_wavenumber_amplitude.w;
+            vec3 shape = wave_shape(dot(d, q) * w + wave.phase.x);
+            vec2 slope = a * w * shape.y * d;  // gradient of this wave at q
+            total.x += a * shape.x;
+            total.yz += transpose(jacobian) * slope;
+            jacobian = (mat2(1.0) - u_warp * a * a * w * w * shape.z * outerProduct(d, d)) * jacobian;
+            q -= u_warp * a * slope;
+        }
+    }
+    return total;
+}
+
+// N = B x T with T = (1, dh/dx, 0), B = (0, dh/dz, 1), as in step03.
+vec3 fbm_normal(vec2 gradient) {
+    return normalize(vec3(-gradient.x, 1.0, -gradient.y));
+}
