@@ -77,6 +77,11 @@ void App::bind_target() const {
     glViewport(0, 0, framebuffer_size_.x, framebuffer_size_.y);
 }
 
+void App::clear_target(glm::vec3 colour) const {
+    glClearColor(colour.r, colour.g, colour.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
 void App::draw_fullscreen_triangle() const {
     glBindVertexArray(empty_vao_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);

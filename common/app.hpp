@@ -81,6 +81,8 @@ protected:
     bool headless() const;
     // Binds the output framebuffer (window or offscreen) with a full viewport.
     void bind_target() const;
+    // Clears the bound target to `colour` (sRGB as stored) and the depth buffer to far.
+    void clear_target(glm::vec3 colour) const;
     // One triangle that covers the screen; pair with common/shaders/fullscreen.vert.
     void draw_fullscreen_triangle() const;
 

@@ -43,9 +43,11 @@ void GridMesh::build(glm::vec2 size, int x_quads, int z_quads) {
     index_count_ = GLsizei(indices.size());
 }
 
-void GridMesh::draw() const {
+void GridMesh::draw(bool wireframe) const {
     glBindVertexArray(vao_.id());
+    if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+    if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 }
 
 }  // namespace ocean

@@ -18,7 +18,8 @@ std::vector<unsigned> grid_triangle_indices(int x_quads, int z_quads);
 class GridMesh {
 public:
     void build(glm::vec2 size, int x_quads, int z_quads);
-    void draw() const;  // GL_TRIANGLES; attribute 0 is vec2 (x, z)
+    // GL_TRIANGLES (attribute 0 is vec2 (x, z)), or only their edges when `wireframe`.
+    void draw(bool wireframe = false) const;
     int vertex_count() const { return vertex_count_; }
     GLuint vertex_buffer() const { return vertices_.id(); }
     GLuint vertex_array() const { return vao_.id(); }

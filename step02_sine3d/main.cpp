@@ -34,8 +34,7 @@ private:
     void update(double /*time*/, double /*dt*/) override { grid_params_.update(grid_); }
 
     void render() override {
-        glClearColor(0.06f, 0.07f, 0.09f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        clear_target({0.06f, 0.07f, 0.09f});
         glEnable(GL_DEPTH_TEST);
 
         step02::upload_waves(*ocean_, waves_.waves(), time());
@@ -47,9 +46,7 @@ private:
 
         ocean::GpuScope timed(timers(), "ocean");
         glUseProgram(ocean_->id());
-        glPolygonMode(GL_FRONT_AND_BACK, wireframe_ ? GL_LINE : GL_FILL);
-        grid_.draw();
-        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        grid_.draw(wireframe_);
         glDisable(GL_DEPTH_TEST);
     }
 

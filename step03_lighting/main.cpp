@@ -60,8 +60,7 @@ private:
 
     void render() override {
         const glm::vec3 clear = step03::LightParams::background_srgb();
-        glClearColor(clear.r, clear.g, clear.b, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        clear_target(clear);
         glEnable(GL_DEPTH_TEST);
 
         if (ocean::ShaderProgram* variant = ocean_variant()) ocean_ = variant;
@@ -76,9 +75,7 @@ private:
 
         ocean::GpuScope timed(timers(), "ocean");
         glUseProgram(ocean_->id());
-        glPolygonMode(GL_FRONT_AND_BACK, wireframe_ ? GL_LINE : GL_FILL);
-        grid_.draw();
-        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        grid_.draw(wireframe_);
         glDisable(GL_DEPTH_TEST);
     }
 
