@@ -1,5 +1,7 @@
-# add_step(NAME SOURCES ... SHADERS ...) declares one chapter:
+# add_step(NAME SOURCES ... [LIBRARY ...] SHADERS ...) declares one chapter:
 #  - the executable NAME (folder, target and window title share the name),
+#  - with LIBRARY, a static library NAME_lib of the chapter's technique, which the step, the
+#    tests and later chapters link (step06 links step05_fft_lib),
 #  - its shaders and README listed in the target (IDEs show them; shaders are read from the
 #    source tree at run time, so edits hot-reload),
 #  - its smoke test (headless run compared with tests/smoke/golden/NAME.png),
@@ -8,10 +10,17 @@
 set(OCEAN_TESTS_DIR "${CMAKE_CURRENT_LIST_DIR}/../tests")
 
 function(add_step name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;SHADERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARY;SHADERS;LINKS" ${ARGN})
   list(TRANSFORM ARG_SHADERS PREPEND "${CMAKE_CURRENT_SOURCE_DIR}/")
   add_executable(${name} ${ARG_SOURCES} ${ARG_SHADERS} README.md)
-  target_link_libraries(${name} PRIVATE ocean_common)
+  target_link_libraries(${name} PRIVATE ocean_common ${ARG_LINKS})
+  if(ARG_LIBRARY)
+    add_library(${name}_lib STATIC ${ARG_LIBRARY})
+    target_link_libraries(${name}_lib PUBLIC ocean_common ${ARG_LINKS})
+    target_include_directories(${name}_lib PUBLIC "${PROJECT_SOURCE_DIR}")
+    ocean_warnings(${name}_lib)
+    target_link_libraries(${name} PRIVATE ${name}_lib)
+  endif()
   target_include_directories(${name} PRIVATE "${PROJECT_SOURCE_DIR}")
   target_compile_definitions(${name} PRIVATE
     OCEAN_STEP_NAME="${name}" OCEAN_STEP_DIR="${CMAKE_CURRENT_SOURCE_DIR}")

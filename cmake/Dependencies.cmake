@@ -14,3 +14,4 @@ find_program(XVFB_RUN xvfb-run)                          # xvfb (windowed tests,
 # imgui.a holds the GLFW and OpenGL3 backends, which call into GLFW.
 add_library(ocean_imgui INTERFACE)
 target_link_libraries(ocean_imgui INTERFACE PkgConfig::IMGUI glfw ${CMAKE_DL_LIBS})
+pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET fftw3)    # libfftw3-dev: the CPU FFT (step05)

@@ -93,9 +93,14 @@ void App::use_camera(glm::vec3 target, float distance, float yaw_deg, float pitc
 }
 
 std::vector<std::string> App::stage_paths(const std::vector<std::string>& stage_files) const {
-    // A file the step does not have comes from common/shaders (fullscreen.vert, for one).
+    // "dir/file" is relative to the repository (a later chapter using an earlier one's shader);
+    // a bare name is the step's own, or else common/shaders' (fullscreen.vert, for one).
     std::vector<std::string> paths;
     for (const auto& file : stage_files) {
+        if (file.find('/') != std::string::npos) {
+            paths.push_back((fs::path(OCEAN_SOURCE_DIR) / file).string());
+            continue;
+        }
         const fs::path own = fs::path(shader_dir_) / file;
         const fs::path shared = fs::path(OCEAN_SOURCE_DIR) / "common" / "shaders" / file;
         paths.push_back((fs::exists(own) || !fs::exists(shared) ? own : shared).string());

@@ -1,0 +1,164 @@
+#include "step05_fft/gpu_ocean.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace step05 {
+
+namespace {
+constexpr const char* kShaders = "step05_fft/shaders/";
+}
+
+ocean::ShaderProgram& GpuOcean::program(const std::string& file, const std::vector<std::string>& defines) {
+    ocean::ShaderProgram* p = programs_(file, {kShaders + file}, defines);
+    if (p == nullptr) throw ocean::Error("shader " + file + " does not build");
+    return *p;
+}
+
+void GpuOcean::set_common_uniforms(const ocean::ShaderProgram& p) const {
+    p.set("u_n", n_);
+    p.set("u_layer_count", cascade_count());
+}
+
+void GpuOcean::allocate(int n, int cascades) {
+    const GLsizeiptr modes = GLsizeiptr(n) * n * cascades;
+    h0_ = ocean::make_buffer();
+    glNamedBufferStorage(h0_.id(), modes * 2 * GLsizeiptr(sizeof(float)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    omega_ = ocean::make_buffer();
+    glNamedBufferStorage(omega_.id(), modes * GLsizeiptr(sizeof(double)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    for (ocean::Buffer* b : {&spectra_, &fields_}) {
+        *b = ocean::make_buffer();
+        glNamedBufferStorage(b->id(), modes * 4 * 2 * GLsizeiptr(sizeof(float)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    const int levels = 1 + int(std::floor(std::log2(double(n))));
+    for (ocean::Texture* t : {&displacement_, &slopes_}) {
+        *t = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
+        glTextureStorage3D(t->id(), levels, GL_RGBA32F, n, n, cascades);
+        glTextureParameteri(t->id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(t->id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
+    n_ = n;
+}
+
+void GpuOcean::set_spectra(const std::vector<const InitialSpectrum*>& cascades) {
+    if (cascades.empty() || int(cascades.size()) > kMaxCascades) throw ocean::Error("1 to 4 cascades");
+    const int n = cascades.front()->n;
+    if (n != n_ || cascades.size() != cascades_.size()) {
+        cascades_ = cascades;
+        allocate(n, int(cascades.size()));
+    }
+    cascades_ = cascades;
+    std::vector<float> h0;
+    std::vector<double> omega;
+    for (const InitialSpectrum* s : cascades) {
+        for (const Complex& c : s->h0) {
+            h0.push_back(float(c.real()));
+            h0.push_back(float(c.imag()));
+        }
+        omega.insert(omega.end(), s->omega.begin(), s->omega.end());
+    }
+    glNamedBufferSubData(h0_.id(), 0, GLsizeiptr(h0.size() * sizeof(float)), h0.data());
+    glNamedBufferSubData(omega_.id(), 0, GLsizeiptr(omega.size() * sizeof(double)), omega.data());
+}
+
+void GpuOcean::evolve(double time) {
+    auto& p = program("evolve.comp");
+    set_common_uniforms(p);
+    glProgramUniform1d(p.id(), p.location("u_time"), time);
+    std::vector<float> patch_sizes(kMaxCascades, 1.0f);
+    for (std::size_t c = 0; c < cascades_.size(); ++c) patch_sizes[c] = float(cascades_[c]->patch_size);
+    p.set("u_patch_size", patch_sizes);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, h0_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, omega_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, spectra_.id());
+    glUseProgram(p.id());
+    glDispatchCompute(GLuint((n_ + 7) / 8), GLuint((n_ + 7) / 8), GLuint(cascade_count()));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void GpuOcean::transform_fft(GLuint source, GLuint target, int layers) {
+    auto& p = program("fft.comp", {"FFT_SIZE " + std::to_string(n_)});
+    set_common_uniforms(p);
+    glUseProgram(p.id());
+    for (int axis = 0; axis < 2; ++axis) {  // rows (x) from source to target, then columns in place
+        p.set("u_axis", axis);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, axis == 0 ? source : target);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, target);
+        glDispatchCompute(GLuint(n_), GLuint(layers), 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
+}
+
+void GpuOcean::transform_dft(GLuint source, GLuint target, int layers) {
+    if (n_ > kMaxDftSize)
+        throw ocean::Error("the naive DFT is for N <= " + std::to_string(kMaxDftSize) + ", not " +
+                           std::to_string(n_));
+    auto& p = program("dft.comp");
+    set_common_uniforms(p);
+    glUseProgram(p.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, source);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, target);
+    glDispatchCompute(GLuint((n_ * n_ + 63) / 64), GLuint(layers), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void GpuOcean::upload_cpu_fields(double time) {
+    std::vector<float> packed(std::size_t(n_) * n_ * 4 * 2 * cascades_.size());
+    std::size_t at = 0;
+    for (const InitialSpectrum* s : cascades_) {
+        const OceanMaps maps = simulate_cpu(*s, time);
+        for (const auto& pair : kPacking)
+            for (std::size_t i = 0; i < maps[pair[0]].size(); ++i) {
+                packed[at++] = float(maps[pair[0]][i]);
+                packed[at++] = float(maps[pair[1]][i]);
+            }
+    }
+    glNamedBufferSubData(fields_.id(), 0, GLsizeiptr(packed.size() * sizeof(float)), packed.data());
+}
+
+void GpuOcean::assemble(float choppiness) {
+    auto& p = program("assemble.comp");
+    set_common_uniforms(p);
+    p.set("u_choppiness", choppiness);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, fields_.id());
+    glBindImageTexture(0, displacement_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glUseProgram(p.id());
+    glDispatchCompute(GLuint((n_ + 7) / 8), GLuint((n_ + 7) / 8), GLuint(cascade_count()));
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    // Mipmaps let distant water average its waves instead of sparkling.
+    glGenerateTextureMipmap(displacement_.id());
+    glGenerateTextureMipmap(slopes_.id());
+}
+
+void GpuOcean::simulate(double time, Backend backend, float choppiness, ocean::GpuTimers& timers) {
+    const int layers = 4 * cascade_count();
+    if (backend == Backend::Fftw) {
+        ocean::GpuScope t(timers, "fftw+upload");
+        upload_cpu_fields(time);
+    } else {
+        {
+            ocean::GpuScope t(timers, "evolve");
+            evolve(time);
+        }
+        ocean::GpuScope t(timers, backend == Backend::Dft ? "dft" : "fft");
+        if (backend == Backend::Dft)
+            transform_dft(spectra_.id(), fields_.id(), layers);
+        else
+            transform_fft(spectra_.id(), fields_.id(), layers);
+    }
+    ocean::GpuScope t(timers, "assemble");
+    assemble(choppiness);
+}
+
+std::vector<float> GpuOcean::read_fields() const {
+    std::vector<float> out(std::size_t(n_) * n_ * 4 * 2 * cascades_.size());
+    glGetNamedBufferSubData(fields_.id(), 0, GLsizeiptr(out.size() * sizeof(float)), out.data());
+    return out;
+}
+
+}  // namespace step05

@@ -1,0 +1,67 @@
+// The FFT ocean on the GPU: buffers, the compute passes (evolve, transform, assemble) and the two
+// textures the renderer samples. It simulates one or more cascades of the same resolution at
+// once (step05 uses one; step06 four), and transforms with one of three backends.
+#pragma once
+
+#include "common/gl.hpp"
+#include "common/gpu_timer.hpp"
+#include "common/shader.hpp"
+#include "step05_fft/ocean_maps.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace step05 {
+
+enum class Backend { Dft = 0, GpuFft = 1, Fftw = 2 };
+constexpr int kMaxDftSize = 64;  // the naive DFT is O(N^4)
+constexpr int kMaxCascades = 4;
+
+// Builds (or finds) a compile-time variant of a program from repository-relative files; the
+// step passes App::program_variant (hot reload, errors in the panel), tests a plain builder.
+using ProgramFactory = std::function<ocean::ShaderProgram*(
+    const std::string& name, const std::vector<std::string>& files, const std::vector<std::string>& defines)>;
+
+class GpuOcean {
+public:
+    explicit GpuOcean(ProgramFactory programs) : programs_(std::move(programs)) {}
+
+    // Uploads h0 and omega of each cascade (all of the same resolution). Call when the spectrum
+    // changes; buffers and textures are re-made when the size or the cascade count changes.
+    void set_spectra(const std::vector<const InitialSpectrum*>& cascades);
+
+    // One frame: evolve to `time`, inverse-transform with `backend`, unpack into the textures.
+    // The FFTW backend evolves and transforms on the CPU (in double) and uploads the fields.
+    void simulate(double time, Backend backend, float choppiness, ocean::GpuTimers& timers);
+
+    // The passes one by one (simulate calls them; tests and the benchmark call them alone).
+    void evolve(double time);
+    void transform_fft(GLuint source, GLuint target, int layers);  // 2D inverse FFT, in place allowed
+    void transform_dft(GLuint source, GLuint target, int layers);  // N <= 64
+    void upload_cpu_fields(double time);                           // the FFTW backend
+    void assemble(float choppiness);
+
+    int resolution() const { return n_; }
+    int cascade_count() const { return int(cascades_.size()); }
+    GLuint spectra_buffer() const { return spectra_.id(); }
+    GLuint fields_buffer() const { return fields_.id(); }
+    GLuint displacement_texture() const { return displacement_.id(); }  // 2D array, a layer a cascade
+    GLuint slopes_texture() const { return slopes_.id(); }
+    // The fields of every cascade as 4 packed complex values per texel (tests, export).
+    std::vector<float> read_fields() const;
+
+private:
+    ocean::ShaderProgram& program(const std::string& file, const std::vector<std::string>& defines = {});
+    void set_common_uniforms(const ocean::ShaderProgram& p) const;
+    void allocate(int n, int cascades);
+
+    ProgramFactory programs_;
+    std::vector<const InitialSpectrum*> cascades_;
+    int n_ = 0;
+    ocean::Buffer h0_, omega_;
+    ocean::Buffer spectra_, fields_;
+    ocean::Texture displacement_, slopes_;
+};
+
+}  // namespace step05

@@ -1,0 +1,88 @@
+#include "step05_fft/ocean_maps.hpp"
+
+#include <fftw3.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace step05 {
+
+const char* field_name(Field f) {
+    static const char* names[kFieldCount] = {"height", "displacement_x", "displacement_z", "slope_x",
+                                             "slope_z", "ddx_dx", "ddz_dz", "ddx_dz"};
+    return names[f];
+}
+
+double reduced_phase(double omega, double time) {
+    const double phase = std::fmod(omega * time, 2 * kPi);
+    return phase < 0 ? phase + 2 * kPi : phase;
+}
+
+std::array<ComplexField, 4> packed_spectra(const InitialSpectrum& s, double time) {
+    const int n = s.n;
+    std::array<ComplexField, 4> out;
+    for (auto& field : out) field.assign(std::size_t(n) * n, {0, 0});
+    const Complex i_unit(0, 1);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t index = std::size_t(j) * n + i;
+            const std::size_t minus = std::size_t((n - j) % n) * n + std::size_t((n - i) % n);
+            const double phase = reduced_phase(s.omega[index], time);
+            const Complex rotation(std::cos(phase), std::sin(phase));
+            const Complex h = s.h0[index] * rotation + std::conj(s.h0[minus]) * std::conj(rotation);
+            const double kx = wavenumber(i, n, s.patch_size), kz = wavenumber(j, n, s.patch_size);
+            const double k = std::hypot(kx, kz);
+            if (k == 0) continue;  // the mean level: zero
+            const Complex dx = -i_unit * (kx / k) * h, dz = -i_unit * (kz / k) * h;
+            const Complex sx = i_unit * kx * h, sz = i_unit * kz * h;
+            const Complex dxx = (kx * kx / k) * h, dzz = (kz * kz / k) * h, dxz = (kx * kz / k) * h;
+            out[0][index] = h + i_unit * dx;
+            out[1][index] = dz + i_unit * sx;
+            out[2][index] = sz + i_unit * dxx;
+            out[3][index] = dzz + i_unit * dxz;
+        }
+    return out;
+}
+
+double OceanMaps::jacobian(std::size_t index, double choppiness) const {
+    const double xx = 1 + choppiness * fields[DDxDx][index];
+    const double zz = 1 + choppiness * fields[DDzDz][index];
+    const double xz = choppiness * fields[DDxDz][index];
+    return xx * zz - xz * xz;
+}
+
+ComplexField inverse_fft_2d(const ComplexField& input, int n) {
+    static_assert(sizeof(Complex) == sizeof(fftw_complex), "std::complex<double> is fftw_complex");
+    ComplexField output(input.size());
+    ComplexField scratch = input;  // FFTW_ESTIMATE plans do not touch the input, but may not be const
+    fftw_plan plan = fftw_plan_dft_2d(n, n, reinterpret_cast<fftw_complex*>(scratch.data()),
+                                      reinterpret_cast<fftw_complex*>(output.data()), FFTW_BACKWARD,
+                                      FFTW_ESTIMATE);
+    fftw_execute(plan);
+    fftw_destroy_plan(plan);
+    return output;
+}
+
+OceanMaps transform_fftw(const std::array<ComplexField, 4>& spectra, int n, double patch_size) {
+    OceanMaps maps;
+    maps.n = n;
+    maps.patch_size = patch_size;
+    for (std::size_t t = 0; t < 4; ++t) {
+        const ComplexField result = inverse_fft_2d(spectra[t], n);
+        auto& real_part = maps.fields[kPacking[t][0]];
+        auto& imaginary_part = maps.fields[kPacking[t][1]];
+        real_part.resize(result.size());
+        imaginary_part.resize(result.size());
+        for (std::size_t i = 0; i < result.size(); ++i) {
+            real_part[i] = result[i].real();
+            imaginary_part[i] = result[i].imag();
+        }
+    }
+    return maps;
+}
+
+OceanMaps simulate_cpu(const InitialSpectrum& s, double time) {
+    return transform_fftw(packed_spectra(s, time), s.n, s.patch_size);
+}
+
+}  // namespace step05

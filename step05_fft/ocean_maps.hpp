@@ -1,0 +1,56 @@
+// Chapter 4.3-4.5 on the CPU, in double precision: the spectrum at time t and the eight real
+// maps the renderer needs, through FFTW. This is the reference for the GPU's DFT and FFT, and
+// the third backend of the step (computed here, then uploaded).
+//
+//   h~(k, t) = h0(k) e^{i omega t} + conj(h0(-k)) e^{-i omega t}      (Hermitian: h is real)
+//   D~  = -i k/|k| h~        (choppy displacement),   slopes i k h~,
+//   dDx/dx <- kx^2/|k| h~,   dDz/dz <- kz^2/|k| h~,   dDx/dz <- kx kz/|k| h~
+//   field(x) = sum_k field~(k) e^{i k.x}                                (inverse DFT, no 1/N)
+//
+// The eight real fields travel as four complex ones: if A~ and B~ are Hermitian, the inverse
+// transform of A~ + i B~ is a + i b, two real fields for the price of one transform.
+#pragma once
+
+#include "step05_fft/spectrum.hpp"
+
+#include <array>
+#include <complex>
+#include <vector>
+
+namespace step05 {
+
+using Complex = std::complex<double>;
+using ComplexField = std::vector<Complex>;  // n*n, row (z) major, FFT layout
+
+// The pairs packed into each complex transform (real part, imaginary part).
+enum Field { Height, DisplacementX, DisplacementZ, SlopeX, SlopeZ, DDxDx, DDzDz, DDxDz, kFieldCount };
+constexpr std::array<std::array<Field, 2>, 4> kPacking{{{Height, DisplacementX},
+                                                        {DisplacementZ, SlopeX},
+                                                        {SlopeZ, DDxDx},
+                                                        {DDzDz, DDxDz}}};
+const char* field_name(Field f);  // "height", "displacement_x", ...
+
+// The phase omega t reduced to [0, 2 pi) in double precision, as the GPU receives it.
+double reduced_phase(double omega, double time);
+
+// The four packed spectra at time t.
+std::array<ComplexField, 4> packed_spectra(const InitialSpectrum& s, double time);
+
+struct OceanMaps {
+    int n = 0;
+    double patch_size = 0;
+    std::array<std::vector<double>, kFieldCount> fields;  // each n*n, x_i = i L / n, z_j = j L / n
+
+    const std::vector<double>& operator[](Field f) const { return fields[f]; }
+    // J = (1 + l dDx/dx)(1 + l dDz/dz) - (l dDx/dz)^2 at cell `index`, for choppiness l.
+    double jacobian(std::size_t index, double choppiness) const;
+};
+
+// Inverse 2D transforms of the four packed spectra with FFTW (double), unpacked into 8 fields.
+OceanMaps transform_fftw(const std::array<ComplexField, 4>& spectra, int n, double patch_size);
+// The whole reference: evolve to t, transform.
+OceanMaps simulate_cpu(const InitialSpectrum& s, double time);
+// The inverse 2D DFT of one complex field with FFTW (for tests on arbitrary input).
+ComplexField inverse_fft_2d(const ComplexField& input, int n);
+
+}  // namespace step05

@@ -1,0 +1,176 @@
+#include "step05_fft/spectrum.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace step05 {
+
+double dispersion(double k, double depth) { return std::sqrt(kGravity * k * std::tanh(k * depth)); }
+
+double dispersion_derivative(double k, double depth) {
+    const double omega = dispersion(k, depth);
+    if (omega <= 0) return std::sqrt(kGravity * depth) ;  // shallow-water limit as k -> 0
+    const double kh = std::min(k * depth, 350.0);         // cosh overflows past ~710
+    const double sech = 1.0 / std::cosh(kh);
+    return kGravity * (std::tanh(kh) + kh * sech * sech) / (2.0 * omega);
+}
+
+double jonswap_alpha(double wind_speed, double fetch) {
+    return 0.076 * std::pow(wind_speed * wind_speed / (fetch * kGravity), 0.22);
+}
+
+double jonswap_peak_omega(double wind_speed, double fetch) {
+    return 22.0 * std::cbrt(kGravity * kGravity / (wind_speed * fetch));
+}
+
+double jonswap(double omega, double wind_speed, double fetch, double gamma) {
+    if (omega <= 0 || wind_speed <= 0 || fetch <= 0) return 0;
+    const double alpha = jonswap_alpha(wind_speed, fetch);
+    const double peak = jonswap_peak_omega(wind_speed, fetch);
+    const double sigma = omega <= peak ? 0.07 : 0.09;
+    const double r = std::exp(-(omega - peak) * (omega - peak) / (2 * sigma * sigma * peak * peak));
+    return alpha * kGravity * kGravity / std::pow(omega, 5) * std::exp(-1.25 * std::pow(peak / omega, 4)) *
+           std::pow(gamma, r);
+}
+
+double phillips_k(double k, double wind_speed) {
+    if (k <= 0 || wind_speed <= 0) return 0;
+    const double largest = wind_speed * wind_speed / kGravity;  // L: the longest wave the wind makes
+    return 0.5 * 0.0081 * std::exp(-1.0 / (k * largest * k * largest)) / (k * k * k);
+}
+
+double tma_attenuation(double omega, double depth) {
+    const double omega_h = omega * std::sqrt(depth / kGravity);
+    if (omega_h <= 1) return 0.5 * omega_h * omega_h;
+    if (omega_h < 2) return 1 - 0.5 * (2 - omega_h) * (2 - omega_h);
+    return 1;
+}
+
+double spreading_exponent(double omega, double peak_omega, double swell) {
+    if (omega <= 0 || peak_omega <= 0) return 0;
+    const double ratio = omega / peak_omega;
+    const double hasselmann = ratio <= 1 ? 6.97 * std::pow(ratio, 4.06) : 9.77 * std::pow(ratio, -2.33);
+    // Horvath's swell term: long waves (omega < omega_p) narrow the most.
+    return hasselmann + 16.0 * std::tanh(peak_omega / omega) * swell * swell;
+}
+
+double directional_spreading(double omega, double theta, double peak_omega, double spread, double swell) {
+    const double s = spreading_exponent(omega, peak_omega, swell);
+    // Normalisation of cos^2s(theta/2) over [-pi, pi]: Gamma(s+1)^2 2^(2s-1) / (pi Gamma(2s+1)).
+    const double log_norm = 2 * std::lgamma(s + 1) - std::lgamma(2 * s + 1) + (2 * s - 1) * std::log(2.0) -
+                            std::log(kPi);
+    const double directional = std::exp(log_norm) * std::pow(std::abs(std::cos(0.5 * theta)), 2 * s);
+    return spread / (2 * kPi) + (1 - spread) * directional;
+}
+
+namespace {
+
+double peak_omega_of(const SpectrumParams& p) {
+    if (p.wind_speed <= 0) return 0;
+    if (p.model == SpectrumModel::Jonswap) return jonswap_peak_omega(p.wind_speed, p.fetch);
+    return 0.855 * kGravity / p.wind_speed;  // Pierson-Moskowitz: where Phillips' peak falls
+}
+
+}  // namespace
+
+double omnidirectional_k(const SpectrumParams& p, double k) {
+    if (k <= 0) return 0;
+    const double omega = dispersion(k, p.depth);
+    double density = p.model == SpectrumModel::Jonswap
+                         ? jonswap(omega, p.wind_speed, p.fetch, p.gamma) * dispersion_derivative(k, p.depth)
+                         : phillips_k(k, p.wind_speed);
+    if (p.tma) density *= tma_attenuation(omega, p.depth);
+    return density;
+}
+
+double spectrum_2d(const SpectrumParams& p, double kx, double kz) {
+    const double k = std::hypot(kx, kz);
+    if (k <= 0 || k < p.low_cutoff || k > p.high_cutoff) return 0;
+    const double wind = p.wind_direction * kPi / 180.0;
+    double theta = std::atan2(kz, kx) - wind;
+    theta = std::remainder(theta, 2 * kPi);  // into [-pi, pi]
+    const double omega = dispersion(k, p.depth);
+    const double d = directional_spreading(omega, theta, peak_omega_of(p), p.spread, p.swell);
+    return p.amplitude_scale * p.amplitude_scale * omnidirectional_k(p, k) * d / k;
+}
+
+double wavenumber(int index, int n, double patch_size) {
+    const int m = index < n / 2 ? index : index - n;
+    return 2 * kPi * m / patch_size;
+}
+
+bool resolved_mode(const SpectrumParams& p, int i, int j) {
+    const int n = p.resolution;
+    if ((i == 0 && j == 0) || i == n / 2 || j == n / 2) return false;
+    const double k = std::hypot(wavenumber(i, n, p.patch_size), wavenumber(j, n, p.patch_size));
+    return k >= p.low_cutoff && k <= p.high_cutoff;
+}
+
+double GaussianRandom::uniform() {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return (double(z >> 11) + 0.5) * (1.0 / 9007199254740992.0);  // (0, 1): log() stays finite
+}
+
+double GaussianRandom::next() {
+    if (has_spare_) {
+        has_spare_ = false;
+        return spare_;
+    }
+    const double radius = std::sqrt(-2 * std::log(uniform()));
+    const double angle = 2 * kPi * uniform();
+    spare_ = radius * std::sin(angle);
+    has_spare_ = true;
+    return radius * std::cos(angle);
+}
+
+InitialSpectrum initial_spectrum(const SpectrumParams& p) {
+    const int n = p.resolution;
+    const double dk = 2 * kPi / p.patch_size;
+    InitialSpectrum s;
+    s.n = n;
+    s.patch_size = p.patch_size;
+    s.h0.assign(std::size_t(n) * n, {0, 0});
+    s.omega.assign(std::size_t(n) * n, 0);
+    s.density.assign(std::size_t(n) * n, 0);
+    GaussianRandom random(p.seed);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t index = std::size_t(j) * n + i;
+            const double kx = wavenumber(i, n, p.patch_size), kz = wavenumber(j, n, p.patch_size);
+            // Draw for every mode, resolved or not, so that changing a cut-off does not reshuffle
+            // the random numbers of the modes that stay.
+            const double xr = random.next(), xi = random.next();
+            s.omega[index] = dispersion(std::hypot(kx, kz), p.depth);
+            if (!resolved_mode(p, i, j)) continue;
+            s.density[index] = spectrum_2d(p, kx, kz) * dk * dk;
+            s.h0[index] = std::complex<double>(xr, xi) * std::sqrt(s.density[index] / 4);
+        }
+    return s;
+}
+
+double resolved_variance(const SpectrumParams& p) {
+    const int n = p.resolution;
+    const double dk = 2 * kPi / p.patch_size;
+    double sum = 0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            if (resolved_mode(p, i, j))
+                sum += spectrum_2d(p, wavenumber(i, n, p.patch_size), wavenumber(j, n, p.patch_size)) * dk * dk;
+    return sum;
+}
+
+std::string validate(const SpectrumParams& p) {
+    const int n = p.resolution;
+    if (n < 64 || n > 512 || (n & (n - 1)) != 0)
+        return "resolution must be a power of two in [64, 512], got " + std::to_string(n);
+    if (!(p.patch_size > 0)) return "patch_size must be positive";
+    if (!(p.depth > 0)) return "depth must be positive";
+    if (!(p.fetch > 0)) return "fetch must be positive";
+    if (p.low_cutoff > p.high_cutoff) return "low_cutoff must not exceed high_cutoff";
+    return "";
+}
+
+}  // namespace step05

@@ -1,0 +1,106 @@
+// Chapter 4.1 on the CPU, in double precision: the ocean's wave spectrum and the initial
+// amplitudes h0(k) drawn from it. The GPU receives h0 and omega from here (they are computed
+// once, and again when a parameter changes); tests hold the GPU's transforms to this reference.
+//
+// From a 1D frequency spectrum S(omega) (JONSWAP) and a directional spreading D(omega, theta)
+// with integral over theta = 1, the 2D spectrum over wavenumbers is
+//     Phi(kx, kz) = S(omega(k)) * D(omega, theta) * (d omega / dk) / k
+// because S domega dtheta = Phi dkx dkz and dkx dkz = k dk dtheta. Its integral over all k is
+// the variance of the sea surface, in m^2, when amplitude_scale = 1.
+#pragma once
+
+#include <complex>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace step05 {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kGravity = 9.81;
+
+enum class SpectrumModel { Jonswap = 0, Phillips = 1 };
+
+struct SpectrumParams {
+    SpectrumModel model = SpectrumModel::Jonswap;
+    double wind_speed = 12;        // U, m/s at 10 m
+    double wind_direction = 30;    // degrees, direction the wind blows towards (0 = +x, 90 = +z)
+    double fetch = 300000;         // F, metres of open water upwind
+    double gamma = 3.3;            // JONSWAP peak enhancement
+    double spread = 0.2;           // fraction of the energy spread evenly over all directions
+    double swell = 0;              // 0..1: narrows the spreading around the wind (long-crested swell)
+    double depth = 500;            // metres (finite-depth dispersion; TMA attenuation when enabled)
+    bool tma = false;              // TMA shallow-water attenuation of the spectrum
+    double patch_size = 250;       // L, metres: the simulated tile repeats every L
+    int resolution = 256;          // N x N modes
+    std::uint64_t seed = 1;
+    double amplitude_scale = 1;    // 1: heights in metres
+    double low_cutoff = 0;         // rad/m: modes with |k| below are removed
+    double high_cutoff = 1000;     // rad/m: modes with |k| above are removed
+};
+
+// The finite-depth dispersion relation omega^2 = g k tanh(k h), and its derivative. Used alike
+// by the spectrum and by the time evolution.
+double dispersion(double k, double depth);
+double dispersion_derivative(double k, double depth);  // d omega / dk
+
+// JONSWAP's fetch-limited parameters.
+double jonswap_alpha(double wind_speed, double fetch);        // 0.076 (U^2 / (F g))^0.22
+double jonswap_peak_omega(double wind_speed, double fetch);   // 22 (g^2 / (U F))^(1/3)
+// S(omega), m^2 s / rad. Zero for omega <= 0 or a calm sea.
+double jonswap(double omega, double wind_speed, double fetch, double gamma);
+// Phillips, corrected from the seed: F(k) = (alpha / 2) exp(-1 / (k L)^2) / k^3 per unit k, with
+// L = U^2 / g and alpha = 0.0081; as a 2D density that is the seed's exp(-1/(kL)^2) / k^4 shape.
+double phillips_k(double k, double wind_speed);
+// Kitaigorodskii's depth attenuation used by the TMA spectrum (1 in deep water).
+double tma_attenuation(double omega, double depth);
+
+// Hasselmann's cos^2s exponent for omega relative to the peak, plus the swell's narrowing.
+double spreading_exponent(double omega, double peak_omega, double swell);
+// D(omega, theta) with theta measured from the wind: integrates to 1 over [-pi, pi].
+double directional_spreading(double omega, double theta, double peak_omega, double spread, double swell);
+
+// Energy density per unit k of the omnidirectional spectrum (m^2 per rad/m), for the model.
+double omnidirectional_k(const SpectrumParams& p, double k);
+// Phi(kx, kz), m^2 per (rad/m)^2, including cut-offs and amplitude_scale^2.
+double spectrum_2d(const SpectrumParams& p, double kx, double kz);
+
+// Wavenumber of grid index i (FFT layout: 0..N/2-1, then -N/2..-1), rad/m.
+double wavenumber(int index, int n, double patch_size);
+// True for the modes the grid can carry as travelling waves: not k = 0, not the Nyquist row or
+// column (which has no -k partner), inside the cut-offs.
+bool resolved_mode(const SpectrumParams& p, int i, int j);
+
+struct InitialSpectrum {
+    int n = 0;
+    double patch_size = 0;
+    std::vector<std::complex<double>> h0;  // n*n, row j (z) major, FFT layout
+    std::vector<double> omega;             // n*n, rad/s, from the dispersion relation
+    std::vector<double> density;           // n*n, Phi(k) dk^2: the expected energy of each mode
+};
+
+// h0(k) = (xi_r + i xi_i) sqrt(Phi(k) dk^2 / 4) with xi standard normal. The 1/4 (not the
+// seed's 1/2) because the time evolution adds conj(h0(-k)), a second copy of every mode's energy:
+// then E|h(k, t)|^2 = (Phi(k) + Phi(-k)) dk^2 / 2 and the height variance is sum Phi dk^2.
+InitialSpectrum initial_spectrum(const SpectrumParams& p);
+
+// sum over resolved modes of Phi(k) dk^2: the expected variance of the height field, m^2.
+double resolved_variance(const SpectrumParams& p);
+
+// Standard normal numbers from splitmix64 + Box-Muller: the same seed, the same sea, anywhere.
+class GaussianRandom {
+public:
+    explicit GaussianRandom(std::uint64_t seed) : state_(seed) {}
+    double next();
+
+private:
+    double uniform();
+    std::uint64_t state_;
+    bool has_spare_ = false;
+    double spare_ = 0;
+};
+
+// A one-line problem with the parameters, or "" (resolution not a power of two in [64, 512]...).
+std::string validate(const SpectrumParams& p);
+
+}  // namespace step05

@@ -1,0 +1,136 @@
+// step05 on the GPU: the Stockham FFT against FFTW on random input, and the three backends'
+// ocean fields against the CPU reference (spectrum, h0, time evolution in double, FFTW).
+// Relative error = max |gpu - reference| / max |reference|, per field; limit 1e-4.
+#include "step05_fft/gpu_ocean.hpp"
+#include "tests/gpu/gl_test_context.hpp"
+#include "tests/gpu/program_cache.hpp"
+
+#include <cmath>
+#include <random>
+
+namespace {
+
+using namespace step05;
+
+struct FftTest : ocean_test::GlTest {
+    ocean_test::ProgramCache cache;
+    ProgramFactory factory() {
+        return [this](const std::string& n, const std::vector<std::string>& f, const std::vector<std::string>& d) {
+            return cache(n, f, d);
+        };
+    }
+};
+
+double relative_error(const std::vector<float>& gpu, std::size_t offset, std::size_t stride,
+                      const std::vector<double>& reference) {
+    double worst = 0, largest = 0;
+    for (std::size_t i = 0; i < reference.size(); ++i) {
+        worst = std::max(worst, std::abs(double(gpu[offset + i * stride]) - reference[i]));
+        largest = std::max(largest, std::abs(reference[i]));
+    }
+    return largest > 0 ? worst / largest : worst;
+}
+
+TEST_F(FftTest, GpuFftMatchesFftwOnRandomInput) {
+    for (int n : {64, 128, 256, 512}) {
+        SpectrumParams p;
+        p.resolution = n;
+        const InitialSpectrum s = initial_spectrum(p);  // only to size the buffers
+        GpuOcean ocean(factory());
+        ocean.set_spectra({&s});
+        std::mt19937 random{unsigned(n)};
+        std::uniform_real_distribution<float> uniform(-1, 1);
+        std::vector<float> input(std::size_t(n) * n * 4 * 2);
+        for (float& v : input) v = uniform(random);
+        glNamedBufferSubData(ocean.spectra_buffer(), 0, GLsizeiptr(input.size() * sizeof(float)), input.data());
+        ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), 4);
+        const auto output = ocean.read_fields();
+        for (int layer = 0; layer < 4; ++layer) {
+            const std::size_t base = std::size_t(layer) * n * n;
+            ComplexField field(std::size_t(n) * n);
+            for (std::size_t i = 0; i < field.size(); ++i)
+                field[i] = {input[2 * (base + i)], input[2 * (base + i) + 1]};
+            const auto reference = inverse_fft_2d(field, n);
+            std::vector<double> re(reference.size()), im(reference.size());
+            for (std::size_t i = 0; i < reference.size(); ++i) {
+                re[i] = reference[i].real();
+                im[i] = reference[i].imag();
+            }
+            const double error = std::max(relative_error(output, 2 * base, 2, re),
+                                          relative_error(output, 2 * base + 1, 2, im));
+            EXPECT_LT(error, 1e-4) << "N = " << n << ", layer " << layer;
+            if (layer == 0) std::printf("N = %d: GPU FFT vs FFTW relative error %.2e\n", n, error);
+        }
+    }
+}
+
+TEST_F(FftTest, BackendsMatchTheCpuReference) {
+    for (int n : {64, 128, 256}) {
+        SpectrumParams p;
+        p.resolution = n;
+        p.seed = 7;
+        const InitialSpectrum s = initial_spectrum(p);
+        GpuOcean ocean(factory());
+        ocean.set_spectra({&s});
+        for (double t : {0.0, 2.5, 86400.0 * 3 + 0.25}) {
+            const OceanMaps reference = simulate_cpu(s, t);
+            std::vector<Backend> backends{Backend::GpuFft, Backend::Fftw};
+            if (n <= kMaxDftSize) backends.push_back(Backend::Dft);
+            for (Backend backend : backends) {
+                if (backend == Backend::Fftw) {
+                    ocean.upload_cpu_fields(t);
+                } else {
+                    ocean.evolve(t);
+                    if (backend == Backend::Dft)
+                        ocean.transform_dft(ocean.spectra_buffer(), ocean.fields_buffer(), 4);
+                    else
+                        ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), 4);
+                }
+                const auto fields = ocean.read_fields();
+                double worst = 0;
+                for (std::size_t pair = 0; pair < 4; ++pair)
+                    for (std::size_t part = 0; part < 2; ++part) {
+                        const double e = relative_error(fields, pair * n * n * 2 + part, 2,
+                                                        reference[kPacking[pair][part]]);
+                        EXPECT_LT(e, 1e-4) << "N = " << n << ", backend " << int(backend) << ", t = " << t
+                                           << ", " << field_name(kPacking[pair][part]);
+                        worst = std::max(worst, e);
+                    }
+                std::printf("N = %d, backend %s, t = %g: worst relative error %.2e\n", n,
+                            backend == Backend::Dft ? "DFT" : backend == Backend::GpuFft ? "GPU FFT" : "FFTW",
+                            t, worst);
+            }
+        }
+    }
+}
+
+TEST_F(FftTest, AssembledTexturesHoldTheChoppyMaps) {
+    SpectrumParams p;
+    p.resolution = 64;
+    const InitialSpectrum s = initial_spectrum(p);
+    GpuOcean ocean(factory());
+    ocean.set_spectra({&s});
+    ocean::GpuTimers timers;
+    const float choppiness = 1.3f;
+    ocean.simulate(4.0, Backend::GpuFft, choppiness, timers);
+    std::vector<float> displacement(64 * 64 * 4), slopes(64 * 64 * 4);
+    glGetTextureImage(ocean.displacement_texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(displacement.size() * 4),
+                      displacement.data());
+    glGetTextureImage(ocean.slopes_texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(slopes.size() * 4), slopes.data());
+    const OceanMaps reference = simulate_cpu(s, 4.0);
+    double scale = 0, worst = 0;
+    for (std::size_t i = 0; i < 64 * 64; ++i) {
+        const double expected[8] = {choppiness * reference[DisplacementX][i], reference[Height][i],
+                                    choppiness * reference[DisplacementZ][i], choppiness * reference[DDxDz][i],
+                                    reference[SlopeX][i], reference[SlopeZ][i],
+                                    choppiness * reference[DDxDx][i], choppiness * reference[DDzDz][i]};
+        for (int c = 0; c < 8; ++c) {
+            const float got = c < 4 ? displacement[i * 4 + std::size_t(c)] : slopes[i * 4 + std::size_t(c - 4)];
+            worst = std::max(worst, std::abs(got - expected[c]));
+            scale = std::max(scale, std::abs(expected[c]));
+        }
+    }
+    EXPECT_LT(worst / scale, 1e-4);
+}
+
+}  // namespace
