@@ -53,6 +53,9 @@ int App::run(const std::vector<std::string>& args, const StepLocation& where) {
         if (auto error = params_.load_preset(options.preset)) return fail(kExitUsage, *error);
     for (const auto& assignment : options.sets)
         if (auto error = params_.set_assignment(assignment)) return fail(kExitUsage, *error);
+    if (!options.export_dir.empty() && !supports_export())
+        return fail(kExitUsage, "--export: " + step_name() + " has no maps to export (step05_fft and "
+                                "step06_foam_sky have)");
     if (!options.save_preset.empty()) {
         if (auto error = params_.save_preset(options.save_preset, step_name() + " preset"))
             return fail(kExitRuntimeError, *error);
@@ -232,7 +235,17 @@ int App::run_loop(const Options& options) {
         if (auto error = save_png(screenshot, path)) throw Error(*error);
         std::cout << "screenshot: " << fs::absolute(path).string() << "\n";
     }
-    if (options.bench) std::cout << timers_.report(bench_seconds, std::max(0, frame - 1));
+    if (!options.export_dir.empty()) {
+        std::error_code ec;
+        fs::create_directories(options.export_dir, ec);
+        if (ec) throw Error("--export: cannot create '" + options.export_dir + "': " + ec.message());
+        export_results(options.export_dir);
+        std::cout << "export: " << fs::absolute(options.export_dir).string() << "\n";
+    }
+    if (options.bench) {
+        std::cout << timers_.report(bench_seconds, std::max(0, frame - 1));
+        bench_extra(std::cout);
+    }
 
     const GlDebugStats& gl = gl_debug_stats();
     if (gl.errors > 0 && headless) {

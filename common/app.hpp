@@ -19,6 +19,7 @@
 #include "common/params.hpp"
 #include "common/shader.hpp"
 
+#include <iosfwd>
 #include <map>
 #include <memory>
 #include <string>
@@ -59,6 +60,12 @@ protected:
     virtual void update(double /*time*/, double /*dt*/) {}
     virtual void render() = 0;
     virtual void ui() {}
+    // Steps that simulate maps write them for --export (after the last frame); throw ocean::Error
+    // on failure.
+    virtual bool supports_export() const { return false; }
+    virtual void export_results(const std::string& /*dir*/) {}
+    // More --bench lines after the per-pass table (step05 compares its FFT backends).
+    virtual void bench_extra(std::ostream& /*out*/) {}
 
     ParamRegistry& params() { return params_; }
     // Loads a program from files in the step's shaders/ folder (or --shader-dir); throws

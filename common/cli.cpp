@@ -116,6 +116,10 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             if (!take_value("a preset file")) return result;
             if (value.empty()) return bad("a preset file");
             o.save_preset = value;
+        } else if (name == "--export") {
+            if (!take_value("a directory")) return result;
+            if (value.empty()) return bad("a directory");
+            o.export_dir = value;
         } else if (name == "--shader-dir") {
             if (!take_value("a directory")) return result;
             if (value.empty()) return bad("a directory");
@@ -147,6 +151,8 @@ usage: )" + step + R"( [flags]
   --bench               print per-pass GPU times and frames per second after the run
   --ui                  draw the ImGui panel in headless runs too
   --shader-dir DIR      read this step's shaders from DIR instead of its source folder
+  --export DIR          write the simulated maps and their parameters to DIR after the last
+                        frame (step05_fft and step06_foam_sky)
   --help                this text
 
 Keys (windowed): drag to orbit, wheel to zoom, C switches orbit/fly camera (WASD, Q/E in fly),

@@ -23,6 +23,7 @@ struct Options {
     bool bench = false;             // per-pass GPU times and frames per second after the run
     bool show_ui = false;           // --ui: draw the panel in headless runs (and screenshots)
     std::string shader_dir;         // --shader-dir DIR: read this step's shaders from DIR
+    std::string export_dir;         // --export DIR: the step writes its maps there (step05, step06)
 };
 
 struct ParseResult {

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
 #include <sys/stat.h>
 #include <unordered_set>
@@ -55,6 +56,41 @@ Image read_framebuffer(GLuint framebuffer, int width, int height) {
                          image.rgba.begin() + std::ptrdiff_t((height - 1 - y) * row));
     // Screenshots are opaque whatever alpha the passes left behind.
     for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;
+    return image;
+}
+
+std::optional<std::string> save_pfm(const FloatImage& image, const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (file == nullptr) return "cannot write '" + path + "': " + std::strerror(errno);
+    std::fprintf(file, "Pf\n%d %d\n-1.0\n", image.width, image.height);  // negative scale: little-endian
+    const std::size_t written = std::fwrite(image.values.data(), sizeof(float), image.values.size(), file);
+    const bool ok = written == image.values.size() && std::fclose(file) == 0;
+    if (!ok) return "cannot write '" + path + "'";
+    return std::nullopt;
+}
+
+std::optional<FloatImage> load_pfm(const std::string& path, std::string* error) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) {
+        *error = "'" + path + "': " + std::strerror(errno);
+        return std::nullopt;
+    }
+    FloatImage image;
+    char magic[3] = {};
+    double scale = 0;
+    const bool header = std::fscanf(file, "%2s %d %d %lf", magic, &image.width, &image.height, &scale) == 4 &&
+                        std::string(magic) == "Pf" && scale < 0 && image.width > 0 && image.height > 0 &&
+                        image.width <= 65536 && image.height <= 65536 && std::fgetc(file) != EOF;
+    if (header) {
+        image.values.resize(std::size_t(image.width) * std::size_t(image.height));
+        if (std::fread(image.values.data(), sizeof(float), image.values.size(), file) != image.values.size())
+            image.values.clear();
+    }
+    std::fclose(file);
+    if (!header || image.values.empty()) {
+        *error = "'" + path + "': not a little-endian greyscale PFM";
+        return std::nullopt;
+    }
     return image;
 }
 

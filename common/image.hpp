@@ -22,6 +22,15 @@ std::optional<std::string> save_png(const Image& image, const std::string& path)
 // The colour attachment of `framebuffer` (0: the window's back buffer), flipped top-down.
 Image read_framebuffer(GLuint framebuffer, int width, int height);
 
+// Single-channel float images in PFM ("Pf", little-endian, rows bottom to top as the format
+// says; we write row 0 first, so row 0 of `values` is the bottom row of the picture).
+struct FloatImage {
+    int width = 0, height = 0;
+    std::vector<float> values;  // width * height, row 0 first
+};
+std::optional<std::string> save_pfm(const FloatImage& image, const std::string& path);
+std::optional<FloatImage> load_pfm(const std::string& path, std::string* error);
+
 struct ImageDifference {
     bool same_size = false;
     double rmse = 0;              // root mean square channel difference, in 0..255 units

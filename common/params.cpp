@@ -229,7 +229,7 @@ Param* ParamRegistry::find(const std::string& name) {
 std::string ParamRegistry::unknown_name_message(const std::string& name) const {
     std::string message = "unknown parameter '" + ellipsize(name, 40) + "'";
     const Param* closest = nullptr;
-    std::size_t best = 4;  // suggest only near misses
+    std::size_t best = name.size() / 3 + 1;  // suggest only near misses: a typo, not another word
     for (const auto& p : params_) {
         const std::size_t d = edit_distance(name, p->name());
         if (d < best) { best = d; closest = p.get(); }

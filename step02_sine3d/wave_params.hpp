@@ -64,10 +64,13 @@ private:
 
 class GridParams {
 public:
-    void declare(ocean::ParamRegistry& p) {
-        p.add_float("plane_size", &plane_size_, 80, 1, 1000, "side of the square plane, metres").in_group("grid");
-        p.add_int("x_quads", &x_quads_, 160, 1, 2048, "grid cells along x (vertices: x_quads + 1)").in_group("grid");
-        p.add_int("z_quads", &z_quads_, 160, 1, 2048, "grid cells along z (vertices: z_quads + 1)").in_group("grid");
+    void declare(ocean::ParamRegistry& p, float default_size = 80, int default_quads = 160) {
+        p.add_float("plane_size", &plane_size_, default_size, 1, 5000, "side of the square plane, metres")
+            .in_group("grid");
+        p.add_int("x_quads", &x_quads_, default_quads, 1, 2048, "grid cells along x (vertices: x_quads + 1)")
+            .in_group("grid");
+        p.add_int("z_quads", &z_quads_, default_quads, 1, 2048, "grid cells along z (vertices: z_quads + 1)")
+            .in_group("grid");
     }
 
     // Rebuilds the mesh only when its size or resolution changed.

@@ -3,6 +3,8 @@
 #include "common/error.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 
 namespace step05 {
@@ -153,6 +155,60 @@ void GpuOcean::simulate(double time, Backend backend, float choppiness, ocean::G
     }
     ocean::GpuScope t(timers, "assemble");
     assemble(choppiness);
+}
+
+namespace {
+
+template <class Work>
+double median_ms(int repeats, Work work) {
+    std::vector<double> ms;
+    for (int r = 0; r < repeats; ++r) {
+        glFinish();
+        const auto start = std::chrono::steady_clock::now();
+        work();
+        glFinish();
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+}
+
+std::string format_ms(const char* label, double ms) {
+    char line[128];
+    std::snprintf(line, sizeof line, "%-8s %10.3f ms", label, ms);
+    return line;
+}
+
+}  // namespace
+
+std::vector<std::string> time_backends(GpuOcean& ocean, double time, int repeats) {
+    const int n = ocean.resolution(), layers = 4 * ocean.cascade_count();
+    std::vector<std::string> lines;
+    ocean.evolve(time);
+    const double fft = median_ms(repeats, [&] { ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), layers); });
+    double dft = 0;
+    if (n <= kMaxDftSize)
+        dft = median_ms(repeats, [&] { ocean.transform_dft(ocean.spectra_buffer(), ocean.fields_buffer(), layers); });
+    // FFTW: the same four transforms (double precision, planned once), timed without the upload.
+    FftwInverse2d fftw(n);
+    std::vector<ComplexField> inputs(std::size_t(layers), ComplexField(std::size_t(n) * n, Complex(0.5, -0.25)));
+    const double cpu = median_ms(repeats, [&] {
+        for (const auto& input : inputs) fftw.run(input);
+    });
+    lines.push_back("N = " + std::to_string(n) + ", " + std::to_string(layers) + " complex fields:");
+    if (n <= kMaxDftSize) lines.push_back(format_ms("DFT", dft));
+    else lines.push_back("DFT      (only for N <= 64)");
+    lines.push_back(format_ms("GPU FFT", fft));
+    lines.push_back(format_ms("FFTW", cpu));
+    char ratio[160];
+    if (n <= kMaxDftSize) {
+        std::snprintf(ratio, sizeof ratio, "DFT / GPU FFT = %.1f", dft / fft);
+        lines.push_back(ratio);
+    }
+    std::snprintf(ratio, sizeof ratio, "GPU FFT / FFTW = %.3f", fft / cpu);
+    lines.push_back(ratio);
+    ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), layers);  // leave the frame's result
+    return lines;
 }
 
 std::vector<float> GpuOcean::read_fields() const {

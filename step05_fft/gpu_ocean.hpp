@@ -64,4 +64,8 @@ private:
     ocean::Texture displacement_, slopes_;
 };
 
+// Times the same transforms (4 complex N x N fields) with each backend, `repeats` times, and
+// returns one line per backend with the median, plus the ratios (for the panel and --bench).
+std::vector<std::string> time_backends(GpuOcean& ocean, double time, int repeats);
+
 }  // namespace step05

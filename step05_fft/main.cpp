@@ -1,9 +1,173 @@
+// step05_fft: an ocean from a wave spectrum, transformed by an FFT on the GPU.
+// Seed sections 4.1-4.5.
+// New since step04: instead of summing waves one by one, a JONSWAP (or Phillips) spectrum gives
+// every wave of an N x N grid of wavenumbers an amplitude h0(k) (spectrum.cpp); each frame the
+// modes turn at omega(k) (evolve.comp) and an inverse FFT turns them into height, choppy
+// displacement and slope maps (fft.comp: Stockham in shared memory), which displace the grid.
+// Three transform backends to compare: the seed's naive DFT, the GPU FFT, and FFTW on the CPU.
+// Controls: as step02; the panel's "spectrum" group, the backend and the map views.
 #include "common/app.hpp"
+#include "common/grid.hpp"
+#include "step02_sine3d/wave_params.hpp"
+#include "step03_lighting/light_params.hpp"
+#include "step03_lighting/light_uniforms.hpp"
+#include "step05_fft/export.hpp"
+#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_params.hpp"
+#include "step05_fft/spectrum_view.hpp"
+
+#include <imgui.h>
+
+#include <iostream>
+#include <memory>
+
 namespace {
-class Fft : public ocean::App {
+
+using step05::Backend;
+
+class FftOcean : public ocean::App {
 public:
-    Fft() : App({"FFT ocean", "4.1-4.5", "wip"}) {}
-    void render() override {}
+    FftOcean()
+        : App({"An FFT ocean", "4.1-4.5",
+               "A JONSWAP spectrum gives each of N x N waves an amplitude; every frame the modes turn "
+               "at omega = sqrt(g k tanh(k h)) and one inverse FFT per map (on the GPU, all stages in "
+               "shared memory) gives heights, choppy displacements and slopes."}) {
+        auto& p = params();
+        ocean_params_.declare(p);
+        p.add_choice("backend", &backend_, int(Backend::GpuFft), {"dft", "gpu_fft", "fftw"},
+                     "inverse transform: naive DFT on the GPU (N <= 64), GPU FFT, or FFTW on the CPU");
+        p.add_choice("normals", &normals_, 0, {"slopes", "finite_difference"},
+                     "normals from the slope maps (i k h~) or from differences of the height map");
+        p.add_choice("view", &view_, 0,
+                     {"shaded", "height", "displacement_x", "displacement_z", "slope_x", "slope_z", "jacobian",
+                      "spectrum"},
+                     "the lit sea, or one map over the screen");
+        p.add_float("map_range", &map_range_, 0, 0, 100,
+                    "value shown at full colour in the map views (0: chosen from the spectrum)");
+        light_.declare(p);
+        grid_params_.declare(p, 800, 400);  // several tiles: the sea reaches the horizon
+        p.add_bool("wireframe", &wireframe_, false, "draw the triangles' edges only").in_group("view");
+        // step02's heading, lower and closer: an open sea, seen from a ship's deck (12 m up).
+        const auto& c = step02::kDefaultCamera;
+        use_camera(c.target, 60, c.yaw_deg, 12);
+    }
+
+private:
+    void init() override {
+        gpu_ = std::make_unique<step05::GpuOcean>(
+            [this](const std::string& name, const std::vector<std::string>& files, const std::vector<std::string>& d) {
+                return program_variant(name, files, d);
+            });
+    }
+
+    void update(double /*time*/, double /*dt*/) override {
+        grid_params_.update(grid_);
+        const step05::SpectrumParams wanted = ocean_params_.spectrum();
+        if (!spectrum_ || !step05::same_spectrum(wanted, spectrum_params_)) {
+            spectrum_params_ = wanted;
+            spectrum_ = std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(wanted));
+            gpu_->set_spectra({spectrum_.get()});
+            spectrum_view_.update(wanted, *spectrum_);
+        }
+    }
+
+    Backend backend() {
+        const Backend wanted = Backend(backend_);
+        if (wanted == Backend::Dft && gpu_->resolution() > step05::kMaxDftSize) {
+            if (!warned_dft_)
+                std::cerr << "warning: the naive DFT is for resolution <= 64; using the GPU FFT at "
+                          << gpu_->resolution() << "\n";
+            warned_dft_ = true;
+            return Backend::GpuFft;
+        }
+        return wanted;
+    }
+
+    void render() override {
+        gpu_->simulate(time(), backend(), ocean_params_.choppiness(), timers());
+        const glm::vec3 clear = step03::LightParams::background_srgb();
+        clear_target(clear);
+        if (view_ > 0) {
+            draw_map_view();
+            return;
+        }
+        auto* variant = program_variant("ocean", {"ocean.vert", "ocean.frag"}, {"NORMALS " + std::to_string(normals_)});
+        if (variant != nullptr) ocean_ = variant;
+        step03::upload_light(*ocean_, light_.light());
+        ocean_->set("u_view_projection", camera().projection(aspect()) * camera().view());
+        ocean_->set("u_eye", camera().eye());
+        ocean_->set("u_patch_size", float(spectrum_params_.patch_size));
+        ocean_->set("u_resolution", spectrum_params_.resolution);
+        ocean_->set("u_wireframe", int(wireframe_));
+        ocean_->set("u_background", step03::srgb_to_linear(clear));
+        ocean_->set("u_displacement", 0);
+        ocean_->set("u_slopes", 1);
+        glBindTextureUnit(0, gpu_->displacement_texture());
+        glBindTextureUnit(1, gpu_->slopes_texture());
+
+        ocean::GpuScope timed(timers(), "ocean");
+        glEnable(GL_DEPTH_TEST);
+        glUseProgram(ocean_->id());
+        grid_.draw(wireframe_);
+        glDisable(GL_DEPTH_TEST);
+    }
+
+    void draw_map_view() {
+        auto* p = program_variant("map_view", {"fullscreen.vert", "map_view.frag"}, {});
+        if (p == nullptr) return;
+        const int map = view_ - 1;
+        float range = map_range_;
+        if (range <= 0) {  // about 2.5 standard deviations of the height; slopes and J - 1 within 0.5
+            const float sigma = float(std::sqrt(step05::resolved_variance(spectrum_params_)));
+            range = map <= 2 ? std::max(2.5f * sigma, 1e-3f) : 0.5f;
+        }
+        p->set("u_map", map);
+        p->set("u_range", range);
+        p->set("u_resolution", glm::vec2(framebuffer_size()));
+        p->set("u_displacement", 0);
+        p->set("u_slopes", 1);
+        p->set("u_spectrum_image", 2);
+        glBindTextureUnit(0, gpu_->displacement_texture());
+        glBindTextureUnit(1, gpu_->slopes_texture());
+        glBindTextureUnit(2, spectrum_view_.texture());
+        glUseProgram(p->id());
+        draw_fullscreen_triangle();
+    }
+
+    void ui() override {
+        ImGui::Separator();
+        spectrum_view_.draw_ui();
+        if (ImGui::Button("compare the backends")) backend_times_ = step05::time_backends(*gpu_, time(), 3);
+        for (const auto& line : backend_times_) ImGui::TextUnformatted(line.c_str());
+    }
+
+    bool supports_export() const override { return true; }
+    void export_results(const std::string& dir) override {
+        step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
+                            spectrum_params_.patch_size, time(), ocean_params_.choppiness(), params());
+    }
+
+    void bench_extra(std::ostream& out) override {
+        out << "bench: the same transforms (4 complex " << gpu_->resolution() << "x" << gpu_->resolution()
+            << " fields), median of 9, wall ms around glFinish:\n";
+        for (const auto& line : step05::time_backends(*gpu_, time(), 9)) out << "bench: " << line << "\n";
+    }
+
+    step05::OceanParams ocean_params_;
+    step03::LightParams light_;
+    step02::GridParams grid_params_;
+    std::unique_ptr<step05::GpuOcean> gpu_;
+    std::unique_ptr<step05::InitialSpectrum> spectrum_;
+    step05::SpectrumParams spectrum_params_;
+    step05::SpectrumView spectrum_view_;
+    ocean::GridMesh grid_;
+    ocean::ShaderProgram* ocean_ = nullptr;
+    std::vector<std::string> backend_times_;
+    int backend_ = 1, normals_ = 0, view_ = 0;
+    float map_range_ = 0;
+    bool wireframe_ = false, warned_dft_ = false;
 };
+
 }  // namespace
-OCEAN_MAIN(Fft)
+
+OCEAN_MAIN(FftOcean)

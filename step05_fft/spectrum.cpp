@@ -63,15 +63,12 @@ double directional_spreading(double omega, double theta, double peak_omega, doub
     return spread / (2 * kPi) + (1 - spread) * directional;
 }
 
-namespace {
 
 double peak_omega_of(const SpectrumParams& p) {
     if (p.wind_speed <= 0) return 0;
     if (p.model == SpectrumModel::Jonswap) return jonswap_peak_omega(p.wind_speed, p.fetch);
     return 0.855 * kGravity / p.wind_speed;  // Pierson-Moskowitz: where Phillips' peak falls
 }
-
-}  // namespace
 
 double omnidirectional_k(const SpectrumParams& p, double k) {
     if (k <= 0) return 0;
@@ -160,6 +157,14 @@ double resolved_variance(const SpectrumParams& p) {
             if (resolved_mode(p, i, j))
                 sum += spectrum_2d(p, wavenumber(i, n, p.patch_size), wavenumber(j, n, p.patch_size)) * dk * dk;
     return sum;
+}
+
+bool same_spectrum(const SpectrumParams& a, const SpectrumParams& b) {
+    return a.model == b.model && a.wind_speed == b.wind_speed && a.wind_direction == b.wind_direction &&
+           a.fetch == b.fetch && a.gamma == b.gamma && a.spread == b.spread && a.swell == b.swell &&
+           a.depth == b.depth && a.tma == b.tma && a.patch_size == b.patch_size && a.resolution == b.resolution &&
+           a.seed == b.seed && a.amplitude_scale == b.amplitude_scale && a.low_cutoff == b.low_cutoff &&
+           a.high_cutoff == b.high_cutoff;
 }
 
 std::string validate(const SpectrumParams& p) {

@@ -60,6 +60,9 @@ double spreading_exponent(double omega, double peak_omega, double swell);
 // D(omega, theta) with theta measured from the wind: integrates to 1 over [-pi, pi].
 double directional_spreading(double omega, double theta, double peak_omega, double spread, double swell);
 
+// The spectrum's peak angular frequency (JONSWAP's omega_p; Pierson-Moskowitz's for Phillips).
+double peak_omega_of(const SpectrumParams& p);
+
 // Energy density per unit k of the omnidirectional spectrum (m^2 per rad/m), for the model.
 double omnidirectional_k(const SpectrumParams& p, double k);
 // Phi(kx, kz), m^2 per (rad/m)^2, including cut-offs and amplitude_scale^2.
@@ -99,6 +102,9 @@ private:
     bool has_spare_ = false;
     double spare_ = 0;
 };
+
+// True when a and b give the same h0 and omega (so nothing needs recomputing).
+bool same_spectrum(const SpectrumParams& a, const SpectrumParams& b);
 
 // A one-line problem with the parameters, or "" (resolution not a power of two in [64, 512]...).
 std::string validate(const SpectrumParams& p);

@@ -31,13 +31,14 @@ TEST(CommandLine, TheSmokeTestCommandLine) {
 
 TEST(CommandLine, OtherFlags) {
     const auto r = parse({"--dt", "0.02", "--bench", "--list-params", "--preset", "p.txt",
-                          "--save-preset", "q.txt", "--ui", "--shader-dir", "/tmp/s", "--help"});
+                          "--save-preset", "q.txt", "--ui", "--shader-dir", "/tmp/s", "--export", "out", "--help"});
     ASSERT_FALSE(r.error) << *r.error;
     EXPECT_DOUBLE_EQ(*r.options.fixed_dt, 0.02);
     EXPECT_TRUE(r.options.bench && r.options.list_params && r.options.show_ui && r.options.help);
     EXPECT_EQ(r.options.preset, "p.txt");
     EXPECT_EQ(r.options.save_preset, "q.txt");
     EXPECT_EQ(r.options.shader_dir, "/tmp/s");
+    EXPECT_EQ(r.options.export_dir, "out");
 }
 
 TEST(CommandLine, BadInputGetsOneLineNamingTheFlag) {

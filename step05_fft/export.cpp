@@ -1,0 +1,59 @@
+#include "step05_fft/export.hpp"
+
+#include "common/error.hpp"
+#include "common/gl.hpp"
+#include "common/image.hpp"
+#include "common/text.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace step05 {
+
+namespace {
+std::string exact(double value) {  // all 17 digits: the checker rebuilds the sea at this time
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    return buffer;
+}
+}  // namespace
+
+void export_maps(const std::string& dir, unsigned displacement_texture, unsigned slopes_texture, int layer,
+                 int n, double patch_size, double time, double choppiness, const ocean::ParamRegistry& params) {
+    const std::size_t texels = std::size_t(n) * n;
+    std::vector<float> displacement(texels * 4), slopes(texels * 4);
+    // One layer of level 0: (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz).
+    glGetTextureSubImage(displacement_texture, 0, 0, 0, layer, n, n, 1, GL_RGBA, GL_FLOAT,
+                         GLsizei(displacement.size() * sizeof(float)), displacement.data());
+    glGetTextureSubImage(slopes_texture, 0, 0, 0, layer, n, n, 1, GL_RGBA, GL_FLOAT,
+                         GLsizei(slopes.size() * sizeof(float)), slopes.data());
+    std::vector<ocean::FloatImage> maps(std::size(kExportedMaps), ocean::FloatImage{n, n, std::vector<float>(texels)});
+    for (std::size_t i = 0; i < texels; ++i) {
+        const float* d = &displacement[4 * i];
+        const float* s = &slopes[4 * i];
+        maps[0].values[i] = d[1];
+        maps[1].values[i] = d[0];
+        maps[2].values[i] = d[2];
+        maps[3].values[i] = s[0];
+        maps[4].values[i] = s[1];
+        maps[5].values[i] = (1 + s[2]) * (1 + s[3]) - d[3] * d[3];
+    }
+    const std::filesystem::path folder(dir);
+    std::ofstream text(folder / "export.txt");
+    text << "# step05 maps: rows in each PFM go z = 0 first (PFM's bottom row), x = i * patch_size / resolution\n";
+    for (const auto& p : params.all()) text << p->name() << " = " << p->value_text() << "\n";
+    text << "export.patch_size = " << ocean::format_number(patch_size) << "\n"
+         << "export.resolution = " << n << "\n"
+         << "export.time = " << exact(time) << "\n"
+         << "export.choppiness = " << ocean::format_number(choppiness) << "\n";
+    for (std::size_t m = 0; m < maps.size(); ++m) {
+        const std::string name = kExportedMaps[m].file;
+        if (auto error = ocean::save_pfm(maps[m], (folder / name).string())) throw ocean::Error("--export: " + *error);
+        text << "file." << name.substr(0, name.size() - 4) << " = " << name << "    # " << kExportedMaps[m].meaning
+             << "\n";
+    }
+    if (!text.flush()) throw ocean::Error("--export: cannot write " + (folder / "export.txt").string());
+}
+
+}  // namespace step05

@@ -1,0 +1,18 @@
+// Sampling the simulation's textures (one layer per cascade; step05 has one) and the normal of
+// the choppy surface. The surface point of rest position p is P(p) = (p.x + l Dx, h, p.z + l Dz),
+// so its tangents are dP/dx = (1 + l dDx/dx, dh/dx, l dDz/dx) and dP/dz = (l dDx/dz, dh/dz,
+// 1 + l dDz/dz), with dDz/dx = dDx/dz, and N = dP/dz x dP/dx. With l = 0 this is step03's
+// normalize(-dh/dx, 1, -dh/dz).
+uniform sampler2DArray u_displacement;  // (l Dx, h, l Dz, l dDx/dz)
+uniform sampler2DArray u_slopes;        // (dh/dx, dh/dz, l dDx/dx, l dDz/dz)
+
+vec3 choppy_normal(vec4 displacement, vec4 slopes) {
+    vec3 along_x = vec3(1.0 + slopes.z, slopes.x, displacement.w);
+    vec3 along_z = vec3(displacement.w, slopes.y, 1.0 + slopes.w);
+    return normalize(cross(along_z, along_x));
+}
+
+// J = (1 + l dDx/dx)(1 + l dDz/dz) - (l dDx/dz)^2: below 0 the surface folds over itself.
+float jacobian(vec4 displacement, vec4 slopes) {
+    return (1.0 + slopes.z) * (1.0 + slopes.w) - displacement.w * displacement.w;
+}
