@@ -85,7 +85,8 @@ void App::draw_panel(float frame_ms) {
     if (!panel_visible_) return;
 
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+    // As tall as the screen allows; the panel scrolls when a step has more to show.
+    ImGui::SetNextWindowSize(ImVec2(390, ImGui::GetIO().DisplaySize.y - 20), ImGuiCond_FirstUseEver);
     ImGui::Begin(step_name().c_str());
     ImGui::TextUnformatted(info_.title.c_str());
     ImGui::TextDisabled("seed sections %s", info_.seed_sections.c_str());
@@ -100,8 +101,9 @@ void App::draw_panel(float frame_ms) {
     history[std::size_t(cursor++ % kHistory)] = frame_ms;
     ImGui::Text("%.2f ms/frame (%.0f fps), %dx%d", double(frame_ms),
                 frame_ms > 0 ? 1000.0 / double(frame_ms) : 0.0, framebuffer_size_.x, framebuffer_size_.y);
+    // ImGui 1.86's plots take no negative width ("fill"): pass the width that is left.
     ImGui::PlotLines("##frame_ms", history.data(), kHistory, cursor % kHistory, nullptr, 0, 50,
-                     ImVec2(-1, 40));
+                     ImVec2(ImGui::GetContentRegionAvail().x, 40));
     ImGui::Text("t = %.3f s", time_);
     ImGui::SameLine();
     ImGui::Checkbox("pause", &paused_);

@@ -55,7 +55,7 @@ void SpectrumView::draw_ui() const {
     if (!ImGui::CollapsingHeader("spectrum plot", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const float top = plot_.empty() ? 1.0f : *std::max_element(plot_.begin(), plot_.end());
     ImGui::Text("%s S(omega), omega from 0 to %.2f rad/s", model_.c_str(), omega_max_);
-    ImGui::PlotLines("##S", plot_.data(), int(plot_.size()), 0, nullptr, 0.0f, std::max(top, 1e-9f), ImVec2(-1, 80));
+    ImGui::PlotLines("##S", plot_.data(), int(plot_.size()), 0, nullptr, 0.0f, std::max(top, 1e-9f), ImVec2(ImGui::GetContentRegionAvail().x, 80));
     // Mark omega_p with a vertical line over the plot.
     const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
     const float x = min.x + float(peak_omega_ / omega_max_) * (max.x - min.x);
