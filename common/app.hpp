@@ -92,6 +92,7 @@ protected:
     void clear_target(glm::vec3 colour) const;
     // One triangle that covers the screen; pair with common/shaders/fullscreen.vert.
     void draw_fullscreen_triangle() const;
+    GLuint fullscreen_vao() const { return empty_vao_.id(); }  // for passes that draw it themselves
 
 private:
     int run_loop(const Options& options);

@@ -41,6 +41,14 @@ bool param_widget(Param& p) {
             break;
         }
         case ParamType::Color: changed = ImGui::ColorEdit3(label, &p.color_value()->x); break;
+        case ParamType::Text: {
+            std::array<char, 1025> buffer{};
+            p.text_value()->copy(buffer.data(), buffer.size() - 1);
+            // Applied on Enter, through the registry's own check.
+            if (ImGui::InputText(label, buffer.data(), buffer.size(), ImGuiInputTextFlags_EnterReturnsTrue))
+                changed = !p.set_from_text(buffer.data()).has_value();
+            break;
+        }
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\nrange %s, default %s", p.help().c_str(),
                                                   p.range_text().c_str(), p.default_text().c_str());

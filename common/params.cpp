@@ -58,6 +58,7 @@ std::string Param::range_text() const {
         case ParamType::Bool: return "true|false";
         case ParamType::Choice: return join(choices_, "|");
         case ParamType::Color: return "r,g,b each in [0, 1]";
+        case ParamType::Text: return "text";
     }
     return "";
 }
@@ -71,6 +72,7 @@ std::string Param::value_text() const {
         case ParamType::Color:
             return format_number(color_->r) + "," + format_number(color_->g) + "," +
                    format_number(color_->b);
+        case ParamType::Text: return *text_;
     }
     return "";
 }
@@ -84,6 +86,7 @@ std::string Param::default_text() const {
         case ParamType::Color:
             return format_number(default_color_.r) + "," + format_number(default_color_.g) + "," +
                    format_number(default_color_.b);
+        case ParamType::Text: return default_text_;
     }
     return "";
 }
@@ -139,6 +142,14 @@ std::optional<std::string> Param::parse(const std::string& text, Parsed& out) co
             }
             return std::nullopt;
         }
+        case ParamType::Text: {
+            const std::string t = trim(text);
+            if (t.size() > 1024) return "parameter '" + name_ + "' is longer than 1024 characters";
+            if (t.find_first_of("#\n\r") != std::string::npos || t.find('\0') != std::string::npos)
+                return "parameter '" + name_ + "' cannot hold '#' or line breaks, got " + shown;
+            out.text = t;
+            return std::nullopt;
+        }
     }
     return "internal: unknown parameter type";
 }
@@ -157,6 +168,7 @@ std::optional<std::string> Param::set_from_text(const std::string& text) {
         case ParamType::Choice: *int_ = static_cast<int>(parsed.number); break;
         case ParamType::Bool: *bool_ = parsed.number != 0; break;
         case ParamType::Color: *color_ = parsed.color; break;
+        case ParamType::Text: *text_ = parsed.text; break;
     }
     return std::nullopt;
 }
@@ -168,6 +180,7 @@ void Param::reset() {
         case ParamType::Choice: *int_ = static_cast<int>(default_number_); break;
         case ParamType::Bool: *bool_ = default_number_ != 0; break;
         case ParamType::Color: *color_ = default_color_; break;
+        case ParamType::Text: *text_ = default_text_; break;
     }
 }
 
@@ -217,6 +230,14 @@ Param& ParamRegistry::add_color(const std::string& name, glm::vec3* value, glm::
     auto p = std::make_unique<Param>();
     p->name_ = name; p->help_ = help; p->type_ = ParamType::Color; p->color_ = value;
     p->default_color_ = def; p->min_ = 0; p->max_ = 1;
+    return add(std::move(p));
+}
+
+Param& ParamRegistry::add_text(const std::string& name, std::string* value, const std::string& def,
+                               const std::string& help) {
+    auto p = std::make_unique<Param>();
+    p->name_ = name; p->help_ = help; p->type_ = ParamType::Text; p->text_ = value;
+    p->default_text_ = def;
     return add(std::move(p));
 }
 

@@ -15,7 +15,7 @@
 
 namespace ocean {
 
-enum class ParamType { Float, Int, Bool, Choice, Color };
+enum class ParamType { Float, Int, Bool, Choice, Color, Text };
 
 class Param {
 public:
@@ -48,13 +48,14 @@ public:
     int* int_value() const { return int_; }
     bool* bool_value() const { return bool_; }
     glm::vec3* color_value() const { return color_; }
+    std::string* text_value() const { return text_; }
     double min() const { return min_; }
     double max() const { return max_; }
     const std::vector<std::string>& choices() const { return choices_; }
 
 private:
     friend class ParamRegistry;
-    struct Parsed { double number = 0; glm::vec3 color{0.0f}; };
+    struct Parsed { double number = 0; glm::vec3 color{0.0f}; std::string text; };
     std::optional<std::string> parse(const std::string& text, Parsed& out) const;
 
     std::string name_, help_, group_;
@@ -63,6 +64,8 @@ private:
     int* int_ = nullptr;  // Int and Choice
     bool* bool_ = nullptr;
     glm::vec3* color_ = nullptr;
+    std::string* text_ = nullptr;
+    std::string default_text_;
     double default_number_ = 0;
     glm::vec3 default_color_{0.0f};
     double min_ = 0, max_ = 0;
@@ -83,6 +86,9 @@ public:
                       std::vector<std::string> choices, const std::string& help);
     Param& add_color(const std::string& name, glm::vec3* value, glm::vec3 def,
                      const std::string& help);
+    // Free text on one line (a file name): at most 1024 characters, no '#' (presets' comments).
+    Param& add_text(const std::string& name, std::string* value, const std::string& def,
+                    const std::string& help);
 
     Param* find(const std::string& name);
     const std::vector<std::unique_ptr<Param>>& all() const { return params_; }

@@ -14,10 +14,11 @@ constexpr std::array<int, 4> kResolutions{64, 128, 256, 512};
 
 class OceanParams {
 public:
-    void declare(ocean::ParamRegistry& p, float default_patch_size = 250, int default_resolution_index = 2) {
+    void declare(ocean::ParamRegistry& p, float default_patch_size = 250, int default_resolution_index = 2,
+                 float default_wind_speed = 9, float default_choppiness = 1) {
         p.add_choice("model", &model_, 0, {"jonswap", "phillips"},
                      "spectrum: JONSWAP (fetch-limited wind sea) or Phillips").in_group("spectrum");
-        p.add_float("wind_speed", &wind_speed_, 9, 0, 50, "wind speed at 10 m, m/s (0: a flat sea)")
+        p.add_float("wind_speed", &wind_speed_, default_wind_speed, 0, 50, "wind speed at 10 m, m/s (0: a flat sea)")
             .in_group("spectrum");
         p.add_float("wind_direction", &wind_direction_, 30, 0, 360,
                     "direction the wind blows towards, degrees (0 = +x, 90 = +z)").in_group("spectrum");
@@ -42,7 +43,7 @@ public:
             .in_group("spectrum");
         p.add_float("high_cutoff", &high_cutoff_, 1000, 0, 1000, "remove waves with |k| above, rad/m")
             .in_group("spectrum").logarithmic();
-        p.add_float("choppiness", &choppiness_, 1, 0, 3, "lambda: horizontal displacement scale (sharper crests)")
+        p.add_float("choppiness", &choppiness_, default_choppiness, 0, 3, "lambda: horizontal displacement scale (sharper crests)")
             .in_group("spectrum");
     }
 

@@ -82,7 +82,7 @@ double omnidirectional_k(const SpectrumParams& p, double k) {
 
 double spectrum_2d(const SpectrumParams& p, double kx, double kz) {
     const double k = std::hypot(kx, kz);
-    if (k <= 0 || k < p.low_cutoff || k > p.high_cutoff) return 0;
+    if (k <= 0 || k < p.low_cutoff || k >= p.high_cutoff) return 0;
     const double wind = p.wind_direction * kPi / 180.0;
     double theta = std::atan2(kz, kx) - wind;
     theta = std::remainder(theta, 2 * kPi);  // into [-pi, pi]
@@ -100,7 +100,7 @@ bool resolved_mode(const SpectrumParams& p, int i, int j) {
     const int n = p.resolution;
     if ((i == 0 && j == 0) || i == n / 2 || j == n / 2) return false;
     const double k = std::hypot(wavenumber(i, n, p.patch_size), wavenumber(j, n, p.patch_size));
-    return k >= p.low_cutoff && k <= p.high_cutoff;
+    return k >= p.low_cutoff && k < p.high_cutoff;
 }
 
 double GaussianRandom::uniform() {

@@ -35,8 +35,8 @@ struct SpectrumParams {
     int resolution = 256;          // N x N modes
     std::uint64_t seed = 1;
     double amplitude_scale = 1;    // 1: heights in metres
-    double low_cutoff = 0;         // rad/m: modes with |k| below are removed
-    double high_cutoff = 1000;     // rad/m: modes with |k| above are removed
+    double low_cutoff = 0;         // rad/m: the band kept is low_cutoff <= |k| < high_cutoff, so
+    double high_cutoff = 1000;     // that step06's cascades can share a boundary without overlap
 };
 
 // The finite-depth dispersion relation omega^2 = g k tanh(k h), and its derivative. Used alike

@@ -12,6 +12,7 @@ uniform int u_map;           // MAP_* below
 uniform float u_range;       // value shown at full colour
 uniform vec2 u_resolution;   // pixels
 uniform sampler2D u_spectrum_image;  // log10 energy, already coloured (RGBA8)
+uniform int u_layer;                 // the cascade (step06; 0 in step05)
 
 const int MAP_HEIGHT = 0, MAP_DISPLACEMENT_X = 1, MAP_DISPLACEMENT_Z = 2, MAP_SLOPE_X = 3, MAP_SLOPE_Z = 4,
           MAP_JACOBIAN = 5, MAP_SPECTRUM = 6;
@@ -33,8 +34,8 @@ void main() {
         out_color = texture(u_spectrum_image, uv);
         return;
     }
-    vec4 displacement = textureLod(u_displacement, vec3(uv, 0.0), 0.0);
-    vec4 slopes = textureLod(u_slopes, vec3(uv, 0.0), 0.0);
+    vec4 displacement = textureLod(u_displacement, vec3(uv, float(u_layer)), 0.0);
+    vec4 slopes = textureLod(u_slopes, vec3(uv, float(u_layer)), 0.0);
     float value = u_map == MAP_HEIGHT ? displacement.y
                 : u_map == MAP_DISPLACEMENT_X ? displacement.x
                 : u_map == MAP_DISPLACEMENT_Z ? displacement.z

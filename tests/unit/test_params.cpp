@@ -17,6 +17,7 @@ struct Fixture : ::testing::Test {
     bool wireframe = false;
     int mode = 0;
     glm::vec3 colour{0.0f};
+    std::string sky;
 
     Fixture() {
         params.add_float("amplitude", &amplitude, 1.5f, 0, 10, "metres");
@@ -24,6 +25,7 @@ struct Fixture : ::testing::Test {
         params.add_bool("wireframe", &wireframe, false, "edges only");
         params.add_choice("camera_mode", &mode, 0, {"orbit", "fly"}, "camera");
         params.add_color("water_colour", &colour, {0.1f, 0.2f, 0.3f}, "albedo").in_group("look");
+        params.add_text("sky_image", &sky, "", "equirectangular sky").in_group("look");
     }
 
     std::string temp_path(const std::string& name) {
@@ -52,6 +54,8 @@ TEST_F(Fixture, SetsGoodValuesOfEveryType) {
     EXPECT_EQ(colour, glm::vec3(0, 0.5f, 1));
     EXPECT_FALSE(params.set_assignment("amplitude= 1e-1 "));
     EXPECT_FLOAT_EQ(amplitude, 0.1f);
+    EXPECT_FALSE(params.set_assignment("sky_image=/tmp/a sky.hdr"));
+    EXPECT_EQ(sky, "/tmp/a sky.hdr");
 }
 
 TEST_F(Fixture, RefusesBadValuesWithAMessageNamingTheParameterAndRange) {
@@ -73,6 +77,7 @@ TEST_F(Fixture, RefusesBadValuesWithAMessageNamingTheParameterAndRange) {
         {"water_colour=1,2", "expects a colour r,g,b"},
         {"water_colour=0,0,1.5", "expects a colour r,g,b"},
         {"no_equals_sign", "--set expects name=value"},
+        {"sky_image=a#b", "cannot hold '#'"},
     };
     for (const auto& c : cases) {
         const auto error = params.set_assignment(c.assignment);
@@ -106,6 +111,7 @@ TEST_F(Fixture, PresetRoundTripRestoresEveryValueExactly) {
     params.set_assignment("wireframe=true");
     params.set_assignment("camera_mode=fly");
     params.set_assignment("water_colour=0.3333333,0.7,0.9");
+    params.set_assignment("sky_image=skies/noon.hdr");
     const std::string path = temp_path("roundtrip.preset");
     ASSERT_FALSE(params.save_preset(path, "test"));
     const float saved_amplitude = amplitude;
@@ -120,6 +126,7 @@ TEST_F(Fixture, PresetRoundTripRestoresEveryValueExactly) {
     EXPECT_TRUE(wireframe);
     EXPECT_EQ(mode, 1);
     EXPECT_EQ(colour, saved_colour);
+    EXPECT_EQ(sky, "skies/noon.hdr");
     std::remove(path.c_str());
 }
 

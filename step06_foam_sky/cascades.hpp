@@ -1,0 +1,55 @@
+// Chapter 5.4 on the CPU: four simulations of different sizes stacked, each owning one band of
+// wavenumbers so that no wave is counted twice.
+//
+// Cascade c simulates a tile of side L_c (non-integer ratios, so their repeats never line up) and
+// keeps the modes with b_c <= |k| < b_{c+1}. The boundaries: b_0 = 0; b_c = 2 pi * 6 / L_c (a
+// cascade starts at waves six times shorter than its tile, well resolved by the previous one);
+// the last band ends at the circle the last grid resolves, pi N / L_3.
+#pragma once
+
+#include "step05_fft/spectrum.hpp"
+
+#include <array>
+#include <vector>
+
+namespace step06 {
+
+constexpr int kCascades = 4;
+constexpr double kWavesPerTileAtBoundary = 6;
+
+struct Band {
+    double low, high;  // rad/m, low <= |k| < high
+};
+
+// Tile sides from the largest, divided by these ratios (3.65, 3.32, 3.47: no simple fraction).
+inline std::array<double, kCascades> cascade_patch_sizes(double largest) {
+    return {largest, largest / 3.65, largest / 3.65 / 3.32, largest / 3.65 / 3.32 / 3.47};
+}
+
+inline std::array<Band, kCascades> cascade_bands(const std::array<double, kCascades>& patch_sizes, int resolution) {
+    std::array<Band, kCascades> bands{};
+    for (int c = 0; c < kCascades; ++c) {
+        bands[c].low = c == 0 ? 0.0 : 2 * step05::kPi * kWavesPerTileAtBoundary / patch_sizes[std::size_t(c)];
+        if (c > 0) bands[std::size_t(c - 1)].high = bands[std::size_t(c)].low;
+    }
+    bands[kCascades - 1].high = step05::kPi * resolution / patch_sizes[kCascades - 1];
+    return bands;
+}
+
+// The spectrum parameters of each cascade: the shared ones, with its tile, band and seed.
+inline std::array<step05::SpectrumParams, kCascades> cascade_spectra(const step05::SpectrumParams& shared) {
+    const auto sizes = cascade_patch_sizes(shared.patch_size);
+    const auto bands = cascade_bands(sizes, shared.resolution);
+    std::array<step05::SpectrumParams, kCascades> out;
+    for (int c = 0; c < kCascades; ++c) {
+        auto& p = out[std::size_t(c)];
+        p = shared;
+        p.patch_size = sizes[std::size_t(c)];
+        p.low_cutoff = std::max(bands[std::size_t(c)].low, shared.low_cutoff);
+        p.high_cutoff = std::min(bands[std::size_t(c)].high, shared.high_cutoff);
+        p.seed = shared.seed * 4 + std::uint64_t(c);
+    }
+    return out;
+}
+
+}  // namespace step06

@@ -1,0 +1,300 @@
+// step06_foam_sky: the open sea under a sky.
+// Seed sections 5, 5.1-5.6.
+// New since step05: four cascades of step05's simulation, each with its own tile and band of
+// wavenumbers, transformed together; GPU tessellation of patches around the camera with frustum
+// culling; foam where the surface folds, kept and faded with time; water shading with
+// subsurface scatter, GGX or Beckmann specular and the sky's reflection through Fresnel; a sky
+// cubemap with sun and drifting clouds; height fog, bloom and a filmic tonemapper, in HDR.
+// Controls: as step02 (drag, wheel, C for the fly camera); every term and pass in the panel.
+#include "common/app.hpp"
+#include "step05_fft/export.hpp"
+#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_params.hpp"
+#include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/look_params.hpp"
+#include "step06_foam_sky/patch_grid.hpp"
+#include "step06_foam_sky/post.hpp"
+#include "step06_foam_sky/sky.hpp"
+#include "step06_foam_sky/tessellation.hpp"
+
+#include <imgui.h>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <iostream>
+#include <limits>
+#include <memory>
+
+namespace {
+
+// Foam from each cascade: whitecaps break on the long waves; the short cascades' folds are ripples.
+constexpr float kFoamWeights[step06::kCascades] = {1.0f, 1.0f, 0.3f, 0.05f};
+
+class FoamSky : public ocean::App {
+public:
+    FoamSky()
+        : App({"Foam and sky", "5, 5.1-5.6",
+               "Four cascades of the FFT ocean (each its own band of waves), tessellated near the camera; foam "
+               "where the Jacobian folds the surface; scatter + microfacet specular + sky reflection with "
+               "Fresnel; a sky with sun and clouds; fog, bloom and a filmic tonemapper."}) {
+        auto& p = params();
+        ocean_params_.declare(p, 500, 2, 14, 1.6f);  // a fresh breeze: whitecaps on the crests
+        for (int c = 0; c < step06::kCascades; ++c)
+            p.add_bool("cascade_" + std::to_string(c), &cascade_on_[c], true,
+                       "draw cascade " + std::to_string(c) + " (0: the longest waves)").in_group("cascades");
+        p.add_float("foam_threshold", &foam_threshold_, 0.8f, -1, 2, "Jacobian below which foam appears (bias)")
+            .in_group("foam");
+        p.add_float("foam_injection", &foam_injection_, 8, 0, 100, "foam added per second per unit below the threshold")
+            .in_group("foam");
+        p.add_float("foam_decay", &foam_decay_, 0.8f, 0, 20, "foam fades as exp(-decay t), per second")
+            .in_group("foam");
+        p.add_float("tess_scale", &tess_scale_, 12, 0.5f, 64, "edge level = tess_scale * patch / distance")
+            .in_group("geometry");
+        p.add_float("tess_patch_size", &patch_size_, 16, 2, 200, "side of a tessellated patch, metres").in_group("geometry");
+        p.add_int("patch_count", &patch_count_, 96, 4, 400, "patches per side around the camera").in_group("geometry");
+        p.add_bool("frustum_culling", &cull_, true, "discard patches outside the view").in_group("geometry");
+        p.add_bool("wireframe", &wireframe_, false, "edges only, coloured by tessellation level").in_group("geometry");
+        look_.declare(p);
+        p.add_choice("view", &view_, 0, {"shaded", "normals", "foam", "jacobian", "tessellation", "cascade_map"},
+                     "the final picture, or one ingredient");
+        p.add_int("debug_cascade", &debug_cascade_, 0, 0, step06::kCascades - 1, "view=cascade_map: which cascade");
+        p.add_choice("debug_map", &debug_map_, 0,
+                     {"height", "displacement_x", "displacement_z", "slope_x", "slope_z", "jacobian"},
+                     "view=cascade_map: which map");
+        use_camera({0, 2, 0}, 30, 35, 7);
+    }
+
+private:
+    ocean::ShaderProgram* program(const std::string& name, const std::vector<std::string>& files,
+                                  const std::vector<std::string>& defines = {}) {
+        return program_variant(name, files, defines);
+    }
+    step05::ProgramFactory factory() {
+        return [this](const std::string& n, const std::vector<std::string>& f, const std::vector<std::string>& d) {
+            return program_variant(n, f, d);
+        };
+    }
+
+    void init() override {
+        gpu_ = std::make_unique<step05::GpuOcean>(factory());
+        sky_ = std::make_unique<step06::Sky>(factory(), 128);
+    }
+
+    void update(double /*time*/, double dt) override {
+        const step05::SpectrumParams wanted = ocean_params_.spectrum();
+        if (spectra_.empty() || !step05::same_spectrum(wanted, shared_spectrum_)) {
+            shared_spectrum_ = wanted;
+            spectra_.clear();
+            std::vector<const step05::InitialSpectrum*> pointers;
+            for (const auto& p : step06::cascade_spectra(wanted)) {
+                spectra_.push_back(std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(p)));
+                pointers.push_back(spectra_.back().get());
+            }
+            gpu_->set_spectra(pointers);
+            make_foam_texture(wanted.resolution);
+            double variance = 0;
+            for (const auto& p : step06::cascade_spectra(wanted)) variance += step05::resolved_variance(p);
+            // A bound on how far any point moves: five standard deviations, more with choppiness.
+            max_displacement_ = float(5 * std::sqrt(variance) * (1 + ocean_params_.choppiness())) + 1.0f;
+        }
+        if (look_.sky_image != sky_image_loaded_) {
+            sky_image_loaded_ = look_.sky_image;
+            if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
+        }
+        patches_.build(patch_count_, patch_size_);
+        dt_ = dt;
+    }
+
+    void make_foam_texture(int n) {
+        foam_texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
+        glTextureStorage3D(foam_texture_.id(), 1 + int(std::log2(double(n))), GL_R32F, n, n, step06::kCascades);
+        glTextureParameteri(foam_texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTextureParameteri(foam_texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(foam_texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+        const float zero = 0;
+        glClearTexImage(foam_texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
+        foam_warm_start_ = true;
+    }
+
+    void simulate() {
+        ocean::GpuScope timed(timers(), "simulation");
+        gpu_->evolve(time());
+        gpu_->transform_fft(gpu_->spectra_buffer(), gpu_->fields_buffer(), 4 * step06::kCascades);
+        gpu_->assemble(ocean_params_.choppiness());
+    }
+
+    void update_foam() {
+        ocean::GpuScope timed(timers(), "foam");
+        auto* p = program("foam.comp", {"foam.comp"});
+        if (p == nullptr) return;
+        p->set("u_dt", float(dt_));
+        p->set("u_threshold", foam_threshold_);
+        p->set("u_injection", foam_injection_);
+        p->set("u_cascade_weight", std::vector<float>(std::begin(kFoamWeights), std::end(kFoamWeights)));
+        p->set("u_decay_rate", foam_decay_);
+        p->set("u_n", gpu_->resolution());
+        p->set("u_layer_count", step06::kCascades);
+        p->set("u_warm_start", int(std::exchange(foam_warm_start_, false)));
+        p->set("u_displacement", 0);
+        p->set("u_slopes", 1);
+        glBindTextureUnit(0, gpu_->displacement_texture());
+        glBindTextureUnit(1, gpu_->slopes_texture());
+        glBindImageTexture(0, foam_texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32F);
+        glUseProgram(p->id());
+        const GLuint groups = GLuint((gpu_->resolution() + 7) / 8);
+        glDispatchCompute(groups, groups, step06::kCascades);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glGenerateTextureMipmap(foam_texture_.id());
+    }
+
+    void bind_cascades(const ocean::ShaderProgram& p) {
+        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_.patch_size);
+        p.set("u_patch_sizes", std::vector<float>(sizes.begin(), sizes.end()));
+        for (int c = 0; c < step06::kCascades; ++c)
+            p.set("u_cascade_enabled[" + std::to_string(c) + "]", int(cascade_on_[c]));
+        p.set("u_displacement", 0);
+        p.set("u_slopes", 1);
+        p.set("u_foam", 2);
+        p.set("u_sky", 3);
+        glBindTextureUnit(0, gpu_->displacement_texture());
+        glBindTextureUnit(1, gpu_->slopes_texture());
+        glBindTextureUnit(2, foam_texture_.id());
+        glBindTextureUnit(3, sky_->cubemap());
+    }
+
+    void draw_sea() {
+        const glm::mat4 view_projection = camera().projection(aspect()) * camera().view();
+        {
+            auto* sky = program("sky", {"fullscreen.vert", "sky.frag"});
+            if (sky != nullptr) {
+                sky->set("u_inverse_view_projection", glm::inverse(view_projection));
+                sky->set("u_sky", 3);
+                glBindTextureUnit(3, sky_->cubemap());
+                glUseProgram(sky->id());
+                draw_fullscreen_triangle();
+            }
+        }
+        const int debug = view_ >= 1 && view_ <= 4 ? view_ : 0;
+        auto* p = program("ocean", {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"},
+                          {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug)});
+        if (p != nullptr) ocean_ = p;
+        if (ocean_ == nullptr) return;
+        ocean::GpuScope timed(timers(), "ocean");
+        bind_cascades(*ocean_);
+        look_.upload_shading(*ocean_);
+        const glm::vec3 eye = camera().eye();
+        ocean_->set("u_view_projection", view_projection);
+        ocean_->set("u_eye", eye);
+        ocean_->set("u_grid_offset", glm::floor(glm::vec2(eye.x, eye.z) / patch_size_) * patch_size_);
+        ocean_->set("u_patch_size", patch_size_);
+        ocean_->set("u_tess_scale", tess_scale_);
+        ocean_->set("u_frustum", step06::frustum_planes(view_projection));
+        ocean_->set("u_max_displacement", max_displacement_);
+        ocean_->set("u_cull", int(cull_));
+        ocean_->set("u_sky_max_lod", sky_->max_lod());
+        ocean_->set("u_wireframe", int(wireframe_));
+        glEnable(GL_DEPTH_TEST);
+        glUseProgram(ocean_->id());
+        if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+        patches_.draw();
+        if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        glDisable(GL_DEPTH_TEST);
+    }
+
+    void draw_cascade_map() {
+        auto* p = program("map_view", {"fullscreen.vert", "step05_fft/shaders/map_view.frag"});
+        if (p == nullptr) return;
+        p->set("u_map", debug_map_);
+        p->set("u_range", debug_map_ <= 2 ? 1.0f : 0.5f);
+        p->set("u_resolution", glm::vec2(framebuffer_size()));
+        p->set("u_layer", debug_cascade_);
+        p->set("u_displacement", 0);
+        p->set("u_slopes", 1);
+        glBindTextureUnit(0, gpu_->displacement_texture());
+        glBindTextureUnit(1, gpu_->slopes_texture());
+        glUseProgram(p->id());
+        draw_fullscreen_triangle();
+    }
+
+    void render() override {
+        simulate();
+        update_foam();
+        {
+            ocean::GpuScope timed(timers(), "sky");
+            sky_->render(look_.sky(time()));
+        }
+        if (view_ == 5) {
+            bind_target();
+            clear_target({0, 0, 0});
+            draw_cascade_map();
+            return;
+        }
+        post_.resize(framebuffer_size());
+        post_.bind_scene();
+        clear_target({0, 0, 0});
+        draw_sea();
+        const bool bloom = look_.show("bloom") && view_ == 0;
+        if (bloom) {
+            ocean::GpuScope timed(timers(), "bloom");
+            auto* down = program("bloom_down", {"fullscreen.vert", "bloom_down.frag"});
+            auto* up = program("bloom_up", {"fullscreen.vert", "bloom_up.frag"});
+            if (down != nullptr && up != nullptr) post_.bloom(*down, *up, look_.bloom_threshold, fullscreen_vao());
+        }
+        ocean::GpuScope timed(timers(), "tonemap");
+        bind_target();
+        auto* tonemap = program("tonemap", {"fullscreen.vert", "tonemap.frag"},
+                                {"TONEMAPPER " + std::to_string(view_ == 0 ? look_.tonemapper : 2)});
+        if (tonemap == nullptr) return;
+        tonemap->set("u_scene", 0);
+        tonemap->set("u_bloom", 1);
+        tonemap->set("u_exposure", view_ == 0 ? look_.exposure : 1.0f);
+        tonemap->set("u_bloom_strength", bloom ? look_.bloom_strength : 0.0f);
+        glBindTextureUnit(0, post_.scene_texture());
+        glBindTextureUnit(1, post_.bloom_texture());
+        glUseProgram(tonemap->id());
+        draw_fullscreen_triangle();
+    }
+
+    void ui() override {
+        ImGui::Separator();
+        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_.patch_size);
+        const auto bands = step06::cascade_bands(sizes, shared_spectrum_.resolution);
+        for (int c = 0; c < step06::kCascades; ++c)
+            ImGui::Text("cascade %d: tile %.1f m, waves %.2f m .. %.2f m", c, sizes[std::size_t(c)],
+                        bands[std::size_t(c)].high > 0 ? 2 * step05::kPi / bands[std::size_t(c)].high : 0.0,
+                        bands[std::size_t(c)].low > 0 ? 2 * step05::kPi / bands[std::size_t(c)].low
+                                                      : std::numeric_limits<double>::infinity());
+        ImGui::Text("%d patches of %.0f m; sky %s", patches_.patch_count(), double(patch_size_),
+                    sky_->uses_image() ? "from an image" : "procedural");
+    }
+
+    bool supports_export() const override { return true; }
+    void export_results(const std::string& dir) override {
+        // Cascade 0's maps, with its tile size; export.txt names the cascade.
+        step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
+                            step06::cascade_patch_sizes(shared_spectrum_.patch_size)[0], time(),
+                            ocean_params_.choppiness(), params());
+    }
+
+    step05::OceanParams ocean_params_;
+    step06::LookParams look_;
+    step06::PatchGrid patches_;
+    step06::PostProcess post_;
+    std::unique_ptr<step05::GpuOcean> gpu_;
+    std::unique_ptr<step06::Sky> sky_;
+    std::vector<std::unique_ptr<step05::InitialSpectrum>> spectra_;
+    step05::SpectrumParams shared_spectrum_;
+    ocean::Texture foam_texture_;
+    ocean::ShaderProgram* ocean_ = nullptr;
+    std::string sky_image_loaded_;
+    float foam_threshold_ = 0.8f, foam_injection_ = 8, foam_decay_ = 0.8f;
+    float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
+    int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
+    bool cascade_on_[step06::kCascades] = {true, true, true, true};
+    bool cull_ = true, wireframe_ = false, foam_warm_start_ = true;
+    double dt_ = 0;
+};
+
+}  // namespace
+
+OCEAN_MAIN(FoamSky)

@@ -1,0 +1,55 @@
+// The patches the tessellator cuts: count x count squares of side `size` centred on the origin,
+// four corners each (GL_PATCHES of 4 vertices). ocean.vert moves the whole grid with the camera.
+#pragma once
+
+#include "common/gl.hpp"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+#include <vector>
+
+namespace step06 {
+
+class PatchGrid {
+public:
+    void build(int count, float size) {
+        if (count == count_ && size == size_) return;
+        std::vector<glm::vec2> corners;
+        const float half = 0.5f * float(count) * size;
+        for (int j = 0; j < count; ++j)
+            for (int i = 0; i < count; ++i) {
+                const glm::vec2 p(float(i) * size - half, float(j) * size - half);
+                corners.insert(corners.end(), {p, p + glm::vec2(size, 0), p + glm::vec2(size, size), p + glm::vec2(0, size)});
+            }
+        vertices_ = ocean::make_buffer();
+        glNamedBufferStorage(vertices_.id(), GLsizeiptr(corners.size() * sizeof(glm::vec2)), corners.data(), 0);
+        vao_ = ocean::make_vertex_array();
+        glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(glm::vec2));
+        glEnableVertexArrayAttrib(vao_.id(), 0);
+        glVertexArrayAttribFormat(vao_.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(vao_.id(), 0, 0);
+        count_ = count;
+        size_ = size;
+    }
+
+    void draw() const {
+        glBindVertexArray(vao_.id());
+        glPatchParameteri(GL_PATCH_VERTICES, 4);
+        glDrawArrays(GL_PATCHES, 0, 4 * count_ * count_);
+    }
+
+    int patch_count() const { return count_ * count_; }
+
+private:
+    ocean::Buffer vertices_;
+    ocean::VertexArray vao_;
+    int count_ = 0;
+    float size_ = 0;
+};
+
+// The six planes of the view frustum from a view-projection matrix (Gribb and Hartmann), as
+// (normal, d) with normals pointing inwards and normalised, for ocean.tesc's culling.
+std::vector<glm::vec4> frustum_planes(const glm::mat4& view_projection);
+
+}  // namespace step06

@@ -1,0 +1,79 @@
+#include "step06_foam_sky/post.hpp"
+
+#include <algorithm>
+
+namespace step06 {
+
+void PostProcess::resize(glm::ivec2 size) {
+    if (size == size_ || size.x <= 0 || size.y <= 0) return;
+    size_ = size;
+    scene_ = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(scene_.id(), 1, GL_RGBA16F, size.x, size.y);
+    glTextureParameteri(scene_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(scene_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(scene_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    depth_ = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
+    scene_target_ = ocean::make_framebuffer();
+    glNamedFramebufferTexture(scene_target_.id(), GL_COLOR_ATTACHMENT0, scene_.id(), 0);
+    glNamedFramebufferTexture(scene_target_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+
+    // Bloom level 0 is half the screen; each next level half the previous (at least 1 pixel).
+    const int levels = kBloomLevels;
+    const glm::ivec2 half = glm::max(size / 2, glm::ivec2(1));
+    bloom_ = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(bloom_.id(), levels, GL_RGBA16F, half.x, half.y);
+    bloom_views_.clear();
+    bloom_targets_.clear();
+    bloom_sizes_.clear();
+    for (int level = 0; level < levels; ++level) {
+        GLuint view = 0;
+        glGenTextures(1, &view);  // glTextureView needs a name that was never bound
+        glTextureView(view, GL_TEXTURE_2D, bloom_.id(), GL_RGBA16F, GLuint(level), 1, 0, 1);
+        glTextureParameteri(view, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(view, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(view, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        bloom_views_.emplace_back(view);
+        ocean::Framebuffer target = ocean::make_framebuffer();
+        glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, bloom_.id(), level);
+        bloom_targets_.push_back(std::move(target));
+        bloom_sizes_.push_back(glm::max(half / (1 << level), glm::ivec2(1)));
+    }
+}
+
+void PostProcess::bind_scene() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, scene_target_.id());
+    glViewport(0, 0, size_.x, size_.y);
+}
+
+void PostProcess::bloom(const ocean::ShaderProgram& down, const ocean::ShaderProgram& up, float threshold,
+                        GLuint fullscreen_vao) const {
+    glBindVertexArray(fullscreen_vao);
+    glUseProgram(down.id());
+    down.set("u_source", 0);
+    down.set("u_threshold", threshold);
+    for (std::size_t level = 0; level < bloom_targets_.size(); ++level) {
+        const bool first = level == 0;
+        const glm::ivec2 source_size = first ? size_ : bloom_sizes_[level - 1];
+        down.set("u_first", int(first));
+        down.set("u_source_texel", 1.0f / glm::vec2(source_size));
+        glBindTextureUnit(0, first ? scene_.id() : bloom_views_[level - 1].id());
+        glBindFramebuffer(GL_FRAMEBUFFER, bloom_targets_[level].id());
+        glViewport(0, 0, bloom_sizes_[level].x, bloom_sizes_[level].y);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glUseProgram(up.id());
+    up.set("u_source", 0);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    for (std::size_t level = bloom_targets_.size() - 1; level > 0; --level) {
+        up.set("u_source_texel", 1.0f / glm::vec2(bloom_sizes_[level]));
+        glBindTextureUnit(0, bloom_views_[level].id());
+        glBindFramebuffer(GL_FRAMEBUFFER, bloom_targets_[level - 1].id());
+        glViewport(0, 0, bloom_sizes_[level - 1].x, bloom_sizes_[level - 1].y);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glDisable(GL_BLEND);
+}
+
+}  // namespace step06

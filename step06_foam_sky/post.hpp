@@ -1,0 +1,37 @@
+// Chapter 5.5's image passes: the scene is lit in linear HDR (an RGBA16F target), then bloom (a
+// chain of half-size levels down, a tent filter back up) and a filmic tonemapper bring it to the
+// screen in sRGB.
+#pragma once
+
+#include "common/gl.hpp"
+#include "common/shader.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <vector>
+
+namespace step06 {
+
+constexpr int kBloomLevels = 6;
+
+class PostProcess {
+public:
+    void resize(glm::ivec2 size);  // (re)makes the targets when the window size changes
+    void bind_scene() const;       // the HDR target, with its depth buffer
+    GLuint scene_texture() const { return scene_.id(); }
+    GLuint bloom_texture() const { return bloom_views_.empty() ? 0 : bloom_views_[0].id(); }
+
+    // Fills the bloom chain from the scene. `down` and `up`: bloom_down.frag and bloom_up.frag.
+    void bloom(const ocean::ShaderProgram& down, const ocean::ShaderProgram& up, float threshold,
+               GLuint fullscreen_vao) const;
+
+private:
+    glm::ivec2 size_{0};
+    ocean::Texture scene_, depth_, bloom_;
+    std::vector<ocean::Texture> bloom_views_;  // one view per level: no sampling of the level being drawn
+    ocean::Framebuffer scene_target_;
+    std::vector<ocean::Framebuffer> bloom_targets_;
+    std::vector<glm::ivec2> bloom_sizes_;
+};
+
+}  // namespace step06

@@ -1,0 +1,53 @@
+// Chapter 5.5's sky, as a function of direction: a gradient from horizon to zenith with a
+// scattering glow around the sun, a sun disc, and clouds that drift with time. sky_cube.comp
+// renders it into a cubemap once a frame; everything else samples the cubemap.
+uniform vec3 u_to_sun;          // unit
+uniform vec3 u_sun_radiance;    // linear, the disc's brightness
+uniform vec3 u_zenith_colour;   // linear
+uniform vec3 u_horizon_colour;  // linear
+uniform float u_cloud_cover;    // 0..1
+uniform vec2 u_cloud_offset;    // metres the clouds have drifted
+uniform float u_sun_size;       // angular radius, radians
+uniform float u_sun_disc_gain;  // disc radiance / sunlight
+
+float hash(vec2 p) { return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453); }
+
+float value_noise(vec2 p) {
+    vec2 i = floor(p), f = fract(p);
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    return mix(mix(hash(i), hash(i + vec2(1, 0)), u.x), mix(hash(i + vec2(0, 1)), hash(i + vec2(1, 1)), u.x), u.y);
+}
+
+float clouds(vec2 p) {
+    float sum = 0.0, amplitude = 0.5;
+    for (int i = 0; i < 5; ++i) {
+        sum += amplitude * value_noise(p);
+        p = p * 2.03 + vec2(17.0, 9.0);
+        amplitude *= 0.5;
+    }
+    return sum;
+}
+
+vec3 sky_radiance(vec3 direction) {
+    float up = direction.y;
+    float cos_sun = dot(direction, u_to_sun);
+    // Gradient, brighter towards the horizon; below it, the horizon colour darkens (what a
+    // reflection pointing down would see: more sea than sky).
+    vec3 colour = up >= 0.0 ? mix(u_horizon_colour, u_zenith_colour, pow(up, 0.45))
+                            : u_horizon_colour * mix(1.0, 0.35, clamp(-up * 4.0, 0.0, 1.0));
+    // Forward scattering around the sun: a tight halo and a wide glow, in units of the sunlight
+    // (the disc is u_sun_disc_gain times brighter than the light it casts).
+    vec3 sunlight = u_sun_radiance / u_sun_disc_gain;
+    colour += sunlight * (0.6 * pow(max(cos_sun, 0.0), 64.0) + 0.08 * pow(max(cos_sun, 0.0), 6.0));
+    // Clouds on a plane 1000 m up, projected along the view ray, fading towards the horizon.
+    if (up > 0.0 && u_cloud_cover > 0.0) {
+        vec2 p = (direction.xz / up * 1000.0 + u_cloud_offset) / 900.0;
+        float density = smoothstep(1.0 - u_cloud_cover, 1.0 - u_cloud_cover + 0.35, clouds(p));
+        density *= smoothstep(0.0, 0.15, up);
+        vec3 lit = mix(u_horizon_colour * 1.6, vec3(1.0), 0.5) * (0.6 + 0.4 * max(cos_sun, 0.0));
+        colour = mix(colour, lit, density * 0.85);
+    }
+    // The sun disc, with a soft edge one tenth of its radius wide.
+    float disc = smoothstep(cos(u_sun_size * 1.1), cos(u_sun_size), cos_sun);
+    return colour + u_sun_radiance * disc;
+}

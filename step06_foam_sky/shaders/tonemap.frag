@@ -1,0 +1,51 @@
+#version 450 core
+// From scene light to screen: exposure, bloom added, a filmic curve (ACES fitted, or AgX), and
+// sRGB encoding (tonemap.hpp holds the same curves on the CPU for the tests).
+#include "srgb.glsl"
+
+#ifndef TONEMAPPER
+#define TONEMAPPER 0  // 0: ACES (Hill's fit), 1: AgX (minimal), 2: none (clamp)
+#endif
+
+in vec2 v_uv;
+out vec4 out_colour;
+
+uniform sampler2D u_scene;
+uniform sampler2D u_bloom;
+uniform float u_exposure;
+uniform float u_bloom_strength;
+
+vec3 aces_fitted(vec3 c) {
+    const mat3 input_matrix = mat3(0.59719, 0.07600, 0.02840, 0.35458, 0.90834, 0.13383, 0.04823, 0.01566, 0.83777);
+    const mat3 output_matrix = mat3(1.60475, -0.10208, -0.00327, -0.53108, 1.10813, -0.07276, -0.07367, -0.00605, 1.07602);
+    c = input_matrix * c;
+    c = (c * (c + 0.0245786) - 0.000090537) / (c * (0.983729 * c + 0.4329510) + 0.238081);
+    return clamp(output_matrix * c, 0.0, 1.0);
+}
+
+// AgX (Troy Sobotka), in the minimal form by Benjamin Wrensch: returns display-encoded values.
+vec3 agx(vec3 c) {
+    const mat3 inset = mat3(0.842479062253094, 0.0423282422610123, 0.0423756549057051, 0.0784335999999992,
+                            0.878468636469772, 0.0784336, 0.0792237451477643, 0.0791661274605434, 0.879142973793104);
+    const mat3 outset = mat3(1.19687900512017, -0.0528968517574562, -0.0529716355144438, -0.0980208811401368,
+                             1.15190312990417, -0.0980434501171241, -0.0990297440797205, -0.0989611768448433,
+                             1.15107367264116);
+    const float min_ev = -12.47393, max_ev = 4.026069;
+    c = clamp(log2(max(inset * c, vec3(1e-10))), min_ev, max_ev);
+    c = (c - min_ev) / (max_ev - min_ev);
+    vec3 c2 = c * c, c4 = c2 * c2;
+    c = 15.5 * c4 * c2 - 40.14 * c4 * c + 31.96 * c4 - 6.868 * c2 * c + 0.4298 * c2 + 0.1191 * c - 0.00232;
+    return clamp(outset * c, 0.0, 1.0);
+}
+
+void main() {
+    vec3 c = texture(u_scene, v_uv).rgb + u_bloom_strength * texture(u_bloom, v_uv).rgb;
+    c *= u_exposure;
+#if TONEMAPPER == 0
+    out_colour = vec4(linear_to_srgb(aces_fitted(c)), 1.0);
+#elif TONEMAPPER == 1
+    out_colour = vec4(agx(c), 1.0);
+#else
+    out_colour = vec4(linear_to_srgb(c), 1.0);
+#endif
+}

@@ -1,0 +1,96 @@
+#include "step06_foam_sky/sky.hpp"
+
+#include "common/error.hpp"
+
+#include <stb_image.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <sys/stat.h>
+
+namespace step06 {
+
+namespace {
+constexpr const char* kShaders = "step06_foam_sky/shaders/";
+}
+
+Sky::Sky(step05::ProgramFactory programs, int size) : programs_(std::move(programs)), size_(size) {
+    cubemap_ = ocean::make_texture(GL_TEXTURE_CUBE_MAP);
+    glTextureStorage2D(cubemap_.id(), int(std::log2(double(size))) + 1, GL_RGBA16F, size, size);
+    glTextureParameteri(cubemap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(cubemap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+}
+
+float Sky::max_lod() const { return float(std::log2(double(size_))); }
+
+std::optional<std::string> Sky::use_image(const std::string& path) {
+    equirect_.reset();
+    image_rendered_ = false;
+    if (path.empty()) return std::nullopt;
+    struct stat info {};
+    if (stat(path.c_str(), &info) != 0)
+        return "sky_image '" + path + "': " + std::strerror(errno) + "; using the procedural sky";
+    if (S_ISDIR(info.st_mode)) return "sky_image '" + path + "' is a directory; using the procedural sky";
+    int w = 0, h = 0, channels = 0;
+    // .hdr loads as linear radiance; an LDR image (PNG, JPEG) is sRGB, which stb turns into
+    // linear floats with its gamma (2.2 by default).
+    float* pixels = stbi_loadf(path.c_str(), &w, &h, &channels, 3);
+    if (pixels == nullptr)
+        return "sky_image '" + path + "' is not a readable image (" + stbi_failure_reason() +
+               "); using the procedural sky";
+    equirect_ = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(equirect_.id(), 1, GL_RGB32F, w, h);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(equirect_.id(), 0, 0, 0, w, h, GL_RGB, GL_FLOAT, pixels);
+    glTextureParameteri(equirect_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(equirect_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(equirect_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    stbi_image_free(pixels);
+    return std::nullopt;
+}
+
+void Sky::render(const SkySettings& s) {
+    if (equirect_ && image_rendered_) return;
+    ocean::ShaderProgram* p = programs_(equirect_ ? "sky_equirect.comp" : "sky_cube.comp",
+                                        {std::string(kShaders) + (equirect_ ? "sky_equirect.comp" : "sky_cube.comp")}, {});
+    if (p == nullptr) throw ocean::Error("the sky shader does not build");
+    p->set("u_size", size_);
+    if (equirect_) {
+        p->set("u_equirect", 0);
+        glBindTextureUnit(0, equirect_.id());
+    } else {
+        p->set("u_to_sun", s.to_sun);
+        p->set("u_sun_radiance", s.sun_radiance);
+        p->set("u_zenith_colour", s.zenith);
+        p->set("u_horizon_colour", s.horizon);
+        p->set("u_cloud_cover", s.cloud_cover);
+        p->set("u_cloud_offset", s.cloud_offset);
+        p->set("u_sun_size", s.sun_size);
+        p->set("u_sun_disc_gain", s.sun_disc_gain);
+    }
+    glBindImageTexture(0, cubemap_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glUseProgram(p->id());
+    glDispatchCompute(GLuint((size_ + 7) / 8), GLuint((size_ + 7) / 8), 6);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glGenerateTextureMipmap(cubemap_.id());  // rough reflections read the blurrier levels
+    image_rendered_ = bool(equirect_);
+}
+
+glm::vec3 cube_texel_direction(int face, int x, int y, int size) {
+    const float s = 2.0f * (float(x) + 0.5f) / float(size) - 1.0f, t = 2.0f * (float(y) + 0.5f) / float(size) - 1.0f;
+    glm::vec3 d;
+    switch (face) {
+        case 0: d = {1, -t, -s}; break;
+        case 1: d = {-1, -t, s}; break;
+        case 2: d = {s, 1, t}; break;
+        case 3: d = {s, -1, -t}; break;
+        case 4: d = {s, -t, 1}; break;
+        default: d = {-s, -t, -1}; break;
+    }
+    return glm::normalize(d);
+}
+
+}  // namespace step06

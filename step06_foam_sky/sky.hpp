@@ -1,0 +1,51 @@
+// Chapter 5.5's sky as a cubemap: rendered procedurally each frame (gradient, sun, drifting
+// clouds: sky.glsl), or filled once from an equirectangular image (--set sky_image=FILE, HDR or
+// LDR through stb_image). The sea reflects it and the background shows it.
+#pragma once
+
+#include "common/gl.hpp"
+#include "step05_fft/gpu_ocean.hpp"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
+
+namespace step06 {
+
+struct SkySettings {
+    glm::vec3 to_sun{0, 1, 0};
+    glm::vec3 sun_radiance{20.0f};  // linear
+    glm::vec3 zenith{0.1f, 0.25f, 0.6f}, horizon{0.6f, 0.7f, 0.85f};  // linear
+    float cloud_cover = 0.4f;
+    glm::vec2 cloud_offset{0.0f};
+    float sun_size = 0.02f;  // angular radius, radians
+    float sun_disc_gain = 40;  // how much brighter the disc is than the light it casts
+};
+
+class Sky {
+public:
+    Sky(step05::ProgramFactory programs, int size);
+    // Loads an equirectangular image for the sky. On failure returns the warning to show and
+    // keeps (or goes back to) the procedural sky. An empty path means the procedural sky.
+    std::optional<std::string> use_image(const std::string& path);
+    void render(const SkySettings& settings);  // procedural: every call; image: once
+
+    GLuint cubemap() const { return cubemap_.id(); }
+    int size() const { return size_; }
+    float max_lod() const;
+    bool uses_image() const { return bool(equirect_); }
+
+private:
+    step05::ProgramFactory programs_;
+    int size_;
+    ocean::Texture cubemap_, equirect_;
+    bool image_rendered_ = false;
+};
+
+// The direction through the centre of texel (x, y) of cubemap face `face` (the GL layout,
+// as cube_faces.glsl): the tests find the sun's texel with it.
+glm::vec3 cube_texel_direction(int face, int x, int y, int size);
+
+}  // namespace step06
