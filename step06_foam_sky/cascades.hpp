@@ -21,9 +21,10 @@ struct Band {
     double low, high;  // rad/m, low <= |k| < high
 };
 
-// Tile sides from the largest, divided by these ratios (3.65, 3.32, 3.47: no simple fraction).
+// Tile sides from the largest, divided by 3.7, 3.3 and 3.55: no tile, nor any product of the
+// ratios, is close to a whole multiple of another, so the repeats never line up.
 inline std::array<double, kCascades> cascade_patch_sizes(double largest) {
-    return {largest, largest / 3.65, largest / 3.65 / 3.32, largest / 3.65 / 3.32 / 3.47};
+    return {largest, largest / 3.7, largest / 3.7 / 3.3, largest / 3.7 / 3.3 / 3.55};
 }
 
 inline std::array<Band, kCascades> cascade_bands(const std::array<double, kCascades>& patch_sizes, int resolution) {

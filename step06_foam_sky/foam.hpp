@@ -8,13 +8,17 @@
 // (scaled by dt), so foam does not depend on the frame rate. foam.comp does the same on the GPU.
 #pragma once
 
+#include "common/gl.hpp"
+#include "step05_fft/gpu_ocean.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace step06 {
 
 struct FoamSettings {
-    double threshold = 0.4;   // J below which foam appears (the bias)
+    double threshold = 0.8;   // J below which foam appears (the bias)
     double injection = 8;     // foam per second per unit of (threshold - J)
     double decay_rate = 0.8;  // 1/s: foam fades as exp(-decay_rate t)
 };
@@ -29,5 +33,28 @@ inline double foam_step(double foam, double jacobian, double dt, const FoamSetti
     const double added = s.injection * std::max(0.0, s.threshold - jacobian) * dt;
     return std::clamp(foam * std::exp(-s.decay_rate * dt) + added, 0.0, 1.0);
 }
+
+
+// The GPU side: one r32f layer per cascade, updated by foam.comp from the cascade's Jacobian.
+class FoamSimulation {
+public:
+    explicit FoamSimulation(step05::ProgramFactory programs) : programs_(std::move(programs)) {}
+
+    // A new texture (all zero) when the resolution or cascade count changes; the next update
+    // then starts from the steady state (foam_steady_state).
+    void resize(int n, int layers);
+    void fill(float value);  // every texel (tests)
+    // One step of dt seconds. `weights`: each cascade's share of the injection.
+    void update(const step05::GpuOcean& ocean, double dt, const FoamSettings& settings,
+                const std::array<float, 4>& weights);
+    GLuint texture() const { return texture_.id(); }
+    std::vector<float> read_layer(int layer) const;
+
+private:
+    step05::ProgramFactory programs_;
+    ocean::Texture texture_;
+    int n_ = 0, layers_ = 0;
+    bool warm_start_ = true;
+};
 
 }  // namespace step06

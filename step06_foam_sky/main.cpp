@@ -11,6 +11,7 @@
 #include "step05_fft/gpu_ocean.hpp"
 #include "step05_fft/ocean_params.hpp"
 #include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/look_params.hpp"
 #include "step06_foam_sky/patch_grid.hpp"
 #include "step06_foam_sky/post.hpp"
@@ -28,7 +29,7 @@
 namespace {
 
 // Foam from each cascade: whitecaps break on the long waves; the short cascades' folds are ripples.
-constexpr float kFoamWeights[step06::kCascades] = {1.0f, 1.0f, 0.3f, 0.05f};
+constexpr std::array<float, step06::kCascades> kFoamWeights{1.0f, 1.0f, 0.3f, 0.05f};
 
 class FoamSky : public ocean::App {
 public:
@@ -78,6 +79,7 @@ private:
     void init() override {
         gpu_ = std::make_unique<step05::GpuOcean>(factory());
         sky_ = std::make_unique<step06::Sky>(factory(), 128);
+        foam_ = std::make_unique<step06::FoamSimulation>(factory());
     }
 
     void update(double /*time*/, double dt) override {
@@ -91,7 +93,7 @@ private:
                 pointers.push_back(spectra_.back().get());
             }
             gpu_->set_spectra(pointers);
-            make_foam_texture(wanted.resolution);
+            foam_->resize(wanted.resolution, step06::kCascades);
             double variance = 0;
             for (const auto& p : step06::cascade_spectra(wanted)) variance += step05::resolved_variance(p);
             // A bound on how far any point moves: five standard deviations, more with choppiness.
@@ -105,17 +107,6 @@ private:
         dt_ = dt;
     }
 
-    void make_foam_texture(int n) {
-        foam_texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-        glTextureStorage3D(foam_texture_.id(), 1 + int(std::log2(double(n))), GL_R32F, n, n, step06::kCascades);
-        glTextureParameteri(foam_texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(foam_texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTextureParameteri(foam_texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-        const float zero = 0;
-        glClearTexImage(foam_texture_.id(), 0, GL_RED, GL_FLOAT, &zero);
-        foam_warm_start_ = true;
-    }
-
     void simulate() {
         ocean::GpuScope timed(timers(), "simulation");
         gpu_->evolve(time());
@@ -125,26 +116,11 @@ private:
 
     void update_foam() {
         ocean::GpuScope timed(timers(), "foam");
-        auto* p = program("foam.comp", {"foam.comp"});
-        if (p == nullptr) return;
-        p->set("u_dt", float(dt_));
-        p->set("u_threshold", foam_threshold_);
-        p->set("u_injection", foam_injection_);
-        p->set("u_cascade_weight", std::vector<float>(std::begin(kFoamWeights), std::end(kFoamWeights)));
-        p->set("u_decay_rate", foam_decay_);
-        p->set("u_n", gpu_->resolution());
-        p->set("u_layer_count", step06::kCascades);
-        p->set("u_warm_start", int(std::exchange(foam_warm_start_, false)));
-        p->set("u_displacement", 0);
-        p->set("u_slopes", 1);
-        glBindTextureUnit(0, gpu_->displacement_texture());
-        glBindTextureUnit(1, gpu_->slopes_texture());
-        glBindImageTexture(0, foam_texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32F);
-        glUseProgram(p->id());
-        const GLuint groups = GLuint((gpu_->resolution() + 7) / 8);
-        glDispatchCompute(groups, groups, step06::kCascades);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        glGenerateTextureMipmap(foam_texture_.id());
+        step06::FoamSettings settings;
+        settings.threshold = foam_threshold_;
+        settings.injection = foam_injection_;
+        settings.decay_rate = foam_decay_;
+        foam_->update(*gpu_, dt_, settings, kFoamWeights);
     }
 
     void bind_cascades(const ocean::ShaderProgram& p) {
@@ -158,7 +134,7 @@ private:
         p.set("u_sky", 3);
         glBindTextureUnit(0, gpu_->displacement_texture());
         glBindTextureUnit(1, gpu_->slopes_texture());
-        glBindTextureUnit(2, foam_texture_.id());
+        glBindTextureUnit(2, foam_->texture());
         glBindTextureUnit(3, sky_->cubemap());
     }
 
@@ -284,14 +260,14 @@ private:
     std::unique_ptr<step06::Sky> sky_;
     std::vector<std::unique_ptr<step05::InitialSpectrum>> spectra_;
     step05::SpectrumParams shared_spectrum_;
-    ocean::Texture foam_texture_;
+    std::unique_ptr<step06::FoamSimulation> foam_;
     ocean::ShaderProgram* ocean_ = nullptr;
     std::string sky_image_loaded_;
     float foam_threshold_ = 0.8f, foam_injection_ = 8, foam_decay_ = 0.8f;
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
-    bool cull_ = true, wireframe_ = false, foam_warm_start_ = true;
+    bool cull_ = true, wireframe_ = false;
     double dt_ = 0;
 };
 

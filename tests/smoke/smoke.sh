@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# smoke.sh STEP_EXE IMAGE_COMPARE GOLDEN.png OUT_DIR
+# smoke.sh STEP_EXE IMAGE_COMPARE GOLDEN.png OUT_DIR [EXTRA FLAGS...]
 # Runs a step headless for 3 frames at t = 1.5 s and 320x180: it must exit 0 with no GL error,
 # and its screenshot must not be blank and must match GOLDEN.png within image_compare's stated
 # tolerance (RMSE <= 2.5/255, at most 0.5% of pixels off by more than 24/255).
@@ -7,12 +7,13 @@
 # both and understanding why the picture changed.
 set -u
 exe=$1 compare=$2 golden=$3 out=$4
-name=$(basename "$exe")
+shift 4  # the rest: extra flags (a preset, say)
+name=$(basename "$golden" .png)
 mkdir -p "$out"
 shot="$out/$name.png"
 rm -f "$shot" "$out/$name.diff.png"
 
-"$exe" --headless --frames 3 --time 1.5 --size 320x180 --screenshot "$shot" > "$out/$name.log" 2>&1
+"$exe" --headless --frames 3 --time 1.5 --size 320x180 --screenshot "$shot" "$@" > "$out/$name.log" 2>&1
 status=$?
 cat "$out/$name.log"
 [ "$status" -eq 0 ] || { echo "FAIL: $name exited with status $status"; exit 1; }
