@@ -1,7 +1,7 @@
 #version 450 core
 // Everything at a point of the sea: normal from the summed slopes, foam, scatter, microfacet
 // specular, the sky's reflection weighted by Fresnel, and height fog. Output: linear HDR.
-#include "cascades.glsl"
+#include "cascades_visible.glsl"
 #include "shading.glsl"
 #include "fog.glsl"
 
@@ -39,7 +39,8 @@ void main() {
         out_colour = vec4(level_colour(v_level) * 4.0, 1.0);
         return;
     }
-    vec4 displacement = total_displacement(v_rest_xz, -1.0);
+    find_visible_cascades(v_rest_xz);
+    vec4 displacement = visible_displacement(v_rest_xz);
     vec4 slopes = total_slopes(v_rest_xz);
     vec3 n = choppy_normal(displacement, slopes);
     vec3 to_eye = u_eye - v_world_position;
