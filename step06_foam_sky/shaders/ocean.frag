@@ -36,7 +36,7 @@ vec3 level_colour(float level) {  // 1 blue, 8 green, 64 red
 
 void main() {
     if (u_wireframe) {
-        out_colour = vec4(level_colour(v_level) * 4.0, 1.0);
+        out_colour = vec4(level_colour(v_level) * 1.5, 1.0);  // through the tonemapper: keep it in range
         return;
     }
     find_visible_cascades(v_rest_xz);
