@@ -20,7 +20,8 @@ std::string exact(double value) {  // all 17 digits: the checker rebuilds the se
 }  // namespace
 
 void export_maps(const std::string& dir, unsigned displacement_texture, unsigned slopes_texture, int layer,
-                 int n, double patch_size, double time, double choppiness, const ocean::ParamRegistry& params) {
+                 int n, double patch_size, double time, double choppiness, const ocean::ParamRegistry& params,
+                 const std::vector<std::pair<std::string, std::string>>& notes) {
     const std::size_t texels = std::size_t(n) * n;
     std::vector<float> displacement(texels * 4), slopes(texels * 4);
     // One layer of level 0: (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz).
@@ -41,12 +42,13 @@ void export_maps(const std::string& dir, unsigned displacement_texture, unsigned
     }
     const std::filesystem::path folder(dir);
     std::ofstream text(folder / "export.txt");
-    text << "# step05 maps: rows in each PFM go z = 0 first (PFM's bottom row), x = i * patch_size / resolution\n";
+    text << "# ocean maps: rows in each PFM go z = 0 first (PFM's bottom row), x = i * patch_size / resolution\n";
     for (const auto& p : params.all()) text << p->name() << " = " << p->value_text() << "\n";
     text << "export.patch_size = " << ocean::format_number(patch_size) << "\n"
          << "export.resolution = " << n << "\n"
          << "export.time = " << exact(time) << "\n"
          << "export.choppiness = " << ocean::format_number(choppiness) << "\n";
+    for (const auto& [key, value] : notes) text << key << " = " << value << "\n";
     for (std::size_t m = 0; m < maps.size(); ++m) {
         const std::string name = kExportedMaps[m].file;
         if (auto error = ocean::save_pfm(maps[m], (folder / name).string())) throw ocean::Error("--export: " + *error);

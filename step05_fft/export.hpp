@@ -6,14 +6,18 @@
 #include "common/params.hpp"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace step05 {
 
 // Reads layer `layer` of the simulation's textures and writes the maps and export.txt into dir.
 // Throws ocean::Error on failure.
+// `notes` are extra `key = value` lines (step06: which cascade, and its band).
 void export_maps(const std::string& dir, unsigned displacement_texture, unsigned slopes_texture, int layer,
                  int resolution, double patch_size, double time, double choppiness,
-                 const ocean::ParamRegistry& params);
+                 const ocean::ParamRegistry& params,
+                 const std::vector<std::pair<std::string, std::string>>& notes = {});
 
 // The maps written, in order, with the meaning each file has.
 struct ExportedMap {

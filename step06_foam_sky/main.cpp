@@ -7,6 +7,7 @@
 // cubemap with sun and drifting clouds; height fog, bloom and a filmic tonemapper, in HDR.
 // Controls: as step02 (drag, wheel, C for the fly camera); every term and pass in the panel.
 #include "common/app.hpp"
+#include "common/text.hpp"
 #include "step05_fft/export.hpp"
 #include "step05_fft/gpu_ocean.hpp"
 #include "step05_fft/ocean_params.hpp"
@@ -246,10 +247,14 @@ private:
 
     bool supports_export() const override { return true; }
     void export_results(const std::string& dir) override {
-        // Cascade 0's maps, with its tile size; export.txt names the cascade.
+        // Cascade 0's maps (the longest waves), with its tile and band; export.txt says so.
+        const auto cascade = step06::cascade_spectra(shared_spectrum_)[0];
         step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
-                            step06::cascade_patch_sizes(shared_spectrum_.patch_size)[0], time(),
-                            ocean_params_.choppiness(), params());
+                            cascade.patch_size, time(), ocean_params_.choppiness(), params(),
+                            {{"export.cascade", "0"},
+                             {"export.low_cutoff", ocean::format_number(cascade.low_cutoff)},
+                             {"export.high_cutoff", ocean::format_number(cascade.high_cutoff)},
+                             {"export.seed", std::to_string(cascade.seed)}});
     }
 
     step05::OceanParams ocean_params_;
