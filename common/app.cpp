@@ -51,6 +51,9 @@ int App::run(const std::vector<std::string>& args, const StepLocation& where) {
     }
     if (!options.preset.empty())
         if (auto error = params_.load_preset(options.preset)) return fail(kExitUsage, *error);
+    if (!options.camera.empty())
+        if (auto error = apply_camera_preset(params_, options.camera)) return fail(kExitUsage, *error);
+    split_view_ = options.split;
     for (const auto& assignment : options.sets)
         if (auto error = params_.set_assignment(assignment)) return fail(kExitUsage, *error);
     if (!options.export_dir.empty() && !supports_export())
@@ -208,8 +211,12 @@ int App::run_loop(const Options& options) {
 
         update(time_, dt);
         if (framebuffer_size_.x > 0 && framebuffer_size_.y > 0) {  // zero while minimised
-            bind_target();
-            render();
+            if (split_view_ && split_variants())
+                render_split(*split_variants());
+            else {
+                bind_target();
+                render();
+            }
             if (panel_visible_) {
                 bind_target();
                 ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -254,6 +261,44 @@ int App::run_loop(const Options& options) {
         return kExitGlError;
     }
     return kExitOk;
+}
+
+void App::render_split(const SplitVariants& variants) {
+    // Render the whole frame once per variant (the steps' own passes stay untouched), keep the
+    // left half of the first, and put it over the second. Parameters are restored afterwards.
+    const std::string saved = params_.preset_text("split view");
+    const glm::ivec2 size = framebuffer_size_;
+    if (split_size_ != size) {
+        split_colour_ = make_renderbuffer();
+        glNamedRenderbufferStorage(split_colour_.id(), GL_RGBA8, size.x, size.y);
+        split_target_ = make_framebuffer();
+        glNamedFramebufferRenderbuffer(split_target_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, split_colour_.id());
+        split_size_ = size;
+    }
+    const int middle = size.x / 2;
+    for (int side = 0; side < 2; ++side) {
+        for (const auto& assignment : side == 0 ? variants.left : variants.right)
+            if (auto error = params_.set_assignment(assignment)) panel_message_ = "split view: " + *error;
+        split_side_ = side;
+        bind_target();
+        render();
+        const GLuint target = context_->target_framebuffer();
+        if (side == 0)
+            glBlitNamedFramebuffer(target, split_target_.id(), 0, 0, middle, size.y, 0, 0, middle, size.y,
+                                   GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        else
+            glBlitNamedFramebuffer(split_target_.id(), target, 0, 0, middle, size.y, 0, 0, middle, size.y,
+                                   GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        params_.apply_preset_text(saved, "split view");
+    }
+    split_side_ = -1;
+    // A thin white line between the halves.
+    bind_target();
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(middle - 1, 0, 2, size.y);
+    glClearColor(1, 1, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 void App::on_scroll(GLFWwindow* window, double /*dx*/, double dy) {

@@ -22,6 +22,7 @@
 #include <iosfwd>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,18 @@ protected:
     // More --bench lines after the per-pass table (step05 compares its FFT backends).
     virtual void bench_extra(std::ostream& /*out*/) {}
 
+    // The split view (--split, or the panel): the chapter's two main variants, each a list of
+    // parameter assignments, drawn left and right of the screen's middle. Steps without one
+    // return nothing.
+    struct SplitVariants {
+        std::string left_label, right_label;
+        std::vector<std::string> left, right;  // "name=value" each
+    };
+    virtual std::optional<SplitVariants> split_variants() const { return std::nullopt; }
+    // While a split frame renders: 0 for the left variant, 1 for the right, -1 otherwise. A step
+    // advances its simulation state (foam, say) only once a frame: when split_side() < 1.
+    int split_side() const { return split_side_; }
+
     ParamRegistry& params() { return params_; }
     // Loads a program from files in the step's shaders/ folder (or --shader-dir); throws
     // ocean::Error at start-up if it does not build. It then hot-reloads on its own.
@@ -101,6 +114,7 @@ private:
     void reload_changed_shaders();
     std::vector<std::string> stage_paths(const std::vector<std::string>& stage_files) const;
     void draw_panel(float frame_ms);
+    void render_split(const SplitVariants& variants);
     CameraInput read_camera_input();
     static void on_scroll(struct GLFWwindow* window, double dx, double dy);
 
@@ -127,6 +141,11 @@ private:
     std::string preset_path_ = "preset.txt";
     std::string panel_message_;
     double last_reload_check_ = 0;
+    bool split_view_ = false;
+    int split_side_ = -1;
+    Renderbuffer split_colour_;
+    Framebuffer split_target_;
+    glm::ivec2 split_size_{0};
 };
 
 }  // namespace ocean

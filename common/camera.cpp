@@ -58,3 +58,38 @@ void Camera::apply(const CameraInput& input, float dt) {
 }
 
 }  // namespace ocean
+
+namespace ocean {
+
+const std::vector<CameraPreset>& camera_presets() {
+    static const std::vector<CameraPreset> presets{
+        {"overview", "above the sea, looking down at the waves", {0, 0, 0}, 70, 35, 28},
+        {"deck", "a ship's deck, 12 m up, the sea to the horizon", {0, 0, 0}, 60, 35, 12},
+        {"low", "5 m above the water, level with the crests", {0, 2, 0}, 30, 35, 7},
+        {"top", "straight down from 150 m: the pattern of the waves", {0, 0, 0}, 150, 0, 89},
+    };
+    return presets;
+}
+
+std::optional<std::string> apply_camera_preset(ParamRegistry& params, const std::string& name) {
+    std::string names;
+    for (const auto& preset : camera_presets()) {
+        names += (names.empty() ? "" : "|") + std::string(preset.name);
+        if (name != preset.name) continue;
+        if (params.find("camera_yaw") == nullptr) return std::string("--camera: this step has no camera");
+        const auto number = [](float v) { return std::to_string(v); };
+        for (const auto& [key, value] :
+             std::vector<std::pair<std::string, std::string>>{{"camera_target_x", number(preset.target.x)},
+                                                              {"camera_target_y", number(preset.target.y)},
+                                                              {"camera_target_z", number(preset.target.z)},
+                                                              {"camera_distance", number(preset.distance)},
+                                                              {"camera_yaw", number(preset.yaw_deg)},
+                                                              {"camera_pitch", number(preset.pitch_deg)},
+                                                              {"camera_mode", "orbit"}})
+            if (auto error = params.set(key, value)) return error;
+        return std::nullopt;
+    }
+    return "--camera expects one of " + names + ", got '" + name.substr(0, 40) + "'";
+}
+
+}  // namespace ocean

@@ -9,6 +9,10 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include <optional>
+#include <string>
+#include <vector>
+
 namespace ocean {
 
 struct CameraInput {
@@ -37,5 +41,17 @@ public:
     float distance = 10, yaw_deg = 0, pitch_deg = 20, fov_deg = 50;
     float near_plane = 0.1f, far_plane = 2000.0f;
 };
+
+// Named views shared by every 3D step (--camera NAME), so that pictures of different chapters line
+// up: they set the camera_* parameters.
+struct CameraPreset {
+    const char* name;
+    const char* description;
+    glm::vec3 target;
+    float distance, yaw_deg, pitch_deg;
+};
+const std::vector<CameraPreset>& camera_presets();
+// Sets the camera_* parameters to the preset's values, or returns a one-line error.
+std::optional<std::string> apply_camera_preset(ParamRegistry& params, const std::string& name);
 
 }  // namespace ocean

@@ -116,6 +116,13 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             if (!take_value("a preset file")) return result;
             if (value.empty()) return bad("a preset file");
             o.save_preset = value;
+        } else if (name == "--camera") {
+            if (!take_value("a camera name")) return result;
+            if (value.empty()) return bad("a camera name");
+            o.camera = value;
+        } else if (name == "--split") {
+            if (!no_value()) return result;
+            o.split = true;
         } else if (name == "--export") {
             if (!take_value("a directory")) return result;
             if (value.empty()) return bad("a directory");
@@ -144,7 +151,9 @@ usage: )" + step + R"( [flags]
   --dt S                fixed time step: the clock advances S seconds per frame
   --screenshot FILE.png write the last frame to FILE.png
                         (headless default: screenshots/<step>.png)
-  --set name=value      set a parameter (repeatable; applied after --preset)
+  --set name=value      set a parameter (repeatable; applied after --preset and --camera)
+  --camera NAME         a view shared by steps 02-06: overview, deck, low, top
+  --split               the chapter's two main variants side by side (left | right)
   --preset FILE         load parameters from a preset file
   --save-preset FILE    write the parameters (after --preset and --set) to FILE and exit
   --list-params         list the parameters with their defaults and ranges, and exit

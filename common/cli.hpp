@@ -24,6 +24,8 @@ struct Options {
     bool show_ui = false;           // --ui: draw the panel in headless runs (and screenshots)
     std::string shader_dir;         // --shader-dir DIR: read this step's shaders from DIR
     std::string export_dir;         // --export DIR: the step writes its maps there (step05, step06)
+    std::string camera;             // --camera NAME: a shared view (camera_presets())
+    bool split = false;             // --split: the chapter's two variants side by side
 };
 
 struct ParseResult {

@@ -116,6 +116,19 @@ void App::draw_panel(float frame_ms) {
     ImGui::SameLine();
     ImGui::Checkbox("pause", &paused_);
 
+    if (const auto variants = split_variants()) {
+        ImGui::Checkbox("split view", &split_view_);
+        if (split_view_) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("left: %s | right: %s", variants->left_label.c_str(), variants->right_label.c_str());
+            // Labels on the picture itself, at the top of each half.
+            ImDrawList* draw = ImGui::GetBackgroundDrawList();
+            const float middle = 0.5f * float(framebuffer_size_.x);
+            draw->AddText(ImVec2(middle - 8 - ImGui::CalcTextSize(variants->left_label.c_str()).x, 8),
+                          IM_COL32(255, 255, 255, 255), variants->left_label.c_str());
+            draw->AddText(ImVec2(middle + 8, 8), IM_COL32(255, 255, 255, 255), variants->right_label.c_str());
+        }
+    }
     ImGui::Separator();
     param_widgets(params_);
     if (ImGui::Button("reset to defaults")) params_.reset_all();

@@ -109,6 +109,10 @@ private:
                                double(waves_[i].speed) * step01::kTwoPi / double(waves_[i].wavelength));
     }
 
+    std::optional<SplitVariants> split_variants() const override {
+        return SplitVariants{"each wave", "their sum", {"show_sum=false"}, {"show_waves=false"}};
+    }
+
     ocean::ShaderProgram* plot_ = nullptr;
     int wave_count_ = 3;
     float amplitude_ = 1;

@@ -55,6 +55,10 @@ private:
         ImGui::Text("%d vertices, %d triangles", grid_.vertex_count(), grid_params_.triangle_count());
     }
 
+    std::optional<SplitVariants> split_variants() const override {
+        return SplitVariants{"solid", "wireframe", {"wireframe=false"}, {"wireframe=true"}};
+    }
+
     ocean::ShaderProgram* ocean_ = nullptr;
     ocean::GridMesh grid_;
     step02::WaveParams waves_;

@@ -86,6 +86,11 @@ private:
         ImGui::Text("L = (%.2f, %.2f, %.2f)", l.x, l.y, l.z);
     }
 
+    std::optional<SplitVariants> split_variants() const override {
+        return SplitVariants{"analytic normals", "finite differences", {"normals=analytic"},
+                             {"normals=finite_difference"}};
+    }
+
     ocean::ShaderProgram* ocean_ = nullptr;
     ocean::GridMesh grid_;
     step02::WaveParams waves_;

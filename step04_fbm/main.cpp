@@ -107,6 +107,10 @@ private:
         }
     }
 
+    std::optional<SplitVariants> split_variants() const override {
+        return SplitVariants{"sine", "exp(sin - 1)", {"shape=sine"}, {"shape=exp_sine"}};
+    }
+
     ocean::ShaderProgram* ocean_ = nullptr;
     std::unique_ptr<step04::FbmUniforms> fbm_uniforms_;  // made once the GL context exists
     ocean::GridMesh grid_;

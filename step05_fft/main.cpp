@@ -153,6 +153,11 @@ private:
         for (const auto& line : step05::time_backends(*gpu_, time(), 9)) out << "bench: " << line << "\n";
     }
 
+    // The seed's DFT against the FFT: the same sea (the DFT needs resolution 64).
+    std::optional<SplitVariants> split_variants() const override {
+        return SplitVariants{"naive DFT", "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
+    }
+
     step05::OceanParams ocean_params_;
     step03::LightParams light_;
     step02::GridParams grid_params_;

@@ -59,6 +59,9 @@ public:
         look_.declare(p);
         p.add_choice("view", &view_, 0, {"shaded", "normals", "foam", "jacobian", "tessellation", "cascade_map"},
                      "the final picture, or one ingredient");
+        p.add_choice("split_effect", &split_effect_, 0,
+                     {"fog", "bloom", "foam", "scatter_term", "specular_term", "reflection_term", "ambient_term"},
+                     "split view: the effect shown on the left and left out on the right");
         p.add_int("debug_cascade", &debug_cascade_, 0, 0, step06::kCascades - 1, "view=cascade_map: which cascade");
         p.add_choice("debug_map", &debug_map_, 0,
                      {"height", "displacement_x", "displacement_z", "slope_x", "slope_z", "jacobian"},
@@ -194,9 +197,9 @@ private:
     }
 
     void render() override {
-        simulate();
-        update_foam();
-        {
+        if (split_side() < 1) {  // the right half of a split frame reuses the left's simulation
+            simulate();
+            update_foam();
             ocean::GpuScope timed(timers(), "sky");
             sky_->render(look_.sky(time()));
         }
@@ -257,6 +260,15 @@ private:
                              {"export.seed", std::to_string(cascade.seed)}});
     }
 
+    // With and without one effect (split_effect).
+    std::optional<SplitVariants> split_variants() const override {
+        static const char* effects[] = {"fog", "bloom", "foam", "scatter_term", "specular_term", "reflection_term",
+                                        "ambient_term"};
+        const std::string effect = effects[split_effect_];
+        return SplitVariants{"with " + effect, "without " + effect, {"show_" + effect + "=true"},
+                             {"show_" + effect + "=false"}};
+    }
+
     step05::OceanParams ocean_params_;
     step06::LookParams look_;
     step06::PatchGrid patches_;
@@ -270,6 +282,7 @@ private:
     std::string sky_image_loaded_;
     float foam_threshold_ = 0.8f, foam_injection_ = 8, foam_decay_ = 0.8f;
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
+    int split_effect_ = 0;
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
