@@ -10,7 +10,12 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -18,6 +23,20 @@
 namespace ocean {
 
 namespace fs = std::filesystem;
+
+namespace {
+std::vector<std::string> list_steps() {
+    std::vector<std::string> steps;
+    for (const auto& entry : fs::directory_iterator(OCEAN_SOURCE_DIR)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_directory() && name.size() > 7 && name.rfind("step", 0) == 0 && std::isdigit(name[4]) &&
+            std::isdigit(name[5]) && name[6] == '_')
+            steps.push_back(name);
+    }
+    std::sort(steps.begin(), steps.end());
+    return steps;
+}
+}  // namespace
 
 App::App(StepInfo info) : info_(std::move(info)) {}
 
@@ -163,6 +182,7 @@ int App::run_loop(const Options& options) {
     enable_gl_debug_output();
     std::cout << step_name() << ": " << context_->description() << "\n";
     empty_vao_ = make_vertex_array();
+    all_steps_ = list_steps();
     timers_.set_enabled(options.bench);
     framebuffer_size_ = context_->framebuffer_size();
     init_imgui();
@@ -171,7 +191,7 @@ int App::run_loop(const Options& options) {
     const int frame_limit = options.frames > 0 ? options.frames : (headless ? 10 : 0);
     const bool fixed_clock = options.start_time.has_value() || options.fixed_dt.has_value();
     const double fixed_dt = options.fixed_dt.value_or(0.0);
-    time_ = options.start_time.value_or(0.0);
+    time_ = options.start_time.value_or(options.start_at.value_or(0.0));
     panel_visible_ = !headless || options.show_ui;
 
     using clock = std::chrono::steady_clock;
@@ -299,6 +319,46 @@ void App::render_split(const SplitVariants& variants) {
     glClearColor(1, 1, 1, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
+}
+
+
+std::string App::step_executable(const std::string& step) const {
+    // Steps are built side by side: build/<preset>/<step>/<step>.
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) return "";
+    const fs::path candidate = self.parent_path().parent_path() / step / step;
+    return fs::exists(candidate) ? candidate.string() : "";
+}
+
+void App::hand_over_to(const std::string& step) {
+    const std::string executable = step_executable(step);
+    if (executable.empty()) {
+        panel_message_ = step + " is not built next to this step";
+        return;
+    }
+    // The same moment and the same view: the camera carries over between 3D steps.
+    handoff_ = {executable, "--start-at", std::to_string(time_), "--size",
+                std::to_string(framebuffer_size_.x) + "x" + std::to_string(framebuffer_size_.y)};
+    if (camera_enabled_ && step.substr(0, 6) != "step01")
+        for (const char* name : {"camera_mode", "camera_yaw", "camera_pitch", "camera_distance", "camera_target_x",
+                                 "camera_target_y", "camera_target_z", "camera_fov"})
+            if (const Param* p = params_.find(name)) {
+                handoff_.push_back("--set");
+                handoff_.push_back(std::string(name) + "=" + p->value_text());
+            }
+    if (split_view_) handoff_.push_back("--split");
+    context_->request_close();
+}
+
+int hand_off(int status, const std::vector<std::string>& command) {
+    if (command.empty()) return status;
+    std::vector<char*> argv;
+    for (const auto& a : command) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    std::cerr << "error: cannot start " << command[0] << ": " << std::strerror(errno) << std::endl;
+    return kExitRuntimeError;
 }
 
 void App::on_scroll(GLFWwindow* window, double /*dx*/, double dy) {

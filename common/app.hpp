@@ -55,6 +55,8 @@ public:
 
     const StepInfo& info() const { return info_; }
     const std::string& step_name() const { return where_.name; }
+    // The command that starts the neighbouring step the user chose (Prev/Next), or nothing.
+    const std::vector<std::string>& handoff() const { return handoff_; }
 
 protected:
     virtual void init() {}
@@ -76,6 +78,12 @@ protected:
         std::vector<std::string> left, right;  // "name=value" each
     };
     virtual std::optional<SplitVariants> split_variants() const { return std::nullopt; }
+    // Every step of the repository, in order (the folders step01_* ... of the source tree).
+    const std::vector<std::string>& all_steps() const { return all_steps_; }
+    // Ends this step after the frame and starts `step` at the same time, size, camera and split
+    // (the panel's Previous/Next buttons).
+    void hand_over_to(const std::string& step);
+
     // While a split frame renders: 0 for the left variant, 1 for the right, -1 otherwise. A step
     // advances its simulation state (foam, say) only once a frame: when split_side() < 1.
     int split_side() const { return split_side_; }
@@ -115,6 +123,7 @@ private:
     std::vector<std::string> stage_paths(const std::vector<std::string>& stage_files) const;
     void draw_panel(float frame_ms);
     void render_split(const SplitVariants& variants);
+    std::string step_executable(const std::string& step) const;
     CameraInput read_camera_input();
     static void on_scroll(struct GLFWwindow* window, double dx, double dy);
 
@@ -142,16 +151,27 @@ private:
     std::string panel_message_;
     double last_reload_check_ = 0;
     bool split_view_ = false;
+    std::vector<std::string> handoff_;
+    std::vector<std::string> all_steps_;
     int split_side_ = -1;
     Renderbuffer split_colour_;
     Framebuffer split_target_;
     glm::ivec2 split_size_{0};
 };
 
+// Replaces this process with `command` (Prev/Next) once the step is gone, or returns status.
+int hand_off(int status, const std::vector<std::string>& command);
+
 }  // namespace ocean
 
-#define OCEAN_MAIN(StepClass)                 \
-    int main(int argc, char** argv) {         \
-        StepClass app;                        \
-        return app.run(argc, argv, {OCEAN_STEP_NAME, OCEAN_STEP_DIR}); \
+#define OCEAN_MAIN(StepClass)                                                   \
+    int main(int argc, char** argv) {                                           \
+        std::vector<std::string> next;                                          \
+        int status = 0;                                                         \
+        {                                                                       \
+            StepClass app;                                                      \
+            status = app.run(argc, argv, {OCEAN_STEP_NAME, OCEAN_STEP_DIR});     \
+            next = app.handoff();                                               \
+        }                                                                       \
+        return ocean::hand_off(status, next);                                   \
     }

@@ -94,6 +94,11 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             const auto t = parse_double(value);
             if (!t || *t < 0 || *t > 1e9) return bad("a time in seconds in [0, 1e9]");
             o.start_time = *t;
+        } else if (name == "--start-at") {
+            if (!take_value("seconds")) return result;
+            const auto t = parse_double(value);
+            if (!t || *t < 0 || *t > 1e9) return bad("a time in seconds in [0, 1e9]");
+            o.start_at = *t;
         } else if (name == "--dt") {
             if (!take_value("seconds")) return result;
             const auto dt = parse_double(value);
@@ -149,6 +154,7 @@ usage: )" + step + R"( [flags]
   --frames N            stop after N frames (default: run until closed; headless: 10)
   --time T              start the clock at T seconds and keep it fixed (see --dt)
   --dt S                fixed time step: the clock advances S seconds per frame
+  --start-at T          a real clock that starts at T seconds (Prev/Next use it)
   --screenshot FILE.png write the last frame to FILE.png
                         (headless default: screenshots/<step>.png)
   --set name=value      set a parameter (repeatable; applied after --preset and --camera)

@@ -15,6 +15,7 @@ struct Options {
     int frames = 0;                 // --frames N (0: until the window closes; headless: 10)
     std::optional<double> start_time;  // --time T: start the clock at T (and make it fixed)
     std::optional<double> fixed_dt;    // --dt S: advance S seconds per frame (a fixed clock)
+    std::optional<double> start_at;    // --start-at T: a real clock that starts at T (Prev/Next)
     std::string screenshot;         // --screenshot FILE.png, written after the last frame
     std::vector<std::string> sets;  // --set name=value, in order
     std::string preset;             // --preset FILE, applied before the --set values

@@ -96,6 +96,19 @@ void App::draw_panel(float frame_ms) {
     // As tall as the screen allows; the panel scrolls when a step has more to show.
     ImGui::SetNextWindowSize(ImVec2(390, ImGui::GetIO().DisplaySize.y - 20), ImGuiCond_FirstUseEver);
     ImGui::Begin(step_name().c_str());
+    // Previous / next chapter, at the same moment and with the same view (bgfx's example dialog).
+    const auto& steps = all_steps();
+    const auto here = std::find(steps.begin(), steps.end(), step_name());
+    if (here != steps.end()) {
+        const bool has_previous = here != steps.begin(), has_next = here + 1 != steps.end();
+        if (!has_previous) ImGui::BeginDisabled();
+        if (ImGui::Button(has_previous ? ("< " + *(here - 1)).c_str() : "< (first)")) hand_over_to(*(here - 1));
+        if (!has_previous) ImGui::EndDisabled();
+        ImGui::SameLine();
+        if (!has_next) ImGui::BeginDisabled();
+        if (ImGui::Button(has_next ? (*(here + 1) + " >").c_str() : "(last) >")) hand_over_to(*(here + 1));
+        if (!has_next) ImGui::EndDisabled();
+    }
     ImGui::TextUnformatted(info_.title.c_str());
     ImGui::TextDisabled("seed sections %s", info_.seed_sections.c_str());
     ImGui::PushTextWrapPos(0);

@@ -19,6 +19,7 @@ public:
         params().add_bool("make_gl_error", &make_gl_error_, false, "call GL with a bad enum once");
     }
     std::vector<double> times;
+    std::string hand_over_after_first_frame;
     std::vector<double> dts;
     int rendered = 0;
 
@@ -26,6 +27,7 @@ private:
     void update(double time, double dt) override {
         times.push_back(time);
         dts.push_back(dt);
+        if (!hand_over_after_first_frame.empty() && times.size() == 1) hand_over_to(hand_over_after_first_frame);
     }
     void render() override {
         ++rendered;
@@ -103,6 +105,21 @@ TEST(App, SavePresetWritesTheValuesAndLoadsBack) {
     EXPECT_NEAR(image->rgba[0], 191, 1) << "level 0.75 came back from the preset";
     fs::remove(path);
     fs::remove(temp("p.png"));
+}
+
+TEST(App, NextStepStartsAtTheSameTimeSizeAndView) {
+    ProbeStep step;
+    step.hand_over_after_first_frame = "step02_sine3d";
+    ASSERT_EQ(step.run({"--headless", "--size", "48x32", "--frames", "5", "--time", "2.5", "--split"}, kWhere), 0);
+    EXPECT_EQ(step.rendered, 1) << "the step ends after the frame that chose its neighbour";
+    const auto& next = step.handoff();
+    ASSERT_FALSE(next.empty());
+    EXPECT_NE(next[0].find("step02_sine3d/step02_sine3d"), std::string::npos) << next[0];
+    const std::string args = [&] { std::string a; for (const auto& s : next) a += s + " "; return a; }();
+    EXPECT_NE(args.find("--start-at 2.500000"), std::string::npos) << args;
+    EXPECT_NE(args.find("--size 48x32"), std::string::npos) << args;
+    EXPECT_NE(args.find("--split"), std::string::npos) << args;
+    EXPECT_EQ(ocean::hand_off(3, {}), 3) << "no neighbour chosen: the status passes through";
 }
 
 TEST(App, BadInputIsRefusedBeforeAnyContextIsMade) {
