@@ -195,7 +195,7 @@ std::vector<std::string> time_backends(GpuOcean& ocean, double time, int repeats
     const double cpu = median_ms(repeats, [&] {
         for (const auto& input : inputs) fftw.run(input);
     });
-    lines.push_back("N = " + std::to_string(n) + ", " + std::to_string(layers) + " complex fields:");
+    lines.push_back("N = " + std::to_string(n) + ", " + std::to_string(layers) + " complex maps:");
     if (n <= kMaxDftSize) lines.push_back(format_ms("DFT", dft));
     else lines.push_back("DFT      (only for N <= 64)");
     lines.push_back(format_ms("GPU FFT", fft));

@@ -248,6 +248,12 @@ private:
                     sky_->uses_image() ? "from an image" : "procedural");
     }
 
+    void bench_extra(std::ostream& out) override {
+        out << "bench: the same transforms (all " << 4 * step06::kCascades << " complex " << gpu_->resolution() << "x"
+            << gpu_->resolution() << " maps of the 4 cascades), median of 5, wall ms around glFinish:\n";
+        for (const auto& line : step05::time_backends(*gpu_, time(), 5)) out << "bench: " << line << "\n";
+    }
+
     bool supports_export() const override { return true; }
     void export_results(const std::string& dir) override {
         // Cascade 0's maps (the longest waves), with its tile and band; export.txt says so.

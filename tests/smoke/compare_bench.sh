@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# compare_bench.sh compare|bench REPO BUILD_DIR OUT_DIR [SHEET_CHECK]: runs ./ocean compare or
+# ./ocean bench on what ctest built (small sizes), then checks what they wrote: a contact sheet
+# with one non-blank tile per step; a bench CSV with a numeric row per step (and the FFT
+# backends for step05 and step06).
+set -u
+what=$1 repo=$2 build=$3 out=$4 check=${5:-}
+cd "$repo" || exit 1
+steps=$(ls -d step[0-9][0-9]_*/ | wc -l)
+export OCEAN_NO_BUILD=1 OCEAN_BUILD_DIR=$build
+rm -rf "$out"
+case "$what" in
+  compare)
+    ./ocean compare --size 160x90 --out "$out" || { echo "FAIL: ./ocean compare"; exit 1; }
+    "$check" "$out/contact_sheet.png" "$steps" 160x90 ;;
+  bench)
+    ./ocean bench --size 160x90 --frames 3 --out "$out" || { echo "FAIL: ./ocean bench"; exit 1; }
+    [ -s "$out/bench.png" ] || { echo "FAIL: no bench.png"; exit 1; }
+    awk -F, -v steps="$steps" '
+      NR == 1 { if ($0 != "step,size,fps,total_ms,passes,dft_ms,gpu_fft_ms,fftw_ms") { print "FAIL: header " $0; bad = 1 }; next }
+      {
+        rows++
+        if (NF != 8 || $1 !~ /^step[0-9][0-9]_/ || !($3 > 0) || !($4 > 0) || $5 !~ /=[0-9.]+/) { print "FAIL: row " $0; bad = 1 }
+        if ($1 ~ /^step0[56]_/ && !($7 > 0 && $8 > 0)) { print "FAIL: no FFT backends in " $1; bad = 1 }
+      }
+      END {
+        if (rows != steps) { print "FAIL: " rows " rows for " steps " steps"; bad = 1 }
+        if (!bad) print "bench.csv: " rows " rows, one per step, all numeric"
+        exit bad
+      }' "$out/bench.csv" ;;
+  *) echo "compare_bench.sh: compare or bench"; exit 2 ;;
+esac
