@@ -172,3 +172,27 @@ TEST(ParamRegistry, DuplicateNamesAreAProgrammingError) {
 }
 
 }  // namespace
+
+#include "common/camera.hpp"
+
+namespace {
+
+TEST(CameraPresets, SetTheCameraParametersOrSayWhatExists) {
+    ocean::ParamRegistry params;
+    ocean::Camera camera;
+    camera.declare_params(params, {0, 0, 0}, 10, 0, 20);
+    ASSERT_FALSE(ocean::apply_camera_preset(params, "deck"));
+    EXPECT_FLOAT_EQ(camera.distance, 60);
+    EXPECT_FLOAT_EQ(camera.pitch_deg, 12);
+    ASSERT_FALSE(ocean::apply_camera_preset(params, "top"));
+    EXPECT_FLOAT_EQ(camera.pitch_deg, 89);
+    const auto unknown = ocean::apply_camera_preset(params, "nope");
+    ASSERT_TRUE(unknown);
+    EXPECT_NE(unknown->find("--camera expects one of overview|deck|low|top"), std::string::npos) << *unknown;
+    ocean::ParamRegistry flat;  // step01 has no camera
+    const auto none = ocean::apply_camera_preset(flat, "deck");
+    ASSERT_TRUE(none);
+    EXPECT_NE(none->find("no camera"), std::string::npos);
+}
+
+}  // namespace
