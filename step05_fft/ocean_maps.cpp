@@ -19,18 +19,30 @@ double reduced_phase(double omega, double time) {
     return phase < 0 ? phase + 2 * kPi : phase;
 }
 
-std::array<ComplexField, 4> packed_spectra(const InitialSpectrum& s, double time) {
+ComplexField height_spectrum(const InitialSpectrum& s, double time) {
     const int n = s.n;
-    std::array<ComplexField, 4> out;
-    for (auto& field : out) field.assign(std::size_t(n) * n, {0, 0});
-    const Complex i_unit(0, 1);
+    ComplexField h(std::size_t(n) * n);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const std::size_t index = std::size_t(j) * n + i;
             const std::size_t minus = std::size_t((n - j) % n) * n + std::size_t((n - i) % n);
             const double phase = reduced_phase(s.omega[index], time);
             const Complex rotation(std::cos(phase), std::sin(phase));
-            const Complex h = s.h0[index] * rotation + std::conj(s.h0[minus]) * std::conj(rotation);
+            h[index] = s.h0[index] * rotation + std::conj(s.h0[minus]) * std::conj(rotation);
+        }
+    return h;
+}
+
+std::array<ComplexField, 4> packed_spectra(const InitialSpectrum& s, double time) {
+    const int n = s.n;
+    std::array<ComplexField, 4> out;
+    for (auto& field : out) field.assign(std::size_t(n) * n, {0, 0});
+    const Complex i_unit(0, 1);
+    const ComplexField heights = height_spectrum(s, time);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t index = std::size_t(j) * n + i;
+            const Complex h = heights[index];
             const double kx = wavenumber(i, n, s.patch_size), kz = wavenumber(j, n, s.patch_size);
             const double k = std::hypot(kx, kz);
             if (k == 0) continue;  // the mean level: zero

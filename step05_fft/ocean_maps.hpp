@@ -33,6 +33,8 @@ const char* field_name(Field f);  // "height", "displacement_x", ...
 // The phase omega t reduced to [0, 2 pi) in double precision, as the GPU receives it.
 double reduced_phase(double omega, double time);
 
+// h~(k, t) alone (Hermitian: its inverse transform is real).
+ComplexField height_spectrum(const InitialSpectrum& s, double time);
 // The four packed spectra at time t.
 std::array<ComplexField, 4> packed_spectra(const InitialSpectrum& s, double time);
 
