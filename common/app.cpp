@@ -14,10 +14,12 @@
 #include <cctype>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstring>
 #include <unistd.h>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 namespace ocean {
@@ -36,6 +38,13 @@ std::vector<std::string> list_steps() {
     std::sort(steps.begin(), steps.end());
     return steps;
 }
+}  // namespace
+
+namespace {
+// Ctrl-C (SIGINT) and SIGTERM close the step like its window's close button: the frame ends, the
+// GL objects are released, the exit status is 0. A signal handler may only set a flag like this.
+volatile std::sig_atomic_t g_close_requested = 0;
+extern "C" void request_close_on_signal(int) { g_close_requested = 1; }
 }  // namespace
 
 App::App(StepInfo info) : info_(std::move(info)) {}
@@ -200,9 +209,16 @@ int App::run_loop(const Options& options) {
     auto bench_start = start;
     Image screenshot;
     int frame = 0;
+    g_close_requested = 0;
+    std::signal(SIGINT, request_close_on_signal);
+    std::signal(SIGTERM, request_close_on_signal);
+    bool closed_early = false;
     for (; frame_limit == 0 || frame < frame_limit; ++frame) {
         context_->poll_events();
-        if (context_->should_close()) break;
+        if (context_->should_close() || g_close_requested) {
+            closed_early = true;
+            break;
+        }
         const auto now = clock::now();
         const double real_dt = std::chrono::duration<double>(now - previous).count();
         const double wall = std::chrono::duration<double>(now - start).count();
@@ -216,6 +232,11 @@ int App::run_loop(const Options& options) {
             reload_changed_shaders();
         }
         framebuffer_size_ = context_->framebuffer_size();
+        if (options.exercise_minimise && (frame == 2 || frame == 3)) {
+            framebuffer_size_ = glm::ivec2(0);  // as a minimised window reports
+            if (GLFWwindow* window = context_->window(); window != nullptr && frame == 2) glfwIconifyWindow(window);
+            if (GLFWwindow* window = context_->window(); window != nullptr && frame == 3) glfwRestoreWindow(window);
+        }
         if (camera_enabled_) camera_.apply(read_camera_input(), float(real_dt));
 
         ImGui_ImplOpenGL3_NewFrame();
@@ -249,9 +270,17 @@ int App::run_loop(const Options& options) {
                                           framebuffer_size_.y);
         context_->swap_buffers();
         timers_.collect();
+        if (options.resource_log > 0 && (frame + 1) % options.resource_log == 0)
+            std::cout << "resources: frame " << frame + 1 << " rss_kb " << resident_kilobytes() << " gl_objects "
+                      << live_gl_objects() << std::endl;
         running_ = true;  // a variant that fails to build from now on is shown, not fatal
     }
     const double bench_seconds = std::chrono::duration<double>(clock::now() - bench_start).count();
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    // Closed before the last frame: a headless target still holds the last picture.
+    if (closed_early && headless && frame > 0 && !options.screenshot.empty() && framebuffer_size_.x > 0)
+        screenshot = read_framebuffer(context_->target_framebuffer(), framebuffer_size_.x, framebuffer_size_.y);
 
     if (!screenshot.rgba.empty()) {
         const std::string path = options.screenshot.empty() ? "screenshots/" + step_name() + ".png"
@@ -349,6 +378,14 @@ void App::hand_over_to(const std::string& step) {
             }
     if (split_view_) handoff_.push_back("--split");
     context_->request_close();
+}
+
+long resident_kilobytes() {
+    // /proc/self/statm: size, resident, ... in pages.
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * (sysconf(_SC_PAGESIZE) / 1024);
 }
 
 int hand_off(int status, const std::vector<std::string>& command) {

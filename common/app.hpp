@@ -159,6 +159,9 @@ private:
     glm::ivec2 split_size_{0};
 };
 
+// Resident memory of this process, kB (the soak test's sample).
+long resident_kilobytes();
+
 // Replaces this process with `command` (Prev/Next) once the step is gone, or returns status.
 int hand_off(int status, const std::vector<std::string>& command);
 

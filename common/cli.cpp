@@ -125,6 +125,14 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             if (!take_value("a camera name")) return result;
             if (value.empty()) return bad("a camera name");
             o.camera = value;
+        } else if (name == "--resource-log") {
+            if (!take_value("a frame interval")) return result;
+            const auto n = parse_integer(value);
+            if (!n || *n < 1 || *n > 1000000) return bad("a frame interval in [1, 1000000]");
+            o.resource_log = int(*n);
+        } else if (name == "--exercise-minimise") {
+            if (!no_value()) return result;
+            o.exercise_minimise = true;
         } else if (name == "--split") {
             if (!no_value()) return result;
             o.split = true;
@@ -165,6 +173,8 @@ usage: )" + step + R"( [flags]
   --list-params         list the parameters with their defaults and ranges, and exit
   --bench               print per-pass GPU times and frames per second after the run
   --ui                  draw the ImGui panel in headless runs too
+  --resource-log N      every N frames print resident memory and live GL objects (soak tests)
+  --exercise-minimise   frames 2 and 3 run as if the window were minimised (size 0), then restored
   --shader-dir DIR      read this step's shaders from DIR instead of its source folder
   --export DIR          write the simulated maps and their parameters to DIR after the last
                         frame (step05_fft and step06_foam_sky)

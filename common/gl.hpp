@@ -8,11 +8,20 @@
 
 namespace ocean {
 
+// How many GL objects the handles own right now: the soak test watches it for leaks. (One
+// process, one counter: a function-local static rather than a global.)
+inline long& live_gl_objects() {
+    static long count = 0;
+    return count;
+}
+
 template <class Deleter>
 class GlHandle {
 public:
     GlHandle() = default;
-    explicit GlHandle(GLuint id) : id_(id) {}
+    explicit GlHandle(GLuint id) : id_(id) {
+        if (id_ != 0) ++live_gl_objects();
+    }
     ~GlHandle() { reset(); }
     GlHandle(const GlHandle&) = delete;
     GlHandle& operator=(const GlHandle&) = delete;
@@ -28,7 +37,10 @@ public:
     GLuint id() const { return id_; }
     explicit operator bool() const { return id_ != 0; }
     void reset() {
-        if (id_ != 0) Deleter{}(id_);
+        if (id_ != 0) {
+            Deleter{}(id_);
+            --live_gl_objects();
+        }
         id_ = 0;
     }
 

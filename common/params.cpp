@@ -281,6 +281,7 @@ void ParamRegistry::reset_all() {
 
 std::optional<std::string> ParamRegistry::apply_preset_text(const std::string& text,
                                                             const std::string& origin) {
+    if (text.find('\0') != std::string::npos) return origin + ": not a text file";
     std::vector<std::pair<Param*, std::string>> assignments;
     std::istringstream lines(text);
     std::string line;
@@ -300,7 +301,6 @@ std::optional<std::string> ParamRegistry::apply_preset_text(const std::string& t
         if (auto error = p->check_text(value)) return where + *error;
         assignments.emplace_back(p, value);
     }
-    if (text.find('\0') != std::string::npos) return origin + ": not a text file";
     for (auto& [param, value] : assignments) param->set_from_text(value);
     mark_changed();
     return std::nullopt;

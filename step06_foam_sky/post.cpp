@@ -1,6 +1,7 @@
 #include "step06_foam_sky/post.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace step06 {
 
@@ -18,9 +19,10 @@ void PostProcess::resize(glm::ivec2 size) {
     glNamedFramebufferTexture(scene_target_.id(), GL_COLOR_ATTACHMENT0, scene_.id(), 0);
     glNamedFramebufferTexture(scene_target_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
 
-    // Bloom level 0 is half the screen; each next level half the previous (at least 1 pixel).
-    const int levels = kBloomLevels;
+    // Bloom level 0 is half the screen; each next level half the previous (at least 1 pixel). A
+    // tiny window has fewer levels: a texture cannot have more than log2(side) + 1.
     const glm::ivec2 half = glm::max(size / 2, glm::ivec2(1));
+    const int levels = std::min(kBloomLevels, 1 + int(std::floor(std::log2(double(std::max(half.x, half.y))))));
     bloom_ = ocean::make_texture(GL_TEXTURE_2D);
     glTextureStorage2D(bloom_.id(), levels, GL_RGBA16F, half.x, half.y);
     bloom_views_.clear();
