@@ -46,8 +46,8 @@ public:
         g(p.add_float("bloom_strength", &bloom_strength, 0.06f, 0, 2, "how much of the glow is added"), "post");
         g(p.add_float("exposure", &exposure, 0.9f, 0.01f, 20, "scale before the tonemapper"), "post").logarithmic();
         g(p.add_choice("tonemapper", &tonemapper, 0, {"aces", "agx", "none"}, "filmic curve: ACES fitted, AgX, or a clamp"), "post");
-        for (const char* name : {"ambient_term", "scatter_term", "specular_term", "reflection_term", "foam", "fog", "bloom"})
-            g(p.add_bool(std::string("show_") + name, &shown[index(name)], true, std::string("draw the ") + name),
+        for (std::size_t i = 0; i < std::size(kToggles); ++i)
+            g(p.add_bool(std::string("show_") + kToggles[i], &shown[i], true, std::string("draw the ") + kToggles[i]),
               "terms and passes");
     }
 
@@ -106,13 +106,15 @@ public:
     float fog_density = 0.0012f, fog_falloff = 0.02f, bloom_threshold = 2.5f, bloom_strength = 0.06f, exposure = 0.9f;
 
 private:
+    // What show_<name> turns on and off: each lighting term and each pass.
+    static constexpr const char* kToggles[] = {"ambient_term", "scatter_term", "specular_term", "reflection_term",
+                                               "foam", "fog", "bloom"};
     static std::size_t index(const std::string& name) {
-        static const char* names[] = {"ambient_term", "scatter_term", "specular_term", "reflection_term", "foam", "fog", "bloom"};
-        for (std::size_t i = 0; i < std::size(names); ++i)
-            if (name == names[i]) return i;
+        for (std::size_t i = 0; i < std::size(kToggles); ++i)
+            if (name == kToggles[i]) return i;
         return 0;
     }
-    bool shown[7] = {true, true, true, true, true, true, true};
+    bool shown[std::size(kToggles)] = {true, true, true, true, true, true, true};
 };
 
 }  // namespace step06
