@@ -98,6 +98,11 @@ protected:
     // and the step keeps drawing with the program it had.
     ShaderProgram* program_variant(const std::string& name, const std::vector<std::string>& stage_files,
                                    const std::vector<std::string>& defines);
+    // program_variant as a ProgramFactory, for a technique's classes (GpuOcean, Sky, ...).
+    ProgramFactory program_factory() {
+        return [this](const std::string& name, const std::vector<std::string>& files,
+                      const std::vector<std::string>& defines) { return program_variant(name, files, defines); };
+    }
     // Declares the camera_* parameters and turns on mouse/keyboard camera control.
     void use_camera(glm::vec3 target, float distance, float yaw_deg, float pitch_deg);
     Camera& camera() { return camera_; }

@@ -11,6 +11,7 @@
 #include <glm/vec4.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -80,6 +81,12 @@ private:
     std::vector<std::pair<std::string, std::filesystem::file_time_type>> watched_;
     mutable std::unordered_map<std::string, GLint> locations_;
 };
+
+// Builds (or finds) a compile-time variant of a program from repository-relative files: what
+// a chapter's technique asks for its shaders. Steps pass App::program_factory() (hot reload,
+// errors in the panel); tests build directly (tests/gpu/program_cache.hpp).
+using ProgramFactory = std::function<ShaderProgram*(const std::string& name, const std::vector<std::string>& files,
+                                                    const std::vector<std::string>& defines)>;
 
 // Compiles one stage from source; on failure returns the mapped log in *error.
 Shader compile_shader_stage(GLenum stage, const ShaderSource& source, std::string* error);

@@ -43,16 +43,14 @@ void GpuOcean::allocate(int n, int cascades) {
         glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
+    fftw_ = std::make_unique<FftwInverse2d>(n);  // planned once per size, not once a frame
     n_ = n;
 }
 
 void GpuOcean::set_spectra(const std::vector<const InitialSpectrum*>& cascades) {
     if (cascades.empty() || int(cascades.size()) > kMaxCascades) throw ocean::Error("1 to 4 cascades");
     const int n = cascades.front()->n;
-    if (n != n_ || cascades.size() != cascades_.size()) {
-        cascades_ = cascades;
-        allocate(n, int(cascades.size()));
-    }
+    if (n != n_ || cascades.size() != cascades_.size()) allocate(n, int(cascades.size()));
     cascades_ = cascades;
     std::vector<float> h0;
     std::vector<double> omega;
@@ -112,7 +110,7 @@ void GpuOcean::upload_cpu_fields(double time) {
     std::vector<float> packed(std::size_t(n_) * n_ * 4 * 2 * cascades_.size());
     std::size_t at = 0;
     for (const InitialSpectrum* s : cascades_) {
-        const OceanMaps maps = simulate_cpu(*s, time);
+        const OceanMaps maps = transform_fftw(packed_spectra(*s, time), *fftw_, s->n, s->patch_size);
         for (const auto& pair : kPacking)
             for (std::size_t i = 0; i < maps[pair[0]].size(); ++i) {
                 packed[at++] = float(maps[pair[0]][i]);

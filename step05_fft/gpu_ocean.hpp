@@ -9,6 +9,7 @@
 #include "step05_fft/ocean_maps.hpp"
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,10 +19,7 @@ enum class Backend { Dft = 0, GpuFft = 1, Fftw = 2 };
 constexpr int kMaxDftSize = 64;  // the naive DFT is O(N^4)
 constexpr int kMaxCascades = 4;
 
-// Builds (or finds) a compile-time variant of a program from repository-relative files; the
-// step passes App::program_variant (hot reload, errors in the panel), tests a plain builder.
-using ProgramFactory = std::function<ocean::ShaderProgram*(
-    const std::string& name, const std::vector<std::string>& files, const std::vector<std::string>& defines)>;
+using ocean::ProgramFactory;
 
 class GpuOcean {
 public:
@@ -62,6 +60,7 @@ private:
     ocean::Buffer h0_, omega_;
     ocean::Buffer spectra_, fields_;
     ocean::Texture displacement_, slopes_;
+    std::unique_ptr<FftwInverse2d> fftw_;  // the FFTW backend's plan
 };
 
 // Times the same transforms (4 complex N x N fields) with each backend, `repeats` times, and

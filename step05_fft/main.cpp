@@ -54,10 +54,7 @@ public:
 
 private:
     void init() override {
-        gpu_ = std::make_unique<step05::GpuOcean>(
-            [this](const std::string& name, const std::vector<std::string>& files, const std::vector<std::string>& d) {
-                return program_variant(name, files, d);
-            });
+        gpu_ = std::make_unique<step05::GpuOcean>(program_factory());
     }
 
     void update(double /*time*/, double /*dt*/) override {
@@ -68,6 +65,7 @@ private:
             spectrum_ = std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(wanted));
             gpu_->set_spectra({spectrum_.get()});
             spectrum_view_.update(wanted, *spectrum_);
+            height_sigma_ = float(std::sqrt(step05::resolved_variance(wanted)));
         }
     }
 
@@ -118,8 +116,7 @@ private:
         const int map = view_ - 1;
         float range = map_range_;
         if (range <= 0) {  // about 2.5 standard deviations of the height; slopes and J - 1 within 0.5
-            const float sigma = float(std::sqrt(step05::resolved_variance(spectrum_params_)));
-            range = map <= 2 ? std::max(2.5f * sigma, 1e-3f) : 0.5f;
+            range = map <= 2 ? std::max(2.5f * height_sigma_, 1e-3f) : 0.5f;
         }
         p->set("u_map", map);
         p->set("u_range", range);
@@ -170,6 +167,7 @@ private:
     std::vector<std::string> backend_times_;
     int backend_ = 1, normals_ = 0, view_ = 0;
     float map_range_ = 0;
+    float height_sigma_ = 0;  // metres: the square root of the spectrum's resolved variance
     bool wireframe_ = false, warned_dft_ = false;
 };
 

@@ -38,7 +38,7 @@ inline double foam_step(double foam, double jacobian, double dt, const FoamSetti
 // The GPU side: one r32f layer per cascade, updated by foam.comp from the cascade's Jacobian.
 class FoamSimulation {
 public:
-    explicit FoamSimulation(step05::ProgramFactory programs) : programs_(std::move(programs)) {}
+    explicit FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {}
 
     // A new texture (all zero) when the resolution or cascade count changes; the next update
     // then starts from the steady state (foam_steady_state).
@@ -51,7 +51,7 @@ public:
     std::vector<float> read_layer(int layer) const;
 
 private:
-    step05::ProgramFactory programs_;
+    ocean::ProgramFactory programs_;
     ocean::Texture texture_;
     int n_ = 0, layers_ = 0;
     bool warm_start_ = true;

@@ -70,20 +70,10 @@ public:
     }
 
 private:
-    ocean::ShaderProgram* program(const std::string& name, const std::vector<std::string>& files,
-                                  const std::vector<std::string>& defines = {}) {
-        return program_variant(name, files, defines);
-    }
-    step05::ProgramFactory factory() {
-        return [this](const std::string& n, const std::vector<std::string>& f, const std::vector<std::string>& d) {
-            return program_variant(n, f, d);
-        };
-    }
-
     void init() override {
-        gpu_ = std::make_unique<step05::GpuOcean>(factory());
-        sky_ = std::make_unique<step06::Sky>(factory(), 128);
-        foam_ = std::make_unique<step06::FoamSimulation>(factory());
+        gpu_ = std::make_unique<step05::GpuOcean>(program_factory());
+        sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
+        foam_ = std::make_unique<step06::FoamSimulation>(program_factory());
     }
 
     void update(double /*time*/, double dt) override {
@@ -145,7 +135,7 @@ private:
     void draw_sea() {
         const glm::mat4 view_projection = camera().projection(aspect()) * camera().view();
         {
-            auto* sky = program("sky", {"fullscreen.vert", "sky.frag"});
+            auto* sky = program_variant("sky", {"fullscreen.vert", "sky.frag"}, {});
             if (sky != nullptr) {
                 sky->set("u_inverse_view_projection", glm::inverse(view_projection));
                 sky->set("u_sky", 3);
@@ -155,7 +145,7 @@ private:
             }
         }
         const int debug = view_ >= 1 && view_ <= 4 ? view_ : 0;
-        auto* p = program("ocean", {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"},
+        auto* p = program_variant("ocean", {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"},
                           {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug)});
         if (p != nullptr) ocean_ = p;
         if (ocean_ == nullptr) return;
@@ -182,7 +172,7 @@ private:
     }
 
     void draw_cascade_map() {
-        auto* p = program("map_view", {"fullscreen.vert", "step05_fft/shaders/map_view.frag"});
+        auto* p = program_variant("map_view", {"fullscreen.vert", "step05_fft/shaders/map_view.frag"}, {});
         if (p == nullptr) return;
         p->set("u_map", debug_map_);
         p->set("u_range", debug_map_ <= 2 ? 1.0f : 0.5f);
@@ -216,13 +206,13 @@ private:
         const bool bloom = look_.show("bloom") && view_ == 0;
         if (bloom) {
             ocean::GpuScope timed(timers(), "bloom");
-            auto* down = program("bloom_down", {"fullscreen.vert", "bloom_down.frag"});
-            auto* up = program("bloom_up", {"fullscreen.vert", "bloom_up.frag"});
+            auto* down = program_variant("bloom_down", {"fullscreen.vert", "bloom_down.frag"}, {});
+            auto* up = program_variant("bloom_up", {"fullscreen.vert", "bloom_up.frag"}, {});
             if (down != nullptr && up != nullptr) post_.bloom(*down, *up, look_.bloom_threshold, fullscreen_vao());
         }
         ocean::GpuScope timed(timers(), "tonemap");
         bind_target();
-        auto* tonemap = program("tonemap", {"fullscreen.vert", "tonemap.frag"},
+        auto* tonemap = program_variant("tonemap", {"fullscreen.vert", "tonemap.frag"},
                                 {"TONEMAPPER " + std::to_string(view_ == 0 ? look_.tonemapper : 2)});
         if (tonemap == nullptr) return;
         tonemap->set("u_scene", 0);

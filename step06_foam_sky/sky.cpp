@@ -16,7 +16,7 @@ namespace {
 constexpr const char* kShaders = "step06_foam_sky/shaders/";
 }
 
-Sky::Sky(step05::ProgramFactory programs, int size) : programs_(std::move(programs)), size_(size) {
+Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(programs)), size_(size) {
     cubemap_ = ocean::make_texture(GL_TEXTURE_CUBE_MAP);
     glTextureStorage2D(cubemap_.id(), int(std::log2(double(size))) + 1, GL_RGBA16F, size, size);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);

@@ -26,7 +26,7 @@ struct SkySettings {
 
 class Sky {
 public:
-    Sky(step05::ProgramFactory programs, int size);
+    Sky(ocean::ProgramFactory programs, int size);
     // Loads an equirectangular image for the sky. On failure returns the warning to show and
     // keeps (or goes back to) the procedural sky. An empty path means the procedural sky.
     std::optional<std::string> use_image(const std::string& path);
@@ -38,7 +38,7 @@ public:
     bool uses_image() const { return bool(equirect_); }
 
 private:
-    step05::ProgramFactory programs_;
+    ocean::ProgramFactory programs_;
     int size_;
     ocean::Texture cubemap_, equirect_;
     bool image_rendered_ = false;

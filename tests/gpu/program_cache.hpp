@@ -30,6 +30,13 @@ public:
         return slot.get();
     }
 
+    // This cache as a ProgramFactory (it must outlive what uses it).
+    ocean::ProgramFactory factory() {
+        return [this](const std::string& n, const std::vector<std::string>& f, const std::vector<std::string>& d) {
+            return (*this)(n, f, d);
+        };
+    }
+
 private:
     std::map<std::string, std::unique_ptr<ocean::ShaderProgram>> programs_;
 };

@@ -14,11 +14,7 @@ using namespace step05;
 
 struct FftTest : ocean_test::GlTest {
     ocean_test::ProgramCache cache;
-    ProgramFactory factory() {
-        return [this](const std::string& n, const std::vector<std::string>& f, const std::vector<std::string>& d) {
-            return cache(n, f, d);
-        };
-    }
+    ocean::ProgramFactory factory() { return cache.factory(); }
 };
 
 double relative_error(const std::vector<float>& gpu, std::size_t offset, std::size_t stride,

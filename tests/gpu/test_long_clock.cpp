@@ -27,8 +27,7 @@ TEST_F(LongClock, OneFftModeAfterTenDays) {
     s.h0[3] = amplitude;
     const double k = 2 * step05::kPi * 3 / p.patch_size, omega = s.omega[3];
     const double period = 2 * step05::kPi / omega;
-    step05::GpuOcean ocean([this](const std::string& n, const std::vector<std::string>& f,
-                                  const std::vector<std::string>& d) { return cache(n, f, d); });
+    step05::GpuOcean ocean(cache.factory());
     ocean.set_spectra({&s});
     auto heights_at = [&](double t) {
         ocean.evolve(t);

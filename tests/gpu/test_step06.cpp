@@ -20,11 +20,7 @@ namespace {
 
 struct Step06Gpu : ocean_test::GlTest {
     ocean_test::ProgramCache cache;
-    step05::ProgramFactory factory() {
-        return [this](const std::string& n, const std::vector<std::string>& f, const std::vector<std::string>& d) {
-            return cache(n, f, d);
-        };
-    }
+    ocean::ProgramFactory factory() { return cache.factory(); }
     // A calm sea (all maps zero, J = 1) of 4 cascades at N = 64.
     std::vector<step05::InitialSpectrum> calm = std::vector<step05::InitialSpectrum>(4);
     std::unique_ptr<step05::GpuOcean> calm_ocean() {
