@@ -258,5 +258,9 @@ void ShaderProgram::set(const std::string& u, const std::vector<glm::vec4>& v) c
 void ShaderProgram::set(const std::string& u, const std::vector<float>& v) const {
     if (!v.empty()) glProgramUniform1fv(id(), location(u), static_cast<GLsizei>(v.size()), v.data());
 }
+void ShaderProgram::set(const std::string& u, const glm::ivec2& v) const { glProgramUniform2i(id(), location(u), v.x, v.y); }
+void ShaderProgram::set(const std::string& u, const std::vector<glm::vec2>& v) const {
+    if (!v.empty()) glProgramUniform2fv(id(), location(u), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+}
 
 }  // namespace ocean

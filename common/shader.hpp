@@ -65,11 +65,13 @@ public:
     void set(const std::string& uniform, float v) const;
     void set(const std::string& uniform, int v) const;
     void set(const std::string& uniform, const glm::vec2& v) const;
+    void set(const std::string& uniform, const glm::ivec2& v) const;
     void set(const std::string& uniform, const glm::vec3& v) const;
     void set(const std::string& uniform, const glm::vec4& v) const;
     void set(const std::string& uniform, const glm::mat4& v) const;
     void set(const std::string& uniform, const std::vector<glm::vec4>& v) const;
     void set(const std::string& uniform, const std::vector<float>& v) const;
+    void set(const std::string& uniform, const std::vector<glm::vec2>& v) const;
 
 private:
     std::string name_;

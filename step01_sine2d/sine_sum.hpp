@@ -1,6 +1,9 @@
 // Chapter 1 on the CPU, in double precision: the reference the GPU plot is tested against.
 //
-//   f(x, t) = sum_i a_i sin(x w_i + t phi_i),   w = 2 pi / wavelength,   phi = speed * 2 pi / wavelength
+//   f(x, t) = sum_i a_i sin(x w_i - t phi_i),   w = 2 pi / wavelength,   phi = speed * 2 pi / wavelength
+//
+// A crest sits where x w - t phi is constant: x = (const + t phi) / w, so it travels towards +x at
+// phi / w = speed. The seed writes + t phi, which moves its crests towards -x (see README).
 //
 // The seed writes w = 2 / wavelength; a sine repeats every 2 pi radians, so only 2 pi / wavelength
 // makes the wave repeat every `wavelength` metres (see README).
@@ -16,7 +19,7 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 struct Wave {
     double wavelength = 1;  // metres between crests
     double amplitude = 0;   // metres from rest to crest
-    double speed = 0;       // metres per second the crests travel (towards -x for speed > 0)
+    double speed = 0;       // metres per second the crests travel (towards +x for speed > 0)
 };
 
 // w: radians per metre.
@@ -24,15 +27,16 @@ inline double angular_wavenumber(const Wave& wave) { return kTwoPi / wave.wavele
 // phi: radians per second.
 inline double phase_rate(const Wave& wave) { return wave.speed * kTwoPi / wave.wavelength; }
 
-// t * phi reduced to [0, 2 pi): the GPU gets this phase in single precision, so it stays exact
-// however long the program runs (t * phi itself loses its fraction in a float after hours).
+// The phase term -t * phi reduced to [0, 2 pi): the GPU gets it in single precision and adds it
+// to x w, so it stays exact however long the program runs (t * phi itself loses its fraction in a
+// float after hours).
 inline double phase_at(const Wave& wave, double time) {
-    const double phase = std::fmod(time * phase_rate(wave), kTwoPi);
+    const double phase = std::fmod(-time * phase_rate(wave), kTwoPi);
     return phase < 0 ? phase + kTwoPi : phase;
 }
 
 inline double wave_height(const Wave& wave, double x, double time) {
-    return wave.amplitude * std::sin(x * angular_wavenumber(wave) + time * phase_rate(wave));
+    return wave.amplitude * std::sin(x * angular_wavenumber(wave) - time * phase_rate(wave));
 }
 
 inline double sum_of_sines(const std::vector<Wave>& waves, double x, double time) {
@@ -46,7 +50,7 @@ inline double sum_of_sines_slope(const std::vector<Wave>& waves, double x, doubl
     double slope = 0;
     for (const Wave& wave : waves) {
         const double w = angular_wavenumber(wave);
-        slope += wave.amplitude * w * std::cos(x * w + time * phase_rate(wave));
+        slope += wave.amplitude * w * std::cos(x * w - time * phase_rate(wave));
     }
     return slope;
 }

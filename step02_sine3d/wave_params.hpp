@@ -28,14 +28,14 @@ public:
             const float wavelength = 18.0f * std::pow(0.68f, float(i));
             auto visible = [this, i] { return i < count_; };
             p.add_float(prefix + "direction", &waves_[i].direction, std::fmod(20.0f + 67.0f * float(i), 360.0f), 0,
-                        360, "angle of the direction d in the x-z plane, degrees (0 = +x, 90 = +z); crests travel along -d")
+                        360, "angle of the direction d in the x-z plane, degrees (0 = +x, 90 = +z); crests travel along +d")
                 .in_group(group).visible_if(visible);
             p.add_float(prefix + "wavelength", &waves_[i].wavelength, wavelength, 0.1f, 200,
                         "distance between crests, metres").in_group(group).visible_if(visible).logarithmic();
             p.add_float(prefix + "amplitude", &waves_[i].amplitude, 0.055f * wavelength, 0, 10,
                         "height of a crest above rest, metres").in_group(group).visible_if(visible);
             p.add_float(prefix + "speed", &waves_[i].speed, std::sqrt(9.81f * wavelength / 6.2831853f), -30, 30,
-                        "crest speed, metres per second (positive: along -d, the seed's sign)")
+                        "crest speed, metres per second (positive: along +d)")
                 .in_group(group).visible_if(visible);
         }
     }

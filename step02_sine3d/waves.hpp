@@ -1,8 +1,9 @@
 // Chapter 1.2.2 on the CPU, in double precision: a sum of directional sines over the plane.
 //
-//   h(x, z, t) = sum_i a_i sin(d_i . (x, z) w_i + t phi_i),   d_i = (cos theta_i, sin theta_i)
+//   h(x, z, t) = sum_i a_i sin(d_i . (x, z) w_i - t phi_i),   d_i = (cos theta_i, sin theta_i)
 //
-// with w and phi as in step01 (2 pi / wavelength, speed * 2 pi / wavelength). This is the
+// with w and phi as in step01 (2 pi / wavelength, speed * 2 pi / wavelength): the crests of wave i
+// travel along +d_i at `speed` (the seed's + t phi sends them along -d_i). This is the
 // reference that the vertex shader's displaced positions are tested against.
 #pragma once
 
@@ -16,10 +17,10 @@ namespace step02 {
 using step01::kTwoPi;
 
 struct DirectionalWave {
-    double direction_deg = 0;  // angle of d in the x-z plane, 0 = +x; crests travel along -d
+    double direction_deg = 0;  // angle of d in the x-z plane, 0 = +x; crests travel along +d
     double wavelength = 1;     // metres
     double amplitude = 0;      // metres
-    double speed = 0;          // metres per second (towards -d for speed > 0, as in step01)
+    double speed = 0;          // metres per second (towards +d for speed > 0, as in step01)
 };
 
 struct Direction { double x, z; };
@@ -32,9 +33,9 @@ inline Direction direction(const DirectionalWave& wave) {
 inline double angular_wavenumber(const DirectionalWave& wave) { return kTwoPi / wave.wavelength; }
 inline double phase_rate(const DirectionalWave& wave) { return wave.speed * kTwoPi / wave.wavelength; }
 
-// The phase t * phi, reduced to [0, 2 pi) in double precision before it becomes a float.
+// The phase term -t * phi, reduced to [0, 2 pi) in double precision before it becomes a float.
 inline double phase_at(const DirectionalWave& wave, double time) {
-    const double phase = std::fmod(time * phase_rate(wave), kTwoPi);
+    const double phase = std::fmod(-time * phase_rate(wave), kTwoPi);
     return phase < 0 ? phase + kTwoPi : phase;
 }
 
@@ -42,7 +43,7 @@ inline double height(const std::vector<DirectionalWave>& waves, double x, double
     double h = 0;
     for (const auto& wave : waves) {
         const Direction d = direction(wave);
-        h += wave.amplitude * std::sin((d.x * x + d.z * z) * angular_wavenumber(wave) +
+        h += wave.amplitude * std::sin((d.x * x + d.z * z) * angular_wavenumber(wave) -
                                        time * phase_rate(wave));
     }
     return h;

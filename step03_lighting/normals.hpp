@@ -1,8 +1,8 @@
 // Chapter 2 on the CPU, in double precision: the slope of the sea and its normal.
 //
-//   h(x, z)   = sum_i a_i sin(d_i.(x,z) w_i + t phi_i)                    (step02)
-//   dh/dx     = sum_i w_i a_i d_ix cos(d_i.(x,z) w_i + t phi_i)          same loop, same angle
-//   dh/dz     = sum_i w_i a_i d_iz cos(d_i.(x,z) w_i + t phi_i)
+//   h(x, z)   = sum_i a_i sin(d_i.(x,z) w_i - t phi_i)                    (step02)
+//   dh/dx     = sum_i w_i a_i d_ix cos(d_i.(x,z) w_i - t phi_i)          same loop, same angle
+//   dh/dz     = sum_i w_i a_i d_iz cos(d_i.(x,z) w_i - t phi_i)
 //   T = (1, dh/dx, 0),  B = (0, dh/dz, 1),  N = B x T = normalize(-dh/dx, 1, -dh/dz)   (y up)
 //
 // The seed writes T = <1, 0, d/dx> and B = <0, 1, d/dz>: those are the vectors of a z-up world.
@@ -41,7 +41,7 @@ inline HeightGradient height_and_gradient(const std::vector<DirectionalWave>& wa
     for (const auto& wave : waves) {
         const auto d = step02::direction(wave);
         const double w = step02::angular_wavenumber(wave);
-        const double angle = (d.x * x + d.z * z) * w + time * step02::phase_rate(wave);
+        const double angle = (d.x * x + d.z * z) * w - time * step02::phase_rate(wave);
         g.height += wave.amplitude * std::sin(angle);
         const double slope = w * wave.amplitude * std::cos(angle);  // d/d(along d) of this wave
         g.dh_dx += slope * d.x;

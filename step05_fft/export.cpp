@@ -20,8 +20,7 @@ std::string exact(double value) {  // all 17 digits: the checker rebuilds the se
 }  // namespace
 
 void export_maps(const std::string& dir, unsigned displacement_texture, unsigned slopes_texture, int layer,
-                 int n, double patch_size, double time, double choppiness, const ocean::ParamRegistry& params,
-                 const std::vector<std::pair<std::string, std::string>>& notes) {
+                 int n, double patch_size, double time, double choppiness, const ocean::ParamRegistry& params) {
     const std::size_t texels = std::size_t(n) * n;
     std::vector<float> displacement(texels * 4), slopes(texels * 4);
     // One layer of level 0: (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz).
@@ -29,6 +28,15 @@ void export_maps(const std::string& dir, unsigned displacement_texture, unsigned
                          GLsizei(displacement.size() * sizeof(float)), displacement.data());
     glGetTextureSubImage(slopes_texture, 0, 0, 0, layer, n, n, 1, GL_RGBA, GL_FLOAT,
                          GLsizei(slopes.size() * sizeof(float)), slopes.data());
+    write_export(dir, n, displacement, slopes, patch_size, time, choppiness, params,
+                 {{"export.periodic", "1"}, {"export.origin_x", "0"}, {"export.origin_z", "0"}});
+}
+
+void write_export(const std::string& dir, int n, const std::vector<float>& displacement,
+                  const std::vector<float>& slopes, double patch_size, double time, double choppiness,
+                  const ocean::ParamRegistry& params, const std::vector<std::pair<std::string, std::string>>& notes,
+                  const std::vector<ExtraMap>& extra) {
+    const std::size_t texels = std::size_t(n) * n;
     std::vector<ocean::FloatImage> maps(std::size(kExportedMaps), ocean::FloatImage{n, n, std::vector<float>(texels)});
     for (std::size_t i = 0; i < texels; ++i) {
         const float* d = &displacement[4 * i];
@@ -42,7 +50,7 @@ void export_maps(const std::string& dir, unsigned displacement_texture, unsigned
     }
     const std::filesystem::path folder(dir);
     std::ofstream text(folder / "export.txt");
-    text << "# ocean maps: rows in each PFM go z = 0 first (PFM's bottom row), x = i * patch_size / resolution\n";
+    text << "# ocean maps: rows in each PFM go z = 0 first (PFM's bottom row), x = origin_x + i * patch_size / resolution\n";
     for (const auto& p : params.all()) text << p->name() << " = " << p->value_text() << "\n";
     text << "export.patch_size = " << ocean::format_number(patch_size) << "\n"
          << "export.resolution = " << n << "\n"
@@ -53,6 +61,12 @@ void export_maps(const std::string& dir, unsigned displacement_texture, unsigned
         const std::string name = kExportedMaps[m].file;
         if (auto error = ocean::save_pfm(maps[m], (folder / name).string())) throw ocean::Error("--export: " + *error);
         text << "file." << name.substr(0, name.size() - 4) << " = " << name << "    # " << kExportedMaps[m].meaning
+             << "\n";
+    }
+    for (const ExtraMap& map : extra) {
+        if (auto error = ocean::save_pfm(ocean::FloatImage{n, n, map.values}, (folder / map.file).string()))
+            throw ocean::Error("--export: " + *error);
+        text << "file." << map.file.substr(0, map.file.size() - 4) << " = " << map.file << "    # " << map.meaning
              << "\n";
     }
     if (!text.flush()) throw ocean::Error("--export: cannot write " + (folder / "export.txt").string());

@@ -13,11 +13,23 @@ namespace step05 {
 
 // Reads layer `layer` of the simulation's textures and writes the maps and export.txt into dir.
 // Throws ocean::Error on failure.
-// `notes` are extra `key = value` lines (step06: which cascade, and its band).
 void export_maps(const std::string& dir, unsigned displacement_texture, unsigned slopes_texture, int layer,
                  int resolution, double patch_size, double time, double choppiness,
-                 const ocean::ParamRegistry& params,
-                 const std::vector<std::pair<std::string, std::string>>& notes = {});
+                 const ocean::ParamRegistry& params);
+
+// A map beyond the six above (step06: foam.pfm), n x n, rows z first.
+struct ExtraMap {
+    std::string file, meaning;
+    std::vector<float> values;
+};
+
+// Writes the maps from texel arrays laid out as the textures are, 4 floats a texel:
+// (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz). `notes` are extra
+// `key = value` lines (step06: the grid's origin and spacing). Throws ocean::Error on failure.
+void write_export(const std::string& dir, int n, const std::vector<float>& displacement,
+                  const std::vector<float>& slopes, double patch_size, double time, double choppiness,
+                  const ocean::ParamRegistry& params, const std::vector<std::pair<std::string, std::string>>& notes,
+                  const std::vector<ExtraMap>& extra = {});
 
 // The maps written, in order, with the meaning each file has.
 struct ExportedMap {

@@ -27,7 +27,7 @@ ComplexField height_spectrum(const InitialSpectrum& s, double time) {
             const std::size_t index = std::size_t(j) * n + i;
             const std::size_t minus = std::size_t((n - j) % n) * n + std::size_t((n - i) % n);
             const double phase = reduced_phase(s.omega[index], time);
-            const Complex rotation(std::cos(phase), std::sin(phase));
+            const Complex rotation(std::cos(phase), -std::sin(phase));  // e^{-i omega t}: along +k
             h[index] = s.h0[index] * rotation + std::conj(s.h0[minus]) * std::conj(rotation);
         }
     return h;
@@ -46,9 +46,10 @@ std::array<ComplexField, 4> packed_spectra(const InitialSpectrum& s, double time
             const double kx = wavenumber(i, n, s.patch_size), kz = wavenumber(j, n, s.patch_size);
             const double k = std::hypot(kx, kz);
             if (k == 0) continue;  // the mean level: zero
-            const Complex dx = -i_unit * (kx / k) * h, dz = -i_unit * (kz / k) * h;
+            const Complex dx = i_unit * (kx / k) * h, dz = i_unit * (kz / k) * h;  // +i: sharp crests
             const Complex sx = i_unit * kx * h, sz = i_unit * kz * h;
-            const Complex dxx = (kx * kx / k) * h, dzz = (kz * kz / k) * h, dxz = (kx * kz / k) * h;
+            // d/dx of a mode is a factor i kx: dDx/dx = i kx (i kx/|k| h~) = -kx^2/|k| h~.
+            const Complex dxx = -(kx * kx / k) * h, dzz = -(kz * kz / k) * h, dxz = -(kx * kz / k) * h;
             out[0][index] = h + i_unit * dx;
             out[1][index] = dz + i_unit * sx;
             out[2][index] = sz + i_unit * dxx;

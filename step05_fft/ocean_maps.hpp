@@ -2,10 +2,18 @@
 // maps the renderer needs, through FFTW. This is the reference for the GPU's DFT and FFT, and
 // the third backend of the step (computed here, then uploaded).
 //
-//   h~(k, t) = h0(k) e^{i omega t} + conj(h0(-k)) e^{-i omega t}      (Hermitian: h is real)
-//   D~  = -i k/|k| h~        (choppy displacement),   slopes i k h~,
-//   dDx/dx <- kx^2/|k| h~,   dDz/dz <- kz^2/|k| h~,   dDx/dz <- kx kz/|k| h~
+//   h~(k, t) = h0(k) e^{-i omega t} + conj(h0(-k)) e^{i omega t}      (Hermitian: h is real)
+//   D~  = +i k/|k| h~        (choppy displacement),   slopes i k h~,
+//   dDx/dx <- -kx^2/|k| h~,  dDz/dz <- -kz^2/|k| h~,  dDx/dz <- -kx kz/|k| h~
 //   field(x) = sum_k field~(k) e^{i k.x}                                (inverse DFT, no 1/N)
+//
+// Two signs differ from the seed (4.3, 4.5), and both matter on screen. The mode h0(k) e^{i(k.x -
+// omega t)} has its crests where k.x - omega t is constant: they travel along +k, so the energy
+// the spectrum puts around the wind's direction goes with the wind (the seed's e^{+i omega t}
+// sends it upwind). And one mode h = A cos(theta), theta = k.x - omega t, gets D = -k/|k| A sin(theta):
+// with x' = x + lambda D the points crowd towards each crest, which sharpens (a Gerstner wave, a
+// trochoid for lambda = 1) while the troughs flatten; the seed's -i gives round crests and cusped,
+// folding troughs.
 //
 // The eight real fields travel as four complex ones: if A~ and B~ are Hermitian, the inverse
 // transform of A~ + i B~ is a + i b, two real fields for the price of one transform.
@@ -30,7 +38,8 @@ constexpr std::array<std::array<Field, 2>, 4> kPacking{{{Height, DisplacementX},
                                                         {DDzDz, DDxDz}}};
 const char* field_name(Field f);  // "height", "displacement_x", ...
 
-// The phase omega t reduced to [0, 2 pi) in double precision, as the GPU receives it.
+// The phase omega t reduced to [0, 2 pi) in double precision, as the GPU receives it (the
+// rotation applied to h0(k) is then e^{-i phase}).
 double reduced_phase(double omega, double time);
 
 // h~(k, t) alone (Hermitian: its inverse transform is real).

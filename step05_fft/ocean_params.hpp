@@ -25,6 +25,9 @@ public:
         p.add_float("fetch", &fetch_, 100000, 1000, 5000000, "open water upwind, metres (JONSWAP)")
             .in_group("spectrum").logarithmic();
         p.add_float("gamma", &gamma_, 3.3f, 1, 10, "JONSWAP peak enhancement").in_group("spectrum");
+        p.add_choice("energy", &energy_, 0, {"fit", "growth_law"},
+                     "JONSWAP's alpha: the fit's (heights ~30 % above observed seas) or scaled to the growth "
+                     "law E g^2/U^4 = 1.6e-7 g F/U^2").in_group("spectrum");
         p.add_float("spread", &spread_, 0.2f, 0, 1,
                     "fraction of the energy spread evenly over all directions").in_group("spectrum");
         p.add_float("swell", &swell_, 0, 0, 1, "narrows the spreading around the wind: long-crested swell")
@@ -54,6 +57,7 @@ public:
         s.wind_direction = wind_direction_;
         s.fetch = fetch_;
         s.gamma = gamma_;
+        s.energy = JonswapEnergy(energy_);
         s.spread = spread_;
         s.swell = swell_;
         s.depth = depth_;
@@ -70,7 +74,7 @@ public:
     float choppiness() const { return choppiness_; }
 
 private:
-    int model_ = 0, resolution_index_ = 2, seed_ = 1;
+    int model_ = 0, energy_ = 0, resolution_index_ = 2, seed_ = 1;
     float wind_speed_ = 9, wind_direction_ = 30, fetch_ = 100000, gamma_ = 3.3f, spread_ = 0.2f, swell_ = 0;
     float depth_ = 500, patch_size_ = 250, amplitude_scale_ = 1, low_cutoff_ = 0, high_cutoff_ = 1000;
     float choppiness_ = 1;

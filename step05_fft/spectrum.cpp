@@ -25,12 +25,54 @@ double jonswap_peak_omega(double wind_speed, double fetch) {
 
 double jonswap(double omega, double wind_speed, double fetch, double gamma) {
     if (omega <= 0 || wind_speed <= 0 || fetch <= 0) return 0;
-    const double alpha = jonswap_alpha(wind_speed, fetch);
-    const double peak = jonswap_peak_omega(wind_speed, fetch);
+    return jonswap_with_alpha(omega, jonswap_alpha(wind_speed, fetch), jonswap_peak_omega(wind_speed, fetch), gamma);
+}
+
+double jonswap_with_alpha(double omega, double alpha, double peak, double gamma) {
+    if (omega <= 0 || peak <= 0) return 0;
     const double sigma = omega <= peak ? 0.07 : 0.09;
     const double r = std::exp(-(omega - peak) * (omega - peak) / (2 * sigma * sigma * peak * peak));
     return alpha * kGravity * kGravity / std::pow(omega, 5) * std::exp(-1.25 * std::pow(peak / omega, 4)) *
            std::pow(gamma, r);
+}
+
+double jonswap_variance_per_alpha(double peak_omega, double gamma) {
+    if (peak_omega <= 0) return 0;
+    // In u = omega / omega_p the integrand is g^2 omega_p^-4 u^-5 exp(-1.25 u^-4) gamma^r(u):
+    // midpoint rule from 0.3 omega_p (where exp(-1.25 u^-4) < 1e-66) to 60 omega_p, plus the
+    // tail beyond, u^-5 -> 1 / (4 u^4).
+    const int steps = 200000;
+    const double u0 = 0.3, u1 = 60.0, du = (u1 - u0) / steps;
+    double sum = 0;
+    for (int i = 0; i < steps; ++i) sum += jonswap_with_alpha((u0 + (i + 0.5) * du) * peak_omega, 1.0, peak_omega, gamma);
+    sum *= du * peak_omega;
+    return sum + kGravity * kGravity / (4 * std::pow(u1 * peak_omega, 4));
+}
+
+double growth_law_variance(double wind_speed, double fetch) {
+    if (wind_speed <= 0 || fetch <= 0) return 0;
+    const double u2 = wind_speed * wind_speed;
+    return 1.6e-7 * (kGravity * fetch / u2) * u2 * u2 / (kGravity * kGravity);
+}
+
+double cem_significant_height(double wind_speed, double fetch) {
+    if (wind_speed <= 0 || fetch <= 0) return 0;
+    const double friction2 = 0.001 * (1.1 + 0.035 * wind_speed) * wind_speed * wind_speed;  // u*^2
+    return 4.13e-2 * std::sqrt(kGravity * fetch / friction2) * friction2 / kGravity;
+}
+
+double jonswap_alpha_for(double wind_speed, double fetch, double gamma, JonswapEnergy energy) {
+    if (wind_speed <= 0 || fetch <= 0) return 0;
+    if (energy == JonswapEnergy::Fitted) return jonswap_alpha(wind_speed, fetch);
+    // The integral takes a few milliseconds and the spectrum asks for it once per mode: keep the
+    // last answer (per thread, so tests and programs running spectra in parallel stay correct).
+    thread_local double last_wind = -1, last_fetch = -1, last_gamma = -1, last_alpha = 0;
+    if (wind_speed != last_wind || fetch != last_fetch || gamma != last_gamma) {
+        last_alpha = growth_law_variance(wind_speed, fetch) /
+                     jonswap_variance_per_alpha(jonswap_peak_omega(wind_speed, fetch), gamma);
+        last_wind = wind_speed, last_fetch = fetch, last_gamma = gamma;
+    }
+    return last_alpha;
 }
 
 double phillips_k(double k, double wind_speed) {
@@ -46,16 +88,19 @@ double tma_attenuation(double omega, double depth) {
     return 1;
 }
 
-double spreading_exponent(double omega, double peak_omega, double swell) {
+double spreading_exponent(double omega, double peak_omega, double wind_speed, double swell) {
     if (omega <= 0 || peak_omega <= 0) return 0;
     const double ratio = omega / peak_omega;
-    const double hasselmann = ratio <= 1 ? 6.97 * std::pow(ratio, 4.06) : 9.77 * std::pow(ratio, -2.33);
+    // Above the peak the exponent falls faster for a young sea (U omega_p / g large).
+    const double mu = -2.33 - 1.45 * (wind_speed * peak_omega / kGravity - 1.17);
+    const double hasselmann = ratio <= 1 ? 6.97 * std::pow(ratio, 4.06) : 9.77 * std::pow(ratio, mu);
     // Horvath's swell term: long waves (omega < omega_p) narrow the most.
     return hasselmann + 16.0 * std::tanh(peak_omega / omega) * swell * swell;
 }
 
-double directional_spreading(double omega, double theta, double peak_omega, double spread, double swell) {
-    const double s = spreading_exponent(omega, peak_omega, swell);
+double directional_spreading(double omega, double theta, double peak_omega, double wind_speed, double spread,
+                             double swell) {
+    const double s = spreading_exponent(omega, peak_omega, wind_speed, swell);
     // Normalisation of cos^2s(theta/2) over [-pi, pi]: Gamma(s+1)^2 2^(2s-1) / (pi Gamma(2s+1)).
     const double log_norm = 2 * std::lgamma(s + 1) - std::lgamma(2 * s + 1) + (2 * s - 1) * std::log(2.0) -
                             std::log(kPi);
@@ -67,15 +112,21 @@ double directional_spreading(double omega, double theta, double peak_omega, doub
 double peak_omega_of(const SpectrumParams& p) {
     if (p.wind_speed <= 0) return 0;
     if (p.model == SpectrumModel::Jonswap) return jonswap_peak_omega(p.wind_speed, p.fetch);
-    return 0.855 * kGravity / p.wind_speed;  // Pierson-Moskowitz: where Phillips' peak falls
+    return std::pow(0.8, 0.25) * kGravity / p.wind_speed;  // where Phillips' S(omega) peaks
 }
 
 double omnidirectional_k(const SpectrumParams& p, double k) {
     if (k <= 0) return 0;
     const double omega = dispersion(k, p.depth);
-    double density = p.model == SpectrumModel::Jonswap
-                         ? jonswap(omega, p.wind_speed, p.fetch, p.gamma) * dispersion_derivative(k, p.depth)
-                         : phillips_k(k, p.wind_speed);
+    double density = 0;
+    if (p.model == SpectrumModel::Jonswap) {
+        if (p.wind_speed <= 0 || p.fetch <= 0) return 0;
+        const double alpha = jonswap_alpha_for(p.wind_speed, p.fetch, p.gamma, p.energy);
+        density = jonswap_with_alpha(omega, alpha, jonswap_peak_omega(p.wind_speed, p.fetch), p.gamma) *
+                  dispersion_derivative(k, p.depth);
+    } else {
+        density = phillips_k(k, p.wind_speed);
+    }
     if (p.tma) density *= tma_attenuation(omega, p.depth);
     return density;
 }
@@ -87,7 +138,7 @@ double spectrum_2d(const SpectrumParams& p, double kx, double kz) {
     double theta = std::atan2(kz, kx) - wind;
     theta = std::remainder(theta, 2 * kPi);  // into [-pi, pi]
     const double omega = dispersion(k, p.depth);
-    const double d = directional_spreading(omega, theta, peak_omega_of(p), p.spread, p.swell);
+    const double d = directional_spreading(omega, theta, peak_omega_of(p), p.wind_speed, p.spread, p.swell);
     return p.amplitude_scale * p.amplitude_scale * omnidirectional_k(p, k) * d / k;
 }
 
@@ -160,7 +211,7 @@ double resolved_variance(const SpectrumParams& p) {
 }
 
 bool same_spectrum(const SpectrumParams& a, const SpectrumParams& b) {
-    return a.model == b.model && a.wind_speed == b.wind_speed && a.wind_direction == b.wind_direction &&
+    return a.model == b.model && a.energy == b.energy && a.wind_speed == b.wind_speed && a.wind_direction == b.wind_direction &&
            a.fetch == b.fetch && a.gamma == b.gamma && a.spread == b.spread && a.swell == b.swell &&
            a.depth == b.depth && a.tma == b.tma && a.patch_size == b.patch_size && a.resolution == b.resolution &&
            a.seed == b.seed && a.amplitude_scale == b.amplitude_scale && a.low_cutoff == b.low_cutoff &&

@@ -20,6 +20,11 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kGravity = 9.81;
 
 enum class SpectrumModel { Jonswap = 0, Phillips = 1 };
+// JONSWAP's alpha and omega_p come from two separate fits to the 1973 data, and together they
+// overestimate the energy of a fetch-limited sea (README, "Heights against observations").
+// GrowthLaw keeps the shape and scales alpha so that the variance follows JONSWAP's own growth
+// law E g^2 / U^4 = 1.6e-7 g F / U^2.
+enum class JonswapEnergy { Fitted = 0, GrowthLaw = 1 };
 
 struct SpectrumParams {
     SpectrumModel model = SpectrumModel::Jonswap;
@@ -27,6 +32,7 @@ struct SpectrumParams {
     double wind_direction = 30;    // degrees, direction the wind blows towards (0 = +x, 90 = +z)
     double fetch = 300000;         // F, metres of open water upwind
     double gamma = 3.3;            // JONSWAP peak enhancement
+    JonswapEnergy energy = JonswapEnergy::Fitted;
     double spread = 0.2;           // fraction of the energy spread evenly over all directions
     double swell = 0;              // 0..1: narrows the spreading around the wind (long-crested swell)
     double depth = 500;            // metres (finite-depth dispersion; TMA attenuation when enabled)
@@ -47,20 +53,38 @@ double dispersion_derivative(double k, double depth);  // d omega / dk
 // JONSWAP's fetch-limited parameters.
 double jonswap_alpha(double wind_speed, double fetch);        // 0.076 (U^2 / (F g))^0.22
 double jonswap_peak_omega(double wind_speed, double fetch);   // 22 (g^2 / (U F))^(1/3)
-// S(omega), m^2 s / rad. Zero for omega <= 0 or a calm sea.
+// S(omega), m^2 s / rad, with a given alpha (the fit's, or the growth law's). Zero for omega <= 0
+// or a calm sea. With gamma = 1 it is the Pierson-Moskowitz shape, whose integral is
+// alpha g^2 / (5 omega_p^4).
 double jonswap(double omega, double wind_speed, double fetch, double gamma);
+double jonswap_with_alpha(double omega, double alpha, double peak_omega, double gamma);
+// The integral of S over omega for alpha = 1 (numerical: gamma's bump has no closed form).
+double jonswap_variance_per_alpha(double peak_omega, double gamma);
+// The alpha the spectrum uses under `energy`.
+double jonswap_alpha_for(double wind_speed, double fetch, double gamma, JonswapEnergy energy);
+
+// Observed fetch-limited growth, for comparing the spectrum's heights with the sea's:
+// JONSWAP's growth law (Hasselmann et al. 1973): E g^2 / U^4 = 1.6e-7 g F / U^2, Hs = 4 sqrt(E);
+double growth_law_variance(double wind_speed, double fetch);
+// the Coastal Engineering Manual (II-2, eq. II-2-36, deep water): g Hm0 / u*^2 = 4.13e-2
+// (g F / u*^2)^(1/2) with u*^2 = C_D U^2, C_D = 0.001 (1.1 + 0.035 U). Metres.
+double cem_significant_height(double wind_speed, double fetch);
 // Phillips, corrected from the seed: F(k) = (alpha / 2) exp(-1 / (k L)^2) / k^3 per unit k, with
 // L = U^2 / g and alpha = 0.0081; as a 2D density that is the seed's exp(-1/(kL)^2) / k^4 shape.
 double phillips_k(double k, double wind_speed);
 // Kitaigorodskii's depth attenuation used by the TMA spectrum (1 in deep water).
 double tma_attenuation(double omega, double depth);
 
-// Hasselmann's cos^2s exponent for omega relative to the peak, plus the swell's narrowing.
-double spreading_exponent(double omega, double peak_omega, double swell);
+// Hasselmann's cos^2s exponent for omega relative to the peak, plus the swell's narrowing:
+//   s = 6.97 (omega/omega_p)^4.06                                  below the peak,
+//   s = 9.77 (omega/omega_p)^(-2.33 - 1.45 (U omega_p / g - 1.17))  above it (Hasselmann et al. 1980).
+double spreading_exponent(double omega, double peak_omega, double wind_speed, double swell);
 // D(omega, theta) with theta measured from the wind: integrates to 1 over [-pi, pi].
-double directional_spreading(double omega, double theta, double peak_omega, double spread, double swell);
+double directional_spreading(double omega, double theta, double peak_omega, double wind_speed, double spread,
+                             double swell);
 
-// The spectrum's peak angular frequency (JONSWAP's omega_p; Pierson-Moskowitz's for Phillips).
+// The spectrum's peak angular frequency: JONSWAP's omega_p; for Phillips, where its S(omega) =
+// F(k) dk/domega ~ omega^-5 exp(-(g/(U omega))^4) peaks: (4/5)^(1/4) g / U.
 double peak_omega_of(const SpectrumParams& p);
 
 // Energy density per unit k of the omnidirectional spectrum (m^2 per rad/m), for the model.

@@ -2,19 +2,35 @@
 
 #include "common/error.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace step06 {
 
-void FoamSimulation::resize(int n, int layers) {
-    if (n == n_ && layers == layers_ && texture_) return;
+FoamWindow foam_window(int level, int n, glm::dvec2 centre) {
+    FoamWindow w;
+    w.n = n;
+    w.texel_size = foam_extent(level) / n;
+    w.origin = glm::ivec2(glm::floor(centre / w.texel_size)) - n / 2;
+    return w;
+}
+
+glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_xz) {
+    const double length = glm::length(forward_xz);
+    if (!(length > 1e-6)) return eye_xz;  // looking straight down (or NaN): centred on the camera
+    return eye_xz + forward_xz / length * (0.3 * foam_extent(level));
+}
+
+void FoamSimulation::resize(int n) {
+    if (n == n_ && texture_) return;
     n_ = n;
-    layers_ = layers;
     texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(texture_.id(), 1 + int(std::log2(double(n))), GL_R32F, n, n, layers);
+    glTextureStorage3D(texture_.id(), 1 + int(std::log2(double(n))), GL_R32F, n, n, kFoamLevels);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the toroidal addressing
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
     fill(0);
     warm_start_ = true;
@@ -25,18 +41,29 @@ void FoamSimulation::fill(float value) {
     warm_start_ = false;
 }
 
-void FoamSimulation::update(const step05::GpuOcean& ocean, double dt, const FoamSettings& s,
-                            const std::array<float, 4>& weights) {
+void FoamSimulation::update(const step05::GpuOcean& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
+                            glm::dvec2 forward_xz, double dt, const FoamSettings& s) {
     ocean::ShaderProgram* p = programs_("foam.comp", {"step06_foam_sky/shaders/foam.comp"}, {});
     if (p == nullptr) throw ocean::Error("foam.comp does not build");
+    const bool first = std::exchange(warm_start_, false);
+    const bool placed = windows_[0].n == n_;  // false before the first update: nothing to move from
+    for (int level = 0; level < kFoamLevels; ++level) {
+        const FoamWindow now = foam_window(level, n_, foam_window_centre(level, eye_xz, forward_xz));
+        const std::string index = "[" + std::to_string(level) + "]";
+        p->set("u_origin" + index, now.origin);
+        p->set("u_previous_origin" + index, placed ? windows_[std::size_t(level)].origin : now.origin);
+        p->set("u_texel_size" + index, float(now.texel_size));
+        windows_[std::size_t(level)] = now;
+    }
+    p->set("u_patch_sizes", std::vector<float>(cascades.patch_sizes.begin(), cascades.patch_sizes.end()));
+    for (int c = 0; c < 4; ++c)
+        p->set("u_cascade_enabled[" + std::to_string(c) + "]", int(cascades.enabled[std::size_t(c)]));
     p->set("u_dt", float(dt));
     p->set("u_threshold", float(s.threshold));
     p->set("u_injection", float(s.injection));
     p->set("u_decay_rate", float(s.decay_rate));
-    p->set("u_cascade_weight", std::vector<float>(weights.begin(), weights.end()));
     p->set("u_n", n_);
-    p->set("u_layer_count", layers_);
-    p->set("u_warm_start", int(std::exchange(warm_start_, false)));
+    p->set("u_warm_start", int(first));
     p->set("u_displacement", 0);
     p->set("u_slopes", 1);
     glBindTextureUnit(0, ocean.displacement_texture());
@@ -44,16 +71,35 @@ void FoamSimulation::update(const step05::GpuOcean& ocean, double dt, const Foam
     glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32F);
     glUseProgram(p->id());
     const GLuint groups = GLuint((n_ + 7) / 8);
-    glDispatchCompute(groups, groups, GLuint(layers_));
+    glDispatchCompute(groups, groups, GLuint(kFoamLevels));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     glGenerateTextureMipmap(texture_.id());  // distant foam averages instead of sparkling
 }
 
-std::vector<float> FoamSimulation::read_layer(int layer) const {
-    std::vector<float> values(std::size_t(n_) * n_);
-    glGetTextureSubImage(texture_.id(), 0, 0, 0, layer, n_, n_, 1, GL_RED, GL_FLOAT,
-                         GLsizei(values.size() * sizeof(float)), values.data());
-    return values;
+void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {
+    std::vector<glm::vec2> centres;
+    std::vector<float> extents;
+    for (const FoamWindow& w : windows_) {
+        centres.emplace_back(w.centre());
+        extents.push_back(float(w.texel_size * w.n));
+    }
+    program.set("u_foam", unit);
+    program.set("u_foam_centre", centres);
+    program.set("u_foam_extent", extents);
+    glBindTextureUnit(GLuint(unit), texture_.id());
+}
+
+std::vector<float> FoamSimulation::read_level(int level) const {
+    std::vector<float> stored(std::size_t(n_) * n_), world(stored.size());
+    glGetTextureSubImage(texture_.id(), 0, 0, 0, level, n_, n_, 1, GL_RED, GL_FLOAT,
+                         GLsizei(stored.size() * sizeof(float)), stored.data());
+    const glm::ivec2 origin = windows_[std::size_t(level)].origin;
+    for (int j = 0; j < n_; ++j)
+        for (int i = 0; i < n_; ++i) {
+            const int ti = (origin.x + i) & (n_ - 1), tj = (origin.y + j) & (n_ - 1);  // toroidal texel
+            world[std::size_t(j) * n_ + i] = stored[std::size_t(tj) * n_ + ti];
+        }
+    return world;
 }
 
 }  // namespace step06

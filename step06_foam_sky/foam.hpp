@@ -6,10 +6,17 @@
 //     foam <- foam * exp(-decay_rate * dt) + injection * max(0, threshold - J) * dt,  clamped to [0, 1]
 // The decay factor is exact for any dt (exp(-r dt)^n = exp(-r t)), and the injection is a rate
 // (scaled by dt), so foam does not depend on the frame rate. foam.comp does the same on the GPU.
+//
+// J is the Jacobian of the rendered surface, the sum of the cascades: a fold made by two
+// cascades together foams, and view=foam agrees with view=jacobian. The cascades' tiles never
+// line up, so the sum has no tile of its own: the foam is kept in world space, in a clipmap of
+// windows that follow the camera (shaders/foam_map.glsl explains the addressing).
 #pragma once
 
 #include "common/gl.hpp"
 #include "step05_fft/gpu_ocean.hpp"
+
+#include <glm/vec2.hpp>
 
 #include <algorithm>
 #include <array>
@@ -23,8 +30,9 @@ struct FoamSettings {
     double decay_rate = 0.8;  // 1/s: foam fades as exp(-decay_rate t)
 };
 
-// A new foam texture starts where injection and decay would balance for the current J, so the
-// first frame already has foam on the crests (a fixed clock, dt = 0, would otherwise never grow any).
+// A new foam texel starts where injection and decay would balance for the current J, so the
+// first frame already has foam on the crests (a fixed clock, dt = 0, would otherwise never grow
+// any). The decay rate is floored at 0.1/s so that a texel without decay does not start at 1.
 inline double foam_steady_state(double jacobian, const FoamSettings& s) {
     return std::clamp(s.injection * std::max(0.0, s.threshold - jacobian) / std::max(s.decay_rate, 0.1), 0.0, 1.0);
 }
@@ -34,27 +42,59 @@ inline double foam_step(double foam, double jacobian, double dt, const FoamSetti
     return std::clamp(foam * std::exp(-s.decay_rate * dt) + added, 0.0, 1.0);
 }
 
+// The clipmap: level l is N x N texels over kFoamExtent0 * 4^l metres (64 m, 256 m, 1024 m).
+constexpr int kFoamLevels = 3;  // FOAM_LEVELS in the shaders
+constexpr double kFoamExtent0 = 64;
+constexpr double kFoamLevelRatio = 4;
+inline double foam_extent(int level) { return kFoamExtent0 * std::pow(kFoamLevelRatio, level); }
 
-// The GPU side: one r32f layer per cascade, updated by foam.comp from the cascade's Jacobian.
+// Where a level's window lies: its first cell (in texels of the level) and the texel size. Cell
+// c covers [c t, (c + 1) t) and its texel holds the value at the centre (c + 0.5) t.
+struct FoamWindow {
+    glm::ivec2 origin{0};
+    double texel_size = 1;
+    int n = 0;
+    glm::dvec2 centre() const { return (glm::dvec2(origin) + 0.5 * n) * texel_size; }
+    glm::dvec2 cell_centre(int i, int j) const { return (glm::dvec2(origin + glm::ivec2(i, j)) + 0.5) * texel_size; }
+};
+// The window of `level` around `centre` (x, z): it moves in whole texels.
+FoamWindow foam_window(int level, int n, glm::dvec2 centre);
+// Where a level's window is centred: ahead of the camera by 30 % of its side along the view's
+// heading, so that the coarse levels cover the sea the camera looks at rather than behind it.
+glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_xz);
+
+// What the foam pass needs of the cascades (the same the renderer binds).
+struct CascadeView {
+    std::array<float, 4> patch_sizes{};
+    std::array<bool, 4> enabled{true, true, true, true};
+};
+
+// The GPU side: one r32f layer per clipmap level, updated by foam.comp from the summed surface.
 class FoamSimulation {
 public:
     explicit FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {}
 
-    // A new texture (all zero) when the resolution or cascade count changes; the next update
-    // then starts from the steady state (foam_steady_state).
-    void resize(int n, int layers);
+    // A new texture (all zero) when the resolution changes; the next update then starts from the
+    // steady state (foam_steady_state).
+    void resize(int n);
     void fill(float value);  // every texel (tests)
-    // One step of dt seconds. `weights`: each cascade's share of the injection.
-    void update(const step05::GpuOcean& ocean, double dt, const FoamSettings& settings,
-                const std::array<float, 4>& weights);
+    // One step of dt seconds around the camera (eye and view direction projected on x, z).
+    void update(const step05::GpuOcean& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
+                glm::dvec2 forward_xz, double dt, const FoamSettings& settings);
+    // The windows and the texture, for the renderer (foam_map.glsl's uniforms) and --export.
+    void bind(const ocean::ShaderProgram& program, int unit) const;
+    const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
     GLuint texture() const { return texture_.id(); }
-    std::vector<float> read_layer(int layer) const;
+    int resolution() const { return n_; }
+    // Level `level` in the world's order: row j is z cell origin.z + j, column i x cell origin.x + i.
+    std::vector<float> read_level(int level) const;
 
 private:
     ocean::ProgramFactory programs_;
     ocean::Texture texture_;
-    int n_ = 0, layers_ = 0;
+    int n_ = 0;
     bool warm_start_ = true;
+    std::array<FoamWindow, kFoamLevels> windows_{};
 };
 
 }  // namespace step06

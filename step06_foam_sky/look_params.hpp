@@ -57,14 +57,20 @@ public:
     }
     glm::vec3 sun_radiance() const { return sun_intensity * step03::srgb_to_linear(sun_colour); }
 
-    SkySettings sky(double time) const {
+    // The clouds drift with the wind that raises the sea (wind_direction_deg: where it blows to).
+    SkySettings sky(double time, double wind_direction_deg) const {
         SkySettings s;
         s.to_sun = to_sun();
         s.sun_radiance = s.sun_disc_gain * sun_radiance();  // the disc outshines the light it casts
         s.zenith = step03::srgb_to_linear(zenith_colour);
         s.horizon = step03::srgb_to_linear(horizon_colour);
         s.cloud_cover = cloud_cover;
-        s.cloud_offset = glm::vec2(float(std::fmod(time * cloud_speed, 1.0e5)), 0.0f);
+        // sky.glsl samples the cloud pattern at (position + offset): an offset of -d t moves the
+        // pattern along +d. Wrapped at 100 km (the noise is not periodic, but a jump once per
+        // hours of drift goes unseen).
+        const double wind = wind_direction_deg * 3.14159265358979323846 / 180.0;
+        const double drift = std::fmod(time * cloud_speed, 1.0e5);
+        s.cloud_offset = -glm::vec2(float(drift * std::cos(wind)), float(drift * std::sin(wind)));
         return s;
     }
 

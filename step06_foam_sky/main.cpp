@@ -17,6 +17,7 @@
 #include "step06_foam_sky/patch_grid.hpp"
 #include "step06_foam_sky/post.hpp"
 #include "step06_foam_sky/sky.hpp"
+#include "step06_foam_sky/surface_export.hpp"
 #include "step06_foam_sky/tessellation.hpp"
 
 #include <imgui.h>
@@ -28,9 +29,6 @@
 #include <memory>
 
 namespace {
-
-// Foam from each cascade: whitecaps break on the long waves; the short cascades' folds are ripples.
-constexpr std::array<float, step06::kCascades> kFoamWeights{1.0f, 1.0f, 0.3f, 0.05f};
 
 class FoamSky : public ocean::App {
 public:
@@ -87,12 +85,14 @@ private:
                 pointers.push_back(spectra_.back().get());
             }
             gpu_->set_spectra(pointers);
-            foam_->resize(wanted.resolution, step06::kCascades);
-            double variance = 0;
-            for (const auto& p : step06::cascade_spectra(wanted)) variance += step05::resolved_variance(p);
-            // A bound on how far any point moves: five standard deviations, more with choppiness.
-            max_displacement_ = float(5 * std::sqrt(variance) * (1 + ocean_params_.choppiness())) + 1.0f;
+            foam_->resize(wanted.resolution);
+            height_variance_ = 0;
+            for (const auto& p : step06::cascade_spectra(wanted)) height_variance_ += step05::resolved_variance(p);
         }
+        // A bound on how far any point moves, for the frustum culling: five standard deviations of
+        // the height, and as much again times the choppiness sideways (|D~| = |h~| mode by mode).
+        // Every frame: the choppiness may change without the spectrum changing.
+        max_displacement_ = float(5 * std::sqrt(height_variance_) * (1 + ocean_params_.choppiness())) + 1.0f;
         if (look_.sky_image != sky_image_loaded_) {
             sky_image_loaded_ = look_.sky_image;
             if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
@@ -114,21 +114,31 @@ private:
         settings.threshold = foam_threshold_;
         settings.injection = foam_injection_;
         settings.decay_rate = foam_decay_;
-        foam_->update(*gpu_, dt_, settings, kFoamWeights);
+        const glm::vec3 eye = camera().eye(), forward = camera().forward();
+        foam_->update(*gpu_, cascade_view(), {eye.x, eye.z}, {forward.x, forward.z}, dt_, settings);
+    }
+
+    step06::CascadeView cascade_view() const {
+        step06::CascadeView view;
+        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_.patch_size);
+        for (int c = 0; c < step06::kCascades; ++c) {
+            view.patch_sizes[std::size_t(c)] = float(sizes[std::size_t(c)]);
+            view.enabled[std::size_t(c)] = cascade_on_[c];
+        }
+        return view;
     }
 
     void bind_cascades(const ocean::ShaderProgram& p) {
-        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_.patch_size);
-        p.set("u_patch_sizes", std::vector<float>(sizes.begin(), sizes.end()));
+        const step06::CascadeView view = cascade_view();
+        p.set("u_patch_sizes", std::vector<float>(view.patch_sizes.begin(), view.patch_sizes.end()));
         for (int c = 0; c < step06::kCascades; ++c)
-            p.set("u_cascade_enabled[" + std::to_string(c) + "]", int(cascade_on_[c]));
+            p.set("u_cascade_enabled[" + std::to_string(c) + "]", int(view.enabled[std::size_t(c)]));
         p.set("u_displacement", 0);
         p.set("u_slopes", 1);
-        p.set("u_foam", 2);
         p.set("u_sky", 3);
         glBindTextureUnit(0, gpu_->displacement_texture());
         glBindTextureUnit(1, gpu_->slopes_texture());
-        glBindTextureUnit(2, foam_->texture());
+        foam_->bind(p, 2);
         glBindTextureUnit(3, sky_->cubemap());
     }
 
@@ -137,6 +147,13 @@ private:
         {
             auto* sky = program_variant("sky", {"fullscreen.vert", "sky.frag"}, {});
             if (sky != nullptr) {
+                // The sun's disc is drawn here, not kept in the cubemap: the water's specular term
+                // is the sun's reflection, and a disc in the reflected sky would count it twice.
+                const step06::SkySettings settings = look_.sky(time(), ocean_params_.spectrum().wind_direction);
+                sky->set("u_to_sun", settings.to_sun);
+                sky->set("u_sun_radiance", settings.sun_radiance);
+                sky->set("u_sun_size", settings.sun_size);
+                sky->set("u_draw_sun_disc", int(!sky_->uses_image()));
                 sky->set("u_inverse_view_projection", glm::inverse(view_projection));
                 sky->set("u_sky", 3);
                 glBindTextureUnit(3, sky_->cubemap());
@@ -191,7 +208,7 @@ private:
             simulate();
             update_foam();
             ocean::GpuScope timed(timers(), "sky");
-            sky_->render(look_.sky(time()));
+            sky_->render(look_.sky(time(), ocean_params_.spectrum().wind_direction));
         }
         if (view_ == 5) {
             bind_target();
@@ -246,14 +263,10 @@ private:
 
     bool supports_export() const override { return true; }
     void export_results(const std::string& dir) override {
-        // Cascade 0's maps (the longest waves), with its tile and band; export.txt says so.
-        const auto cascade = step06::cascade_spectra(shared_spectrum_)[0];
-        step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
-                            cascade.patch_size, time(), ocean_params_.choppiness(), params(),
-                            {{"export.cascade", "0"},
-                             {"export.low_cutoff", ocean::format_number(cascade.low_cutoff)},
-                             {"export.high_cutoff", ocean::format_number(cascade.high_cutoff)},
-                             {"export.seed", std::to_string(cascade.seed)}});
+        // The rendered surface (all cascades) and the foam, on one grid around the camera.
+        ocean::ProgramFactory programs = program_factory();
+        step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view(), time(), ocean_params_.choppiness(),
+                               params());
     }
 
     // With and without one effect (split_effect).
@@ -278,6 +291,7 @@ private:
     std::string sky_image_loaded_;
     float foam_threshold_ = 0.8f, foam_injection_ = 8, foam_decay_ = 0.8f;
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
+    double height_variance_ = 0;  // m^2, of the summed cascades
     int split_effect_ = 0;
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};

@@ -1,6 +1,6 @@
 // Chapter 1's sum of sines, shared by the plot and the GPU test. Each wave arrives as
 // (w, a, phase, 0): angular wavenumber w = 2 pi / wavelength, amplitude a, and the phase
-// t * phi already reduced modulo 2 pi on the CPU in double precision.
+// -t * phi already reduced modulo 2 pi on the CPU in double precision (crests travel towards +x).
 const int MAX_WAVES = 8;
 
 uniform int u_wave_count;

@@ -1,5 +1,6 @@
 // Chapter 1.2.2's sum of directional sines (waves.hpp is the CPU reference). Each wave arrives
-// as (d.x, d.z, w, a) plus its phase t * phi, reduced modulo 2 pi on the CPU in double precision.
+// as (d.x, d.z, w, a) plus its phase -t * phi, reduced modulo 2 pi on the CPU in double precision: crests travel
+// along +d.
 const int MAX_WAVES = 16;
 
 uniform int u_wave_count;

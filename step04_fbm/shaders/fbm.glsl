@@ -9,7 +9,7 @@ const int MAX_WAVES_PER_CASCADE = 64;
 
 struct FbmWave {
     vec4 direction_wavenumber_amplitude;  // (d.x, d.z, w, a)
-    vec4 phase;                           // (t phi mod 2 pi, 0, 0, 0), reduced on the CPU in double
+    vec4 phase;                           // (-t phi mod 2 pi, 0, 0, 0), reduced on the CPU in double
 };
 
 // Cascade c's waves are u_fbm_waves[c * MAX_WAVES_PER_CASCADE + i]. A uniform block, because
@@ -28,7 +28,8 @@ vec3 wave_shape(float theta) {
     return vec3(s, c, -s);
 #else
     float e = exp(s - 1.0);
-    return vec3(e, e * c, e * (c * c - s));
+    const float MEAN = 0.46575961;  // e^-1 I0(1): subtracted so the sea's mean level is y = 0
+    return vec3(e - MEAN, e * c, e * (c * c - s));
 #endif
 }
 

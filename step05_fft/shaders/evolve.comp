@@ -1,6 +1,6 @@
 #version 450 core
 // Chapter 4.3, once a frame: each mode turns at its own angular frequency,
-//     h~(k, t) = h0(k) e^{i omega t} + conj(h0(-k)) e^{-i omega t},
+//     h~(k, t) = h0(k) e^{-i omega t} + conj(h0(-k)) e^{i omega t}   (crests travel along +k),
 // and the derivatives' spectra follow from it; they are written packed two real fields per
 // complex one (see ocean_maps.hpp). omega t is formed and reduced modulo 2 pi in double precision
 // before it becomes a float, so the sea stays correct after days of simulated time.
@@ -24,7 +24,7 @@ void main() {
     int mirror = cascade * n * n + ((n - j) % n) * n + (n - i) % n;  // -k
 
     float phase = float(mod(omega[here] * u_time, TWO_PI));
-    vec2 rotation = vec2(cos(phase), sin(phase));
+    vec2 rotation = vec2(cos(phase), -sin(phase));  // e^{-i omega t}
     vec2 h0_minus = h0[mirror];
     vec2 h = complex_multiply(h0[here], rotation) +
              complex_multiply(vec2(h0_minus.x, -h0_minus.y), vec2(rotation.x, -rotation.y));
@@ -35,11 +35,11 @@ void main() {
     vec2 pairs[4] = vec2[4](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
     if (length_k > 0.0) {
         vec2 i_h = vec2(-h.y, h.x);            // i h~
-        vec2 dx = -i_h * (k.x / length_k);     // -i kx/|k| h~
-        vec2 dz = -i_h * (k.y / length_k);
+        vec2 dx = i_h * (k.x / length_k);      // +i kx/|k| h~: points crowd to the crests
+        vec2 dz = i_h * (k.y / length_k);
         vec2 sx = i_h * k.x, sz = i_h * k.y;   // i k h~
-        vec2 dxx = h * (k.x * k.x / length_k), dzz = h * (k.y * k.y / length_k);
-        vec2 dxz = h * (k.x * k.y / length_k);
+        vec2 dxx = -h * (k.x * k.x / length_k), dzz = -h * (k.y * k.y / length_k);  // i kx (i kx/|k| h~)
+        vec2 dxz = -h * (k.x * k.y / length_k);
         // a + i b for each pair (real field a, real field b)
         pairs[0] = h + vec2(-dx.y, dx.x);
         pairs[1] = dz + vec2(-sx.y, sx.x);

@@ -1,7 +1,10 @@
 #version 450 core
-// Bloom, down the chain: each level is half the previous, averaged over 4 bilinear taps (16
-// texels). The first pass keeps only what is brighter than the threshold (a soft knee), so only
-// the sun, its glint and bright foam bloom.
+// Bloom, down the chain: each level is half the previous, filtered by the 13-tap downsample of
+// Jimenez (Call of Duty: Advanced Warfare, SIGGRAPH 2014): 13 bilinear fetches at 0, +-1 and
+// +-2 source texels, i.e. five overlapping 4x4 boxes (the centre one weighted 1/2, the four
+// corner ones 1/8 each), 36 texels in all. A plain 2x2 box would alias: a thin bright line
+// flickers as it crosses texel boundaries. The first pass keeps only what is brighter than the
+// threshold (a soft knee), so only the sun, its glint and bright foam bloom.
 in vec2 v_uv;
 out vec4 out_colour;
 
@@ -10,10 +13,16 @@ uniform vec2 u_source_texel;  // 1 / source size
 uniform bool u_first;
 uniform float u_threshold;
 
+vec3 tap(float x, float y) { return texture(u_source, v_uv + vec2(x, y) * u_source_texel).rgb; }
+
 void main() {
-    vec2 o = 0.5 * u_source_texel;
-    vec3 c = 0.25 * (texture(u_source, v_uv + vec2(-o.x, -o.y)).rgb + texture(u_source, v_uv + vec2(o.x, -o.y)).rgb +
-                     texture(u_source, v_uv + vec2(-o.x, o.y)).rgb + texture(u_source, v_uv + vec2(o.x, o.y)).rgb);
+    vec3 centre = tap(0.0, 0.0);
+    vec3 inner = tap(-1.0, -1.0) + tap(1.0, -1.0) + tap(-1.0, 1.0) + tap(1.0, 1.0);
+    vec3 edges = tap(0.0, -2.0) + tap(-2.0, 0.0) + tap(2.0, 0.0) + tap(0.0, 2.0);
+    vec3 corners = tap(-2.0, -2.0) + tap(2.0, -2.0) + tap(-2.0, 2.0) + tap(2.0, 2.0);
+    // Weights: centre box 0.5 over its 4 inner taps; each corner box 0.125 over its 4 taps, which
+    // share the centre, edge and inner taps: 0.125 + 4 * 0.03125 + 4 * 0.0625 + 4 * 0.125 = 1.
+    vec3 c = 0.125 * centre + 0.125 * inner + 0.0625 * edges + 0.03125 * corners;
     if (u_first) {
         float brightness = max(c.r, max(c.g, c.b));
         float knee = 0.5 * u_threshold;

@@ -5,13 +5,32 @@
 const int CASCADES = 4;
 uniform float u_patch_sizes[CASCADES];  // metres
 uniform bool u_cascade_enabled[CASCADES];
-uniform sampler2DArray u_foam;          // one layer per cascade
+
+// Texel i of a cascade holds the sea at x_i = i L / N (as the CPU reference and --export have it),
+// and GL puts texel i's centre at uv = (i + 0.5) / N: the half texel makes the two agree.
+vec3 cascade_uv(vec2 p, int c) {
+    return vec3(p / u_patch_sizes[c] + 0.5 / float(textureSize(u_displacement, 0).x), float(c));
+}
 
 // (l Dx, h, l Dz, l dDx/dz) summed over the cascades, at mip level `lod` (any stage).
 vec4 total_displacement(vec2 p, float lod) {
     vec4 sum = vec4(0.0);
     for (int c = 0; c < CASCADES; ++c)
-        if (u_cascade_enabled[c]) sum += textureLod(u_displacement, vec3(p / u_patch_sizes[c], float(c)), lod);
+        if (u_cascade_enabled[c]) sum += textureLod(u_displacement, cascade_uv(p, c), lod);
     return sum;
 }
 
+// The summed surface at p as seen by a sample `footprint` metres wide (compute shaders: foam,
+// export): each cascade at the mip level that averages that footprint, and none whose tile is
+// under two footprints (its mipmapped mean is zero), as the fragment shader does.
+void surface_at(vec2 p, float footprint, out vec4 displacement, out vec4 slopes) {
+    displacement = vec4(0.0);
+    slopes = vec4(0.0);
+    float n = float(textureSize(u_displacement, 0).x);
+    for (int c = 0; c < CASCADES; ++c) {
+        if (!u_cascade_enabled[c] || footprint >= 0.5 * u_patch_sizes[c]) continue;
+        float lod = max(0.0, log2(footprint * n / u_patch_sizes[c]));
+        displacement += textureLod(u_displacement, cascade_uv(p, c), lod);
+        slopes += textureLod(u_slopes, cascade_uv(p, c), lod);
+    }
+}

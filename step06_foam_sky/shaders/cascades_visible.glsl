@@ -1,6 +1,7 @@
 // For fragment shaders (they use screen-space derivatives): the cascades summed over only the
 // ones a pixel can resolve.
 #include "cascades.glsl"
+#include "foam_map.glsl"
 
 // Fragment shaders only: which cascades this pixel can see. Where one pixel covers more than half
 // a cascade's tile, the cascade's mipmaps have averaged it to its mean, which is zero (a periodic
@@ -16,7 +17,7 @@ void find_visible_cascades(vec2 p) {
 vec4 visible_displacement(vec2 p) {
     vec4 sum = vec4(0.0);
     for (int c = 0; c < CASCADES; ++c)
-        if (cascade_seen[c]) sum += texture(u_displacement, vec3(p / u_patch_sizes[c], float(c)));
+        if (cascade_seen[c]) sum += texture(u_displacement, cascade_uv(p, c));
     return sum;
 }
 
@@ -24,14 +25,11 @@ vec4 visible_displacement(vec2 p) {
 vec4 total_slopes(vec2 p) {
     vec4 sum = vec4(0.0);
     for (int c = 0; c < CASCADES; ++c)
-        if (cascade_seen[c]) sum += texture(u_slopes, vec3(p / u_patch_sizes[c], float(c)));
+        if (cascade_seen[c]) sum += texture(u_slopes, cascade_uv(p, c));
     return sum;
 }
 
 float total_foam(vec2 p) {
-    float sum = 0.0;
-    for (int c = 0; c < CASCADES; ++c)
-        if (cascade_seen[c]) sum += texture(u_foam, vec3(p / u_patch_sizes[c], float(c))).r;
     // Foam reads as a white patch with an edge, not as a grey haze: sharpen the coverage.
-    return smoothstep(0.05, 0.6, sum);
+    return smoothstep(0.05, 0.6, foam_at(p));
 }

@@ -1,31 +1,44 @@
 #version 450 core
-// Chapter 5.3 (foam.hpp is the CPU reference): in each cascade's texel, foam decays by
-// exp(-rate dt) and grows where the Jacobian falls below the threshold, at a rate times dt.
+// Chapter 5.3 (foam.hpp is the CPU reference): at each texel of each foam level, the Jacobian of
+// the summed surface (all cascades, as rendered) at the texel's world position; foam decays by
+// exp(-rate dt) and grows where J falls below the threshold, at a rate times dt.
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "step05_fft/shaders/ocean_maps.glsl"
+#include "cascades.glsl"
 
+const int FOAM_LEVELS = 3;
 layout(r32f, binding = 0) uniform image2DArray u_foam_image;
 
+uniform int u_n;                                // texels per side of a level (a power of two)
+uniform ivec2 u_origin[FOAM_LEVELS];            // the window's first cell, in texels of its level
+uniform ivec2 u_previous_origin[FOAM_LEVELS];   // the same, last frame
+uniform float u_texel_size[FOAM_LEVELS];        // metres
 uniform float u_dt;
 uniform float u_threshold;
 uniform float u_injection;
-uniform float u_cascade_weight[4];  // the short-wave cascades fold in ripples, not whitecaps: less foam
 uniform float u_decay_rate;
-uniform int u_n;
-uniform int u_layer_count;
 uniform bool u_warm_start;  // a new foam texture: start from the steady state of this J
 
 void main() {
     ivec3 id = ivec3(gl_GlobalInvocationID);
-    if (id.x >= u_n || id.y >= u_n || id.z >= u_layer_count) return;
-    vec4 displacement = texelFetch(u_displacement, id, 0);
-    vec4 slopes = texelFetch(u_slopes, id, 0);
+    if (id.x >= u_n || id.y >= u_n || id.z >= FOAM_LEVELS) return;
+    int level = id.z;
+    // The world cell this texel holds: the one in [origin, origin + n) congruent to it mod n.
+    ivec2 origin = u_origin[level];
+    ivec2 cell = origin + ((id.xy - origin) & (u_n - 1));
+    vec2 p = (vec2(cell) + 0.5) * u_texel_size[level];
+
+    vec4 displacement, slopes;
+    surface_at(p, u_texel_size[level], displacement, slopes);
     float j = jacobian(displacement, slopes);
+
+    // A cell that has just entered the window holds another cell's foam: start it afresh.
+    ivec2 previous = u_previous_origin[level];
+    bool entered = any(lessThan(cell, previous)) || any(greaterThanEqual(cell, previous + u_n));
     float foam = imageLoad(u_foam_image, id).r;
-    float injection = u_injection * u_cascade_weight[id.z];
-    if (u_warm_start)  // where injection and decay balance if J stayed as it is
-        foam = injection * max(0.0, u_threshold - j) / max(u_decay_rate, 0.1);
+    float injection = u_injection * max(0.0, u_threshold - j);
+    if (u_warm_start || entered)  // where injection and decay balance if J stayed as it is
+        foam = injection / max(u_decay_rate, 0.1);
     else
-        foam = foam * exp(-u_decay_rate * u_dt) + injection * max(0.0, u_threshold - j) * u_dt;
+        foam = foam * exp(-u_decay_rate * u_dt) + injection * u_dt;
     imageStore(u_foam_image, id, vec4(clamp(foam, 0.0, 1.0)));
 }

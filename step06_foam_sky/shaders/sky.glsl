@@ -1,6 +1,8 @@
 // Chapter 5.5's sky, as a function of direction: a gradient from horizon to zenith with a
-// scattering glow around the sun, a sun disc, and clouds that drift with time. sky_cube.comp
-// renders it into a cubemap once a frame; everything else samples the cubemap.
+// scattering glow around the sun, and clouds that drift with the wind. sky_cube.comp renders it
+// into a cubemap once a frame; everything else samples the cubemap. The sun's disc is not in the
+// cubemap: the water reflects the sun through its specular term, and a disc in the reflected sky
+// would count it twice. sky.frag adds the disc (sun_disc) to the background only.
 uniform vec3 u_to_sun;          // unit
 uniform vec3 u_sun_radiance;    // linear, the disc's brightness
 uniform vec3 u_zenith_colour;   // linear
@@ -47,7 +49,10 @@ vec3 sky_radiance(vec3 direction) {
         vec3 lit = mix(u_horizon_colour * 1.6, vec3(1.0), 0.5) * (0.6 + 0.4 * max(cos_sun, 0.0));
         colour = mix(colour, lit, density * 0.85);
     }
-    // The sun disc, with a soft edge one tenth of its radius wide.
-    float disc = smoothstep(cos(u_sun_size * 1.1), cos(u_sun_size), cos_sun);
-    return colour + u_sun_radiance * disc;
+    return colour;
+}
+
+// The sun disc, with a soft edge one tenth of its radius wide.
+vec3 sun_disc(vec3 direction) {
+    return u_sun_radiance * smoothstep(cos(u_sun_size * 1.1), cos(u_sun_size), dot(direction, u_to_sun));
 }

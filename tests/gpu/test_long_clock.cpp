@@ -18,7 +18,8 @@ struct LongClock : ocean_test::GlTest {
 };
 
 TEST_F(LongClock, OneFftModeAfterTenDays) {
-    // h0 has one mode, k = (3, 0) * 2 pi / L; then h(x, t) = 2 |h0| cos(k x + omega t + arg h0).
+    // h0 has one mode, k = (3, 0) * 2 pi / L; then h(x, t) = 2 |h0| cos(k x - omega t + arg h0):
+    // crests travel along +k (the seed's sign would give k x + omega t, crests along -k).
     step05::SpectrumParams p;
     p.resolution = 64;
     p.wind_speed = 0;  // all zero, then one mode by hand
@@ -42,7 +43,7 @@ TEST_F(LongClock, OneFftModeAfterTenDays) {
     double worst_repeat = 0, worst_exact = 0;
     for (int i = 0; i < 64; ++i) {
         const double x = i * p.patch_size / 64;
-        const double exact = 2 * std::abs(amplitude) * std::cos(k * x + std::fmod(omega * t0, 2 * step05::kPi) + std::arg(amplitude));
+        const double exact = 2 * std::abs(amplitude) * std::cos(k * x - std::fmod(omega * t0, 2 * step05::kPi) + std::arg(amplitude));
         ASSERT_TRUE(std::isfinite(later[std::size_t(i)]));
         worst_repeat = std::max(worst_repeat, std::abs(later[std::size_t(i)] - repeated[std::size_t(i)]));
         worst_exact = std::max(worst_exact, std::abs(later[std::size_t(i)] - exact));

@@ -1,7 +1,9 @@
-// step06 on the GPU: foam decay at two frame rates, tessellation (primitive counts against the
-// CPU level, culling behind the camera), and the sky cubemap (the sun's texel, an image sky,
-// missing and corrupt files).
+// step06 on the GPU: foam decay at two frame rates, foam made by the summed surface (against
+// the CPU reference) and kept in world space when the camera moves, tessellation (primitive
+// counts against the CPU level, culling behind the camera), and the sky cubemap (the sun's
+// texel, an image sky, missing and corrupt files).
 #include "common/image.hpp"
+#include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/patch_grid.hpp"
 #include "step06_foam_sky/sky.hpp"
@@ -12,6 +14,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -40,21 +43,145 @@ struct Step06Gpu : ocean_test::GlTest {
     }
 };
 
+step06::CascadeView all_cascades(double largest = 500) {
+    step06::CascadeView view;
+    const auto sizes = step06::cascade_patch_sizes(largest);
+    for (int c = 0; c < 4; ++c) view.patch_sizes[std::size_t(c)] = float(sizes[std::size_t(c)]);
+    return view;
+}
+
 TEST_F(Step06Gpu, FoamImpulseDecaysAsExpOfRateTimesTimeAtAnyFrameRate) {
     const auto ocean = calm_ocean();
     step06::FoamSettings settings;
     settings.decay_rate = 1.3;
     for (double dt : {1.0 / 30, 1.0 / 120}) {
         step06::FoamSimulation foam(factory());
-        foam.resize(64, 4);
+        foam.resize(64);
         foam.fill(1.0f);
-        for (int i = 0; i < int(std::lround(1 / dt)); ++i) foam.update(*ocean, dt, settings, {1, 1, 1, 1});
-        const auto values = foam.read_layer(2);
+        for (int i = 0; i < int(std::lround(1 / dt)); ++i)
+            foam.update(*ocean, all_cascades(), {0, 0}, {1, 0}, dt, settings);
+        const auto values = foam.read_level(2);
         const double expected = std::exp(-1.3);
         for (float v : values) ASSERT_NEAR(v / expected, 1.0, 0.01) << "dt = " << dt;
         std::printf("foam after 1 s at dt = 1/%d: %.6f, exp(-1.3) = %.6f\n", int(std::lround(1 / dt)), values[0],
                     expected);
     }
+}
+
+// A windy sea of 4 cascades at N = 64, simulated at t, and the CPU reference maps of each.
+struct WindySea {
+    std::vector<step05::InitialSpectrum> spectra;
+    std::vector<step05::OceanMaps> cpu;
+    std::unique_ptr<step05::GpuOcean> gpu;
+};
+
+WindySea windy_sea(ocean::ProgramFactory factory, double time, float choppiness) {
+    step05::SpectrumParams shared;
+    shared.resolution = 64;
+    shared.patch_size = 500;
+    shared.wind_speed = 14;
+    WindySea sea;
+    for (const auto& p : step06::cascade_spectra(shared)) sea.spectra.push_back(step05::initial_spectrum(p));
+    std::vector<const step05::InitialSpectrum*> pointers;
+    for (const auto& s : sea.spectra) {
+        pointers.push_back(&s);
+        sea.cpu.push_back(step05::simulate_cpu(s, time));
+    }
+    sea.gpu = std::make_unique<step05::GpuOcean>(std::move(factory));
+    sea.gpu->set_spectra(pointers);
+    ocean::GpuTimers timers;
+    sea.gpu->simulate(time, step05::Backend::GpuFft, choppiness, timers);
+    return sea;
+}
+
+// A field of the CPU maps at world position (x, z), bilinear between the samples x_i = i L / N
+// (the convention the shaders' half-texel offset keeps), wrapping with the tile.
+double bilinear(const step05::OceanMaps& maps, step05::Field field, double x, double z) {
+    const int n = maps.n;
+    const double u = x / maps.patch_size * n, v = z / maps.patch_size * n;
+    const double fu = std::floor(u), fv = std::floor(v);
+    const double a = u - fu, b = v - fv;
+    auto at = [&](double i, double j) {
+        const int wi = ((int(i) % n) + n) % n, wj = ((int(j) % n) + n) % n;
+        return maps[field][std::size_t(wj) * n + std::size_t(wi)];
+    };
+    return (1 - a) * (1 - b) * at(fu, fv) + a * (1 - b) * at(fu + 1, fv) + (1 - a) * b * at(fu, fv + 1) +
+           a * b * at(fu + 1, fv + 1);
+}
+
+TEST_F(Step06Gpu, FoamComesFromTheJacobianOfTheSummedCascades) {
+    // Cascades 0 and 1 only: at level 0 (64 m over 64 texels, 1 m each) both are magnified
+    // (their texels are 7.8 m and 2.1 m), so the GPU reads mip level 0 and the CPU reference is a
+    // plain bilinear interpolation of the FFTW maps. The first update starts every texel at the
+    // steady state of its J, foam_steady_state(J), which is then held to the CPU in double.
+    const float choppiness = 1.6f;
+    const WindySea sea = windy_sea(factory(), 7.0, choppiness);
+    step06::CascadeView view = all_cascades();
+    view.enabled = {true, true, false, false};
+    step06::FoamSimulation foam(factory());
+    foam.resize(64);
+    step06::FoamSettings settings;
+    settings.injection = 3;
+    const glm::dvec2 eye(37.0, -12.0);
+    foam.update(*sea.gpu, view, eye, {0, 1}, 0.0, settings);
+    const auto values = foam.read_level(0);
+    const step06::FoamWindow& window = foam.window(0);
+    double worst = 0, foamy = 0;
+    int folded = 0;
+    for (int j = 0; j < 64; ++j)
+        for (int i = 0; i < 64; ++i) {
+            const glm::dvec2 p = window.cell_centre(i, j);
+            double xx = 1, zz = 1, xz = 0;
+            for (int c = 0; c < 2; ++c) {
+                xx += choppiness * bilinear(sea.cpu[std::size_t(c)], step05::DDxDx, p.x, p.y);
+                zz += choppiness * bilinear(sea.cpu[std::size_t(c)], step05::DDzDz, p.x, p.y);
+                xz += choppiness * bilinear(sea.cpu[std::size_t(c)], step05::DDxDz, p.x, p.y);
+            }
+            const double jacobian = xx * zz - xz * xz;
+            const double expected = step06::foam_steady_state(jacobian, settings);
+            worst = std::max(worst, std::abs(values[std::size_t(j) * 64 + i] - expected));
+            foamy = std::max(foamy, expected);
+            folded += jacobian < settings.threshold;
+        }
+    std::printf("foam from the summed Jacobian: %d of 4096 texels below the threshold, worst |GPU - CPU| = %.2e\n",
+                folded, worst);
+    ASSERT_GT(folded, 20) << "the test needs some foam to compare";
+    // 2e-3 of foam = 8e-4 of J: llvmpipe's bilinear weights have 8 fractional bits.
+    EXPECT_LT(worst, 2e-3);
+}
+
+TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {
+    // The clipmap keeps each cell's foam where it is in the world: after the camera moves by
+    // whole texels (and dt = 0, so nothing grows or decays), a cell seen before holds the same
+    // foam, and a cell that entered the window starts at its steady state.
+    const WindySea sea = windy_sea(factory(), 3.0, 1.6f);
+    step06::FoamSimulation foam(factory());
+    foam.resize(64);
+    step06::FoamSettings settings;
+    settings.injection = 3;
+    foam.update(*sea.gpu, all_cascades(), {0, 0}, {1, 0}, 0.0, settings);  // level 0: 1 m texels
+    const auto before = foam.read_level(0);
+    const glm::ivec2 origin_before = foam.window(0).origin;
+    // Change the sea under the foam (another time), so that a kept cell and a restarted one differ.
+    ocean::GpuTimers timers;
+    sea.gpu->simulate(5.5, step05::Backend::GpuFft, 1.6f, timers);
+    foam.update(*sea.gpu, all_cascades(), {13.0, -7.0}, {1, 0}, 0.0, settings);
+    const auto after = foam.read_level(0);
+    const glm::ivec2 shift = foam.window(0).origin - origin_before;
+    ASSERT_EQ(shift, glm::ivec2(13, -7));
+    int kept = 0, changed_new = 0;
+    for (int j = 0; j < 64; ++j)
+        for (int i = 0; i < 64; ++i) {
+            const int bi = i + shift.x, bj = j + shift.y;  // the same world cell in the old window
+            if (bi >= 0 && bi < 64 && bj >= 0 && bj < 64) {
+                ASSERT_EQ(after[std::size_t(j) * 64 + i], before[std::size_t(bj) * 64 + bi]) << i << "," << j;
+                ++kept;
+            } else {
+                changed_new += after[std::size_t(j) * 64 + i] != 0.0f;
+            }
+        }
+    EXPECT_EQ(kept, (64 - 13) * (64 - 7));
+    EXPECT_GT(changed_new, 0) << "entered cells start from the new sea's steady state";
 }
 
 struct Tessellated : Step06Gpu {
@@ -143,16 +270,26 @@ float degrees_between(glm::vec3 a, glm::vec3 b) {
     return glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0f, 1.0f)));
 }
 
-TEST_F(Step06Gpu, BrightestSkyTexelIsTheSun) {
+TEST_F(Step06Gpu, BrightestSkyTexelIsTheSunsGlowButNotItsDisc) {
+    // The cubemap holds the glow around the sun (its brightest texels) but not the disc: the water
+    // reflects the sun through the specular term, and a disc in the reflected sky would add it a
+    // second time. Sunlight 6, the disc 40 times brighter, as the step's defaults.
     step06::Sky sky(factory(), 64);
     for (glm::vec3 sun : {glm::vec3(0.3f, 0.4f, -0.8f), glm::vec3(-0.9f, 0.15f, 0.2f), glm::vec3(0.1f, 0.95f, 0.2f)}) {
         step06::SkySettings s;
         s.to_sun = glm::normalize(sun);
+        s.sun_radiance = glm::vec3(40.0f * 6.0f);
+        s.cloud_cover = 0;
         sky.render(s);
         const float error = degrees_between(brightest_direction(sky), s.to_sun);
         EXPECT_LT(error, 2.0f) << "one texel of 64 is ~1.4 degrees";
         std::printf("sun (%.2f, %.2f, %.2f): brightest texel %.2f degrees away\n", s.to_sun.x, s.to_sun.y, s.to_sun.z,
                     double(error));
+        // The disc alone would be 240; the glow at the sun is 0.68 of the sunlight (6) plus the sky.
+        std::vector<float> texels(64 * 64 * 6 * 4);
+        glGetTextureImage(sky.cubemap(), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+        const float brightest = *std::max_element(texels.begin(), texels.end());
+        EXPECT_LT(brightest, 10.0f) << "the sun's disc is in the cubemap: the water would reflect it twice";
     }
 }
 

@@ -19,9 +19,62 @@ TEST(Step04Shape, ExpSineDerivativesMatchCentralDifferences) {
             EXPECT_NEAR(v.first, (plus.value - minus.value) / (2 * h), 1e-9) << theta;
             EXPECT_NEAR(v.second, (plus.first - minus.first) / (2 * h), 1e-9) << theta;
         }
-    // exp(sin - 1): 1 at the crest (theta = pi/2), e^-2 in the trough.
-    EXPECT_NEAR(step04::wave_shape(Shape::ExpSine, 1.5707963267948966).value, 1.0, 1e-15);
-    EXPECT_NEAR(step04::wave_shape(Shape::ExpSine, -1.5707963267948966).value, std::exp(-2.0), 1e-15);
+    // exp(sin - 1) less its mean: 1 - mean at the crest (theta = pi/2), e^-2 - mean in the trough,
+    // so the crest stands 1 above the trough as in the seed.
+    const double crest = step04::wave_shape(Shape::ExpSine, 1.5707963267948966).value;
+    const double trough = step04::wave_shape(Shape::ExpSine, -1.5707963267948966).value;
+    EXPECT_NEAR(crest, 1.0 - step04::kExpSineMean, 1e-15);
+    EXPECT_NEAR(crest - trough, 1.0 - std::exp(-2.0), 1e-15);
+}
+
+TEST(Step04Shape, EveryShapeHasZeroMeanSoTheSeaRestsAtZero) {
+    // Outside the code: the mean of exp(sin - 1) is e^-1 I0(1) (I0 from its power series
+    // sum (1/4)^k / k!^2), and a periodic wave of zero mean leaves the sea's level at y = 0.
+    double i0 = 0, term = 1;
+    for (int k = 0; k < 30; ++k) i0 += term, term *= 0.25 / double((k + 1) * (k + 1));
+    EXPECT_NEAR(step04::kExpSineMean, i0 / std::exp(1.0), 1e-15);
+    for (Shape shape : {Shape::Sine, Shape::ExpSine}) {
+        const int samples = 4096;  // the trapezoid rule is spectrally exact for periodic functions
+        double mean = 0;
+        for (int i = 0; i < samples; ++i) mean += step04::wave_shape(shape, step04::kTwoPi * i / samples).value;
+        EXPECT_NEAR(mean / samples, 0.0, 1e-14) << int(shape);
+    }
+    // The whole default fBm, averaged over a large area (many wavelengths of every wave): ~0, not
+    // the ~4 m of sum a_i e^-1 I0(1) it had before the mean was taken out.
+    step04::CascadeSettings s;
+    const auto cascades = step04::make_cascades(s, 2, 0.37);
+    double mean = 0, amplitude_sum = 0;
+    for (const auto& c : cascades)
+        for (const auto& w : c.waves) amplitude_sum += w.amplitude;
+    const int n = 400;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) mean += step04::height_gradient(cascades, Shape::ExpSine, 0.0, i * 2.03, j * 1.97, 0).height;
+    mean /= double(n) * n;
+    EXPECT_LT(std::abs(mean), 0.02 * amplitude_sum) << "mean level " << mean << " m, sum of amplitudes " << amplitude_sum;
+}
+
+TEST(Step04Fbm, CrestsTravelAlongTheirDirection) {
+    // One exp-sine wave: its crest (the maximum along d) moves along +d at phi / w.
+    step04::CascadeSettings s;
+    s.wave_count = 1;
+    s.base_wavelength = 10;
+    const auto waves = step04::fbm_waves(s);
+    const auto& w = waves[0];
+    const double speed = w.phase_rate / w.wavenumber;
+    auto crest_at = [&](double t) {
+        double best_s = 0, best_h = -1e9;
+        for (double along = -5; along < 5; along += 1e-3) {
+            const double h = step04::cascade_height_gradient(waves, Shape::ExpSine, 0.0, along * w.dx, along * w.dz, t).height;
+            if (h > best_h) best_h = h, best_s = along;
+        }
+        return best_s;
+    };
+    // The search spans one wavelength, so the crest may wrap: compare modulo the wavelength.
+    for (double t : {0.25, 0.5}) {
+        const double moved = crest_at(t) - crest_at(0);
+        EXPECT_NEAR(std::remainder(moved - speed * t, 10.0), 0.0, 2e-3) << "t = " << t;
+        EXPECT_GT(std::abs(std::remainder(moved + speed * t, 10.0)), 0.5) << "not the seed's -d";
+    }
 }
 
 TEST(Step04Fbm, AmplitudeAndFrequencySeries) {
@@ -66,7 +119,8 @@ TEST(Step04Fbm, WithoutWarpItIsThePlainSum) {
     const double x = 3.5, z = -7.25, t = 2.0;
     double expected = 0;
     for (const auto& w : waves)
-        expected += w.amplitude * std::exp(std::sin((w.dx * x + w.dz * z) * w.wavenumber + w.phase_rate * t) - 1);
+        expected += w.amplitude * (std::exp(std::sin((w.dx * x + w.dz * z) * w.wavenumber - w.phase_rate * t) - 1) -
+                                   step04::kExpSineMean);
     EXPECT_NEAR(step04::cascade_height_gradient(waves, Shape::ExpSine, 0.0, x, z, t).height, expected, 1e-12);
 }
 

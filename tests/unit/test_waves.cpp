@@ -23,16 +23,26 @@ TEST(Step01Waves, PhaseRateIsSpeedTimesWavenumber) {
     const step01::Wave wave{4.0, 2.0, 1.0};  // w = pi/2 rad/m, phi = pi/2 rad/s
     EXPECT_DOUBLE_EQ(step01::phase_rate(wave), kPi / 2);
     EXPECT_NEAR(step01::wave_height(wave, 1.0, 0.0), 2.0, 1e-12);   // 2 sin(pi/2)
-    EXPECT_NEAR(step01::wave_height(wave, 0.0, 1.0), 2.0, 1e-12);   // 2 sin(pi/2)
-    EXPECT_NEAR(step01::wave_height(wave, 1.0, 1.0), 0.0, 1e-12);   // 2 sin(pi)
+    EXPECT_NEAR(step01::wave_height(wave, 0.0, 1.0), -2.0, 1e-12);  // 2 sin(-pi/2)
+    EXPECT_NEAR(step01::wave_height(wave, 1.0, 1.0), 0.0, 1e-12);   // 2 sin(0)
+    EXPECT_NEAR(step01::wave_height(wave, 2.0, 1.0), 2.0, 1e-12);   // 2 sin(pi/2): the crest moved +1 m
     EXPECT_NEAR(step01::wave_height(wave, 0.5, 0.0), std::sqrt(2.0), 1e-12);  // 2 sin(pi/4)
 }
 
 TEST(Step01Waves, CrestsMoveAtTheirSpeed) {
-    // With x w + t phi, a crest at x0 is found at x0 - speed * t later (travel towards -x).
+    // With x w - t phi, a crest at x0 is found at x0 + speed * t later (travel towards +x). The
+    // seed's x w + t phi would find it at x0 - speed * t.
     const step01::Wave wave{6.0, 1.0, 2.5};
     for (double t : {0.3, 1.7, 40.0})
-        EXPECT_NEAR(step01::wave_height(wave, 1.5 - 2.5 * t, t), step01::wave_height(wave, 1.5, 0), 1e-9);
+        EXPECT_NEAR(step01::wave_height(wave, 1.5 + 2.5 * t, t), step01::wave_height(wave, 1.5, 0), 1e-9);
+    // Not only equal heights: the crest itself (the first maximum right of x = 0 at t = 0 is at
+    // x = 1.5 m, a quarter wavelength) is found by a search over the plot's x range later on.
+    for (double t : {0.2, 0.5}) {
+        double best_x = 0, best_h = -1;
+        for (double x = 0; x < 3.0; x += 1e-4)
+            if (step01::wave_height(wave, x, t) > best_h) best_h = step01::wave_height(wave, x, t), best_x = x;
+        EXPECT_NEAR(best_x, 1.5 + 2.5 * t, 2e-4) << "t = " << t;
+    }
 }
 
 TEST(Step01Waves, SumAddsTheWaves) {
@@ -56,13 +66,15 @@ TEST(Step01Waves, SlopeMatchesCentralDifferences) {
 TEST(Step01Waves, ReducedPhaseKeepsLongRunsExact) {
     const step01::Wave wave{4.0, 1.0, 1.0};  // phi = pi/2: t = 4 s is one whole period
     const double ten_days = 864000.0;         // a multiple of 4 s
-    EXPECT_NEAR(step01::phase_at(wave, ten_days), 0.0, 1e-6);
-    EXPECT_NEAR(step01::phase_at(wave, ten_days + 1.0), kPi / 2, 1e-6);
+    // Angles compared modulo 2 pi: a phase of -1e-10 comes back as 2 pi - 1e-10, the same angle.
+    auto same_angle = [](double a, double b) { return std::abs(std::remainder(a - b, 2 * kPi)) < 1e-6; };
+    EXPECT_TRUE(same_angle(step01::phase_at(wave, ten_days), 0.0)) << step01::phase_at(wave, ten_days);
+    EXPECT_NEAR(step01::phase_at(wave, ten_days + 1.0), 1.5 * kPi, 1e-6);  // -pi/2 into [0, 2 pi)
     const step01::Wave backwards{4.0, 1.0, -1.0};
     const double phase = step01::phase_at(backwards, 1.0);
     EXPECT_GE(phase, 0.0);
     EXPECT_LT(phase, 2 * kPi);
-    EXPECT_NEAR(phase, 1.5 * kPi, 1e-12);  // -pi/2 brought into [0, 2 pi)
+    EXPECT_NEAR(phase, 0.5 * kPi, 1e-12);  // -(-pi/2)
 }
 
 TEST(Step02Waves, DirectionIsAnAngleInTheXZPlane) {
@@ -75,23 +87,34 @@ TEST(Step02Waves, DirectionIsAnAngleInTheXZPlane) {
 }
 
 TEST(Step02Waves, HandComputedHeights) {
-    // wavelength 2 pi: w = 1. Along +x: h = sin(x); along +z: h = 0.5 sin(z + t).
+    // wavelength 2 pi: w = 1. Along +x: h = sin(x); along +z: h = 0.5 sin(z - t).
     const std::vector<step02::DirectionalWave> waves{{0, 2 * kPi, 1.0, 0.0}, {90, 2 * kPi, 0.5, 1.0}};
     EXPECT_NEAR(step02::height(waves, kPi / 2, 0, 0), 1.0, 1e-12);
     EXPECT_NEAR(step02::height(waves, kPi / 2, kPi / 2, 0), 1.5, 1e-12);
-    EXPECT_NEAR(step02::height(waves, 0, 0, kPi / 2), 0.5, 1e-12);
+    EXPECT_NEAR(step02::height(waves, 0, 0, kPi / 2), -0.5, 1e-12);
     // A diagonal wave (45 degrees) depends on (x + z) / sqrt(2) only.
     const std::vector<step02::DirectionalWave> diagonal{{45, 2 * kPi, 1.0, 0.0}};
     EXPECT_NEAR(step02::height(diagonal, 1.0, 0.0, 0), step02::height(diagonal, 0.0, 1.0, 0), 1e-12);
     EXPECT_NEAR(step02::height(diagonal, 1.0, 1.0, 0), std::sin(std::sqrt(2.0)), 1e-12);
 }
 
-TEST(Step02Waves, CrestsTravelAlongMinusDirection) {
+TEST(Step02Waves, CrestsTravelAlongTheirDirection) {
+    // A direction is where the crests go: the pattern at t is the pattern at 0 moved by speed t d.
     const std::vector<step02::DirectionalWave> waves{{60, 5.0, 1.0, 3.0}};
     const auto d = step02::direction(waves[0]);
     for (double t : {0.4, 2.0})
-        EXPECT_NEAR(step02::height(waves, 1.0 - d.x * 3.0 * t, 2.0 - d.z * 3.0 * t, t),
+        EXPECT_NEAR(step02::height(waves, 1.0 + d.x * 3.0 * t, 2.0 + d.z * 3.0 * t, t),
                     step02::height(waves, 1.0, 2.0, 0.0), 1e-9);
+    // And the crest itself: along d through the origin, the crest at s = 1.25 m (a quarter of
+    // 5 m) at t = 0 is found 3 t further along d at t, the seed's sign would put it 3 t behind.
+    for (double t : {0.1, 0.3}) {
+        double best_s = 0, best_h = -1;
+        for (double s = -2.0; s < 3.5; s += 1e-4) {
+            const double h = step02::height(waves, s * d.x, s * d.z, t);
+            if (h > best_h) best_h = h, best_s = s;
+        }
+        EXPECT_NEAR(best_s, 1.25 + 3.0 * t, 2e-4) << "t = " << t;
+    }
 }
 
 TEST(Step02Waves, ReducesToStep01AlongX) {

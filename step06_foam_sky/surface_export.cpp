@@ -1,0 +1,49 @@
+#include "step06_foam_sky/surface_export.hpp"
+
+#include "common/error.hpp"
+#include "common/text.hpp"
+#include "step05_fft/export.hpp"
+
+namespace step06 {
+
+void export_surface(const std::string& dir, ocean::ProgramFactory& programs, const step05::GpuOcean& ocean,
+                    const FoamSimulation& foam, const CascadeView& cascades, double time, double choppiness,
+                    const ocean::ParamRegistry& params) {
+    ocean::ShaderProgram* p = programs("surface_grid.comp", {"step06_foam_sky/shaders/surface_grid.comp"}, {});
+    if (p == nullptr) throw ocean::Error("surface_grid.comp does not build");
+    const FoamWindow& window = foam.window(kExportedFoamLevel);
+    const int n = window.n;
+    ocean::Texture displacement = ocean::make_texture(GL_TEXTURE_2D), slopes = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(displacement.id(), 1, GL_RGBA32F, n, n);
+    glTextureStorage2D(slopes.id(), 1, GL_RGBA32F, n, n);
+    p->set("u_patch_sizes", std::vector<float>(cascades.patch_sizes.begin(), cascades.patch_sizes.end()));
+    for (int c = 0; c < 4; ++c)
+        p->set("u_cascade_enabled[" + std::to_string(c) + "]", int(cascades.enabled[std::size_t(c)]));
+    p->set("u_n", n);
+    p->set("u_origin", window.origin);
+    p->set("u_texel_size", float(window.texel_size));
+    p->set("u_displacement", 0);
+    p->set("u_slopes", 1);
+    glBindTextureUnit(0, ocean.displacement_texture());
+    glBindTextureUnit(1, ocean.slopes_texture());
+    glBindImageTexture(0, displacement.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, slopes.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glUseProgram(p->id());
+    glDispatchCompute(GLuint((n + 7) / 8), GLuint((n + 7) / 8), 1);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+
+    std::vector<float> d(std::size_t(n) * n * 4), s(d.size());
+    glGetTextureImage(displacement.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(d.size() * sizeof(float)), d.data());
+    glGetTextureImage(slopes.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(s.size() * sizeof(float)), s.data());
+    const glm::dvec2 first = window.cell_centre(0, 0);
+    step05::write_export(dir, n, d, s, window.texel_size * n, time, choppiness, params,
+                         {{"export.surface", "sum of the enabled cascades, as rendered and as the foam sees it"},
+                          {"export.periodic", "0"},
+                          {"export.foam_level", std::to_string(kExportedFoamLevel)},
+                          {"export.origin_x", ocean::format_number(first.x)},
+                          {"export.origin_z", ocean::format_number(first.y)},
+                          {"export.spacing", ocean::format_number(window.texel_size)}},
+                         {{"foam.pfm", "foam, 0..1 (before the renderer's smoothstep)", foam.read_level(kExportedFoamLevel)}});
+}
+
+}  // namespace step06
