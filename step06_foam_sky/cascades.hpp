@@ -15,6 +15,11 @@
 namespace step06 {
 
 constexpr int kCascades = 4;
+// step06's defaults for the shared spectrum (the tests use the same sea): a fresh breeze over
+// cascade 0's 500 m tile, choppy.
+constexpr float kLargestTile = 500;
+constexpr float kDefaultWindSpeed = 14;
+constexpr float kDefaultChoppiness = 1.6f;
 constexpr double kWavesPerTileAtBoundary = 6;
 
 struct Band {

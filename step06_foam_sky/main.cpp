@@ -38,7 +38,7 @@ public:
                "where the Jacobian folds the surface; scatter + microfacet specular + sky reflection with "
                "Fresnel; a sky with sun and clouds; fog, bloom and a filmic tonemapper."}) {
         auto& p = params();
-        ocean_params_.declare(p, 500, 2, 14, 1.6f);  // a fresh breeze: whitecaps on the crests
+        ocean_params_.declare(p, step06::kLargestTile, 2, step06::kDefaultWindSpeed, step06::kDefaultChoppiness);
         for (int c = 0; c < step06::kCascades; ++c)
             p.add_bool("cascade_" + std::to_string(c), &cascade_on_[c], true,
                        "draw cascade " + std::to_string(c) + " (0: the longest waves)").in_group("cascades");

@@ -12,7 +12,7 @@ out vec3 v_world_position;
 out vec2 v_uv;
 
 void main() {
-    v_uv = a_rest_xz / u_patch_size;
+    v_uv = map_uv(a_rest_xz, u_patch_size);
     vec4 displacement = textureLod(u_displacement, vec3(v_uv, 0.0), 0.0);
     v_world_position = vec3(a_rest_xz.x, 0.0, a_rest_xz.y) + displacement.xyz;
     gl_Position = u_view_projection * vec4(v_world_position, 1.0);

@@ -6,6 +6,13 @@
 uniform sampler2DArray u_displacement;  // (l Dx, h, l Dz, l dDx/dz)
 uniform sampler2DArray u_slopes;        // (dh/dx, dh/dz, l dDx/dx, l dDz/dz)
 
+// Where rest position p falls in a tile of side patch_size: texel i holds the sea at x_i = i L / N
+// (as the CPU reference and --export have it), and GL puts texel i's centre at uv = (i + 0.5) / N,
+// so the half texel makes the two agree (without it the surface is drawn L / 2N off).
+vec2 map_uv(vec2 p, float patch_size) {
+    return p / patch_size + 0.5 / float(textureSize(u_displacement, 0).x);
+}
+
 vec3 choppy_normal(vec4 displacement, vec4 slopes) {
     vec3 along_x = vec3(1.0 + slopes.z, slopes.x, displacement.w);
     vec3 along_z = vec3(displacement.w, slopes.y, 1.0 + slopes.w);

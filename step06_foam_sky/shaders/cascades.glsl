@@ -6,11 +6,8 @@ const int CASCADES = 4;
 uniform float u_patch_sizes[CASCADES];  // metres
 uniform bool u_cascade_enabled[CASCADES];
 
-// Texel i of a cascade holds the sea at x_i = i L / N (as the CPU reference and --export have it),
-// and GL puts texel i's centre at uv = (i + 0.5) / N: the half texel makes the two agree.
-vec3 cascade_uv(vec2 p, int c) {
-    return vec3(p / u_patch_sizes[c] + 0.5 / float(textureSize(u_displacement, 0).x), float(c));
-}
+// Rest position p in cascade c's layer (map_uv: with the half-texel offset).
+vec3 cascade_uv(vec2 p, int c) { return vec3(map_uv(p, u_patch_sizes[c]), float(c)); }
 
 // (l Dx, h, l Dz, l dDx/dz) summed over the cascades, at mip level `lod` (any stage).
 vec4 total_displacement(vec2 p, float lod) {

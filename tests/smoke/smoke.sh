@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # smoke.sh STEP_EXE IMAGE_COMPARE GOLDEN.png OUT_DIR [EXTRA FLAGS...]
-# Runs a step headless for 3 frames at t = 1.5 s and 320x180: it must exit 0 with no GL error,
+# Runs a step headless at 320x180 on a real fixed time step: 6 frames of 0.2 s from t = 0.5 s, so
+# that the last frame is at t = 1.5 s and time evolution and foam accumulation (step06: warm start,
+# then five steps of growth and decay) are exercised. It must exit 0 with no GL error,
 # and its screenshot must not be blank and must match GOLDEN.png within image_compare's stated
 # tolerance (RMSE <= 2.5/255, at most 0.5% of pixels off by more than 24/255).
 # OCEAN_UPDATE_GOLDEN=1 copies the new screenshot over the golden instead: only after looking at
@@ -13,7 +15,7 @@ mkdir -p "$out"
 shot="$out/$name.png"
 rm -f "$shot" "$out/$name.diff.png"
 
-"$exe" --headless --frames 3 --time 1.5 --size 320x180 --screenshot "$shot" "$@" > "$out/$name.log" 2>&1
+"$exe" --headless --frames 6 --time 0.5 --dt 0.2 --size 320x180 --screenshot "$shot" "$@" > "$out/$name.log" 2>&1
 status=$?
 cat "$out/$name.log"
 [ "$status" -eq 0 ] || { echo "FAIL: $name exited with status $status"; exit 1; }

@@ -1,4 +1,6 @@
 // step06's CPU math: cascade bands, foam's frame-rate independence, tessellation levels.
+#include "common/params.hpp"
+#include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
@@ -57,20 +59,39 @@ TEST(Step06Cascades, NoModeIsCountedTwice) {
             }
 }
 
+void check_cascade_variances(const char* name, double wind, double fetch, double tolerance0);
+
 TEST(Step06Cascades, SummedVarianceMatchesTheSingleSpectrumIntegral) {
     // Each cascade's resolved variance against the integral of the one spectrum over its band,
     // and their sum against the integral over the whole range [0, pi N / L_3). Energy counted
     // twice (overlapping bands) would show as +100 % in a band, a lost band as a hole.
-    // The grids only sample the spectrum. Cascade 0 holds the narrow JONSWAP peak (sigma = 0.07)
-    // with dk = 2 pi / 500 m, about 7 samples across k_p: measured 6 % low. Cascades 1-3 sit on
-    // the steep tail, whose energy gathers at each band's inner circle (6 dk): the lattice points
-    // just inside it count ~4 % more area than the circle has. Stated tolerances: 10 % for
-    // cascade 0, 6 % for the others, 8 % for the sum.
-    step05::SpectrumParams shared;
-    shared.resolution = 256;
-    shared.wind_speed = 14;
+    // On step06's own sea (the parameters as the step declares them: 500 m tile, U = 14 m/s,
+    // F = 100 km, N = 256) and on each shipped preset's wind and fetch. The grids only sample the
+    // spectrum: cascade 0 holds the JONSWAP peak (sigma = 0.07 wide) with dk = 2 pi / 500 m, a few
+    // samples across it (k_p / dk = 1.2 in the gale, 12 in the calm); cascades 1-3 sit on the steep
+    // tail, whose energy gathers at each band's inner circle (6 dk), where the lattice points just
+    // inside count a few percent more area than the circle has.
+    // Measured: cascade 0 and the sum within 1 % (default, calm, breezy), +7.8 % in the gale,
+    // whose peak (k_p / dk = 1.2) falls between the first lattice circles (issue: adapt the first
+    // tile to the peak); cascades 1-3 +0.6..+4.3 %. Stated: 3 %, 12 % for the gale, 6 %.
+    struct Sea { const char* name; double wind, fetch; double tolerance0; };
+    for (const Sea sea : {Sea{"default", step06::kDefaultWindSpeed, 100000, 0.03}, Sea{"calm", 4, 30000, 0.03},
+                          Sea{"breezy", 10, 150000, 0.03}, Sea{"stormy", 22, 800000, 0.12}})
+        check_cascade_variances(sea.name, sea.wind, sea.fetch, sea.tolerance0);
+}
+
+void check_cascade_variances(const char* name, double wind, double fetch, double tolerance0) {
+    ocean::ParamRegistry registry;
+    step05::OceanParams params;
+    params.declare(registry, step06::kLargestTile, 2, step06::kDefaultWindSpeed, step06::kDefaultChoppiness);
+    step05::SpectrumParams shared = params.spectrum();
+    shared.wind_speed = wind;
+    shared.fetch = fetch;
     const auto cascades = step06::cascade_spectra(shared);
-    const auto bands = step06::cascade_bands(step06::cascade_patch_sizes(shared.patch_size), 256);
+    const auto bands = step06::cascade_bands(step06::cascade_patch_sizes(shared.patch_size), shared.resolution);
+    const double k_p = std::pow(step05::jonswap_peak_omega(wind, fetch), 2) / step05::kGravity;
+    std::printf("%s: U %.0f m/s, F %.0f km, k_p / dk = %.2f\n", name, wind, fetch / 1000,
+                k_p / (2 * step05::kPi / shared.patch_size));
     auto integral = [&](double k0, double k1) {
         const int steps = 100000;
         const double a = std::log(std::max(k0, 1e-4)), b = std::log(k1);  // in log k: decades
@@ -85,14 +106,14 @@ TEST(Step06Cascades, SummedVarianceMatchesTheSingleSpectrumIntegral) {
     for (int c = 0; c < step06::kCascades; ++c) {
         const double discrete = step05::resolved_variance(cascades[std::size_t(c)]);
         const double exact = integral(bands[std::size_t(c)].low, bands[std::size_t(c)].high);
-        std::printf("cascade %d: %.6f m^2 on the grid, %.6f m^2 integral (%+.2f%%)\n", c, discrete, exact,
+        std::printf("  cascade %d: %.6f m^2 on the grid, %.6f m^2 integral (%+.2f%%)\n", c, discrete, exact,
                     100 * (discrete / exact - 1));
-        EXPECT_NEAR(discrete / exact, 1.0, c == 0 ? 0.10 : 0.06) << c;
+        EXPECT_NEAR(discrete / exact, 1.0, c == 0 ? tolerance0 : 0.06) << name << " cascade " << c;
         summed += discrete;
     }
     const double total = integral(0, bands[3].high);
-    std::printf("sum: %.5f m^2, integral %.5f m^2 (%+.2f%%)\n", summed, total, 100 * (summed / total - 1));
-    EXPECT_NEAR(summed / total, 1.0, 0.08);
+    std::printf("  sum: %.5f m^2, integral %.5f m^2 (%+.2f%%)\n", summed, total, 100 * (summed / total - 1));
+    EXPECT_NEAR(summed / total, 1.0, tolerance0) << name;
 }
 
 TEST(Step06Foam, ImpulseDecaysExponentiallyWhateverTheFrameRate) {
@@ -109,7 +130,28 @@ TEST(Step06Foam, ImpulseDecaysExponentiallyWhateverTheFrameRate) {
         return foam;
     };
     EXPECT_NEAR(grown(1.0 / 30), grown(1.0 / 120), 0.01);
-    EXPECT_NEAR(step06::foam_steady_state(0.7, s), std::min(1.0, s.injection * 0.1 / s.decay_rate), 1e-12);
+}
+
+TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
+    // Below the clamp (J = 0.75, injection 8: 8 * 0.05 / 0.8 = 0.5), the warm start is the
+    // balance of injection and decay: stepping from it, or from zero long enough, stays there
+    // (the discrete fixed point is I dt / (1 - e^{-r dt}), which tends to I / r as dt -> 0).
+    const step06::FoamSettings s;
+    const double j = 0.75;
+    const double steady = step06::foam_steady_state(j, s);
+    EXPECT_NEAR(steady, 0.5, 1e-12);
+    const double dt = 1.0 / 240;
+    double foam = 0;
+    for (int i = 0; i < 240 * 30; ++i) foam = step06::foam_step(foam, j, dt, s);  // 30 s: 24 decay times
+    EXPECT_NEAR(foam, steady, 0.005) << "from nothing, foam settles at the warm start's value";
+    EXPECT_NEAR(step06::foam_step(steady, j, dt, s), steady, 1e-5) << "the warm start does not jump";
+    // Above the clamp it is 1, and where J is above the threshold nothing is made.
+    EXPECT_EQ(step06::foam_steady_state(0.0, s), 1.0);
+    EXPECT_EQ(step06::foam_steady_state(0.9, s), 0.0);
+    // Without decay the floor of 0.1/s keeps the warm start finite (0.05 * 8 / 0.1 = 4, clamped).
+    step06::FoamSettings no_decay = s;
+    no_decay.decay_rate = 0;
+    EXPECT_EQ(step06::foam_steady_state(0.75, no_decay), 1.0);
 }
 
 TEST(Step06Tessellation, LevelFallsWithDistance) {
