@@ -27,6 +27,8 @@ void SpectrumView::update(const SpectrumParams& p, const InitialSpectrum& s) {
         plot_[i] = float(p.amplitude_scale * p.amplitude_scale * omnidirectional_k(p, k) * dk_domega);
     }
     significant_height_ = 4 * std::sqrt(resolved_variance(p));
+    growth_law_height_ = 4 * std::sqrt(growth_law_variance(p.wind_speed, p.fetch));
+    cem_height_ = cem_significant_height(p.wind_speed, p.fetch);
 
     // The tile's spectrum as an image, k = 0 in the middle: log10 of each mode's energy over 6 decades.
     n_ = s.n;
@@ -64,6 +66,8 @@ void SpectrumView::draw_ui() const {
         ImGui::Text("omega_p = %.3f rad/s (T_p %.1f s, wavelength %.0f m)", peak_omega_, 2 * kPi / peak_omega_,
                     2 * kPi * kGravity / (peak_omega_ * peak_omega_));
     ImGui::Text("Hs = 4 sqrt(variance) = %.2f m on this tile", significant_height_);
+    // What observed seas of this wind and fetch have (README, "Heights against observations").
+    ImGui::Text("observed seas: %.2f m (JONSWAP growth law), %.2f m (CEM)", growth_law_height_, cem_height_);
     if (texture_) {
         ImGui::TextUnformatted("log10 energy per mode, k = 0 at the centre:");
         ImGui::Image(reinterpret_cast<ImTextureID>(std::uintptr_t(texture_.id())), ImVec2(160, 160));

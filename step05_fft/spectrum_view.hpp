@@ -20,7 +20,7 @@ public:
 
 private:
     std::vector<float> plot_;  // S(omega) (or its Phillips equivalent) on [0, omega_max]
-    double omega_max_ = 1, peak_omega_ = 0, significant_height_ = 0;
+    double omega_max_ = 1, peak_omega_ = 0, significant_height_ = 0, growth_law_height_ = 0, cem_height_ = 0;
     std::string model_;
     ocean::Texture texture_;
     int n_ = 0;

@@ -25,7 +25,7 @@
 namespace step06 {
 
 struct FoamSettings {
-    double threshold = 0.8;   // J below which foam appears (the bias)
+    double threshold = 0.7;   // J below which foam appears (the bias)
     double injection = 8;     // foam per second per unit of (threshold - J)
     double decay_rate = 0.8;  // 1/s: foam fades as exp(-decay_rate t)
 };

@@ -42,7 +42,7 @@ public:
         for (int c = 0; c < step06::kCascades; ++c)
             p.add_bool("cascade_" + std::to_string(c), &cascade_on_[c], true,
                        "draw cascade " + std::to_string(c) + " (0: the longest waves)").in_group("cascades");
-        p.add_float("foam_threshold", &foam_threshold_, 0.8f, -1, 2, "Jacobian below which foam appears (bias)")
+        p.add_float("foam_threshold", &foam_threshold_, 0.7f, -1, 2, "Jacobian below which foam appears (bias)")
             .in_group("foam");
         p.add_float("foam_injection", &foam_injection_, 8, 0, 100, "foam added per second per unit below the threshold")
             .in_group("foam");
@@ -289,7 +289,7 @@ private:
     std::unique_ptr<step06::FoamSimulation> foam_;
     ocean::ShaderProgram* ocean_ = nullptr;
     std::string sky_image_loaded_;
-    float foam_threshold_ = 0.8f, foam_injection_ = 8, foam_decay_ = 0.8f;
+    float foam_threshold_ = 0.7f, foam_injection_ = 8, foam_decay_ = 0.8f;
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
     double height_variance_ = 0;  // m^2, of the summed cascades
     int split_effect_ = 0;

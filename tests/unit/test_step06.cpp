@@ -126,18 +126,19 @@ TEST(Step06Foam, ImpulseDecaysExponentiallyWhateverTheFrameRate) {
     // Injection is a rate: the foam made in one second hardly depends on the step.
     auto grown = [&](double dt) {
         double foam = 0;
-        for (int i = 0; i < int(std::lround(1 / dt)); ++i) foam = step06::foam_step(foam, 0.7, dt, s);
+        for (int i = 0; i < int(std::lround(1 / dt)); ++i) foam = step06::foam_step(foam, 0.6, dt, s);
         return foam;
     };
+    EXPECT_GT(grown(1.0 / 30), 0.3) << "J = 0.6 is below the threshold: foam grows";
     EXPECT_NEAR(grown(1.0 / 30), grown(1.0 / 120), 0.01);
 }
 
 TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
-    // Below the clamp (J = 0.75, injection 8: 8 * 0.05 / 0.8 = 0.5), the warm start is the
+    // Below the clamp (J = 0.65, threshold 0.7, injection 8: 8 * 0.05 / 0.8 = 0.5), the warm start is the
     // balance of injection and decay: stepping from it, or from zero long enough, stays there
     // (the discrete fixed point is I dt / (1 - e^{-r dt}), which tends to I / r as dt -> 0).
     const step06::FoamSettings s;
-    const double j = 0.75;
+    const double j = 0.65;
     const double steady = step06::foam_steady_state(j, s);
     EXPECT_NEAR(steady, 0.5, 1e-12);
     const double dt = 1.0 / 240;
@@ -147,11 +148,11 @@ TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
     EXPECT_NEAR(step06::foam_step(steady, j, dt, s), steady, 1e-5) << "the warm start does not jump";
     // Above the clamp it is 1, and where J is above the threshold nothing is made.
     EXPECT_EQ(step06::foam_steady_state(0.0, s), 1.0);
-    EXPECT_EQ(step06::foam_steady_state(0.9, s), 0.0);
+    EXPECT_EQ(step06::foam_steady_state(0.8, s), 0.0);
     // Without decay the floor of 0.1/s keeps the warm start finite (0.05 * 8 / 0.1 = 4, clamped).
     step06::FoamSettings no_decay = s;
     no_decay.decay_rate = 0;
-    EXPECT_EQ(step06::foam_steady_state(0.75, no_decay), 1.0);
+    EXPECT_EQ(step06::foam_steady_state(0.65, no_decay), 1.0);
 }
 
 TEST(Step06Tessellation, LevelFallsWithDistance) {
