@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# tools/readme_images.sh [BUILD_DIR]: redraws every picture the steps' READMEs show, each with the
+# one command written here beside it, so a README's image can be reproduced and cannot quietly
+# drift from the code. Headless, on a fixed clock (t = 5 s reached by 0.1 s steps, so foam has
+# grown), 640x360 (step05's map views 300x300). Takes about a minute on llvmpipe.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build/release}
+run() {  # run STEP IMAGE [flags...]
+  local step=$1 image=$2
+  shift 2
+  "$build/$step/$step" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 \
+    --screenshot "$root/$step/$image" "$@" > /dev/null
+  echo "$step/$image"
+}
+run step01_sine2d screenshot.png
+run step02_sine3d screenshot.png
+run step02_sine3d wireframe.png --set wireframe=true --camera low
+run step03_lighting screenshot.png
+run step03_lighting normal_difference.png --set view=normal_difference
+run step03_lighting per_vertex.png --set lighting=per_vertex --set x_quads=24 --set z_quads=24
+run step03_lighting per_pixel.png --set lighting=per_pixel --set x_quads=24 --set z_quads=24
+run step04_fbm screenshot.png
+run step04_fbm warp_off.png --set warp=0 --camera low
+run step04_fbm warp_on.png --set warp=6 --camera low
+run step04_fbm sine.png --set shape=sine --set warp=0 --camera low
+run step05_fft screenshot.png
+run step05_fft height.png --size 300x300 --set view=height
+run step05_fft jacobian.png --size 300x300 --set view=jacobian --set choppiness=2.5
+run step05_fft spectrum.png --size 300x300 --set view=spectrum
+run step06_foam_sky screenshot.png
+for preset in calm breezy stormy; do
+  run step06_foam_sky "$preset.png" --preset "$root/step06_foam_sky/presets/$preset.preset"
+done
+run step06_foam_sky foam.png --set view=foam --camera overview
+run step06_foam_sky tessellation.png --set wireframe=true --camera overview
