@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 namespace ocean {
 
@@ -282,8 +283,10 @@ void ParamRegistry::reset_all() {
 std::optional<std::string> ParamRegistry::apply_preset_text(const std::string& text,
                                                             const std::string& origin) {
     if (text.find('\0') != std::string::npos) return origin + ": not a text file";
+    // Editors that save UTF-8 with a byte-order mark put EF BB BF before the first name.
+    const std::string_view bom = "\xEF\xBB\xBF";
+    std::istringstream lines(text.compare(0, bom.size(), bom) == 0 ? text.substr(bom.size()) : text);
     std::vector<std::pair<Param*, std::string>> assignments;
-    std::istringstream lines(text);
     std::string line;
     int number = 0;
     while (std::getline(lines, line)) {

@@ -57,15 +57,22 @@ std::string format_number(double value) {
     return buffer;
 }
 
-std::optional<std::string> read_text_file(const std::string& path, std::string* text) {
+std::optional<std::string> read_text_file(const std::string& path, std::string* text, std::size_t max_bytes) {
     struct stat info {};
     if (stat(path.c_str(), &info) != 0) return "'" + path + "': " + std::strerror(errno);
     if (S_ISDIR(info.st_mode)) return "'" + path + "': is a directory";
+    if (!S_ISREG(info.st_mode)) return "'" + path + "': not a regular file (a pipe or a device is not read)";
+    if (std::size_t(info.st_size) > max_bytes)
+        return "'" + path + "': larger than " + std::to_string(max_bytes / 1024) + " KiB";
     std::ifstream file(path, std::ios::binary);
     if (!file) return "'" + path + "': " + std::strerror(errno);
-    std::ostringstream content;
-    content << file.rdbuf();
-    *text = content.str();
+    // Read at most one byte past the limit: a file that grows while it is read is still bounded.
+    std::string content(max_bytes + 1, '\0');
+    file.read(content.data(), std::streamsize(content.size()));
+    content.resize(std::size_t(file.gcount()));
+    if (content.size() > max_bytes)
+        return "'" + path + "': larger than " + std::to_string(max_bytes / 1024) + " KiB";
+    *text = std::move(content);
     return std::nullopt;
 }
 

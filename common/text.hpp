@@ -18,6 +18,10 @@ std::string ellipsize(const std::string& text, std::size_t max_chars);
 // floats, so 0.1f prints as "0.1", not "0.100000001".
 std::string format_number(double value);
 // Reads a whole file; on failure returns "'path': reason".
-std::optional<std::string> read_text_file(const std::string& path, std::string* text);
+// Reads a whole regular file of at most max_bytes. Anything else is refused with a message, not
+// read: a FIFO or a device (/dev/urandom) would block or never end.
+constexpr std::size_t kMaxTextFileBytes = 1 << 20;
+std::optional<std::string> read_text_file(const std::string& path, std::string* text,
+                                          std::size_t max_bytes = kMaxTextFileBytes);
 
 }  // namespace ocean

@@ -18,6 +18,10 @@ printf '' > "$out/empty.preset"
 printf '%s = ' "$number" > "$out/truncated.preset"      # cut off mid-line
 printf '%s = 1\n\x00\x01\x02garbage' "$number" > "$out/binary.preset"
 mkdir -p "$out/a_directory.preset"
+default=$(echo "$params" | awk -v n="$number" '$1 == n { print $2; exit }')
+printf '\xEF\xBB\xBF%s = %s\n' "$number" "$default" > "$out/bom.preset"  # saved by an editor with a BOM
+rm -f "$out/a.fifo"; mkfifo "$out/a.fifo"                                   # a preset that never ends
+head -c 2000000 /dev/zero | tr '\0' '#' > "$out/huge.preset"               # 2 MB of comment
 huge=$(head -c 20000 /dev/zero | tr '\0' '9')
 
 rows=(
@@ -52,6 +56,10 @@ rows=(
   "preset_truncated|fail|truncated.preset:1: parameter|--preset $out/truncated.preset"
   "preset_binary|fail|not a text file|--preset $out/binary.preset"
   "preset_empty|ok||--preset $out/empty.preset --frames 1 --size 32x18"
+  "preset_with_bom|ok||--preset $out/bom.preset --frames 1 --size 32x18"
+  "preset_urandom|fail|not a regular file|--preset /dev/urandom"
+  "preset_fifo|fail|not a regular file|--preset $out/a.fifo"
+  "preset_too_large|fail|larger than 1024 KiB|--preset $out/huge.preset"
   "save_preset_unwritable|fail|cannot write preset|--save-preset /proc/no/such.preset"
   "shader_dir_missing|fail|shader directory|--shader-dir $out/no-such-dir --frames 1"
 )
@@ -73,7 +81,8 @@ failures=0
 for row in "${rows[@]}"; do
   IFS='|' read -r name expect pattern args <<< "$row"
   read -r -a argv <<< "$args"
-  "$exe" --headless "${argv[@]}" > "$out/$name.stdout" 2> "$out/$name.stderr"
+  # A hang is a failure too (exit 124), not a test that runs into ctest's timeout.
+  timeout 60 "$exe" --headless "${argv[@]}" > "$out/$name.stdout" 2> "$out/$name.stderr"
   status=$?
   lines=$(grep -c '' "$out/$name.stderr")
   message=$(head -c 300 "$out/$name.stderr" | head -n 1)

@@ -1,5 +1,6 @@
 // The parameter registry: declarations, --set, validation, presets and their round trip.
 #include "common/params.hpp"
+#include "common/text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -149,6 +150,27 @@ TEST_F(Fixture, MalformedPresetIsRefusedWholeWithFileAndLine) {
     ASSERT_TRUE(unknown);
     EXPECT_NE(unknown->find("p:1: unknown parameter 'nope'"), std::string::npos);
     EXPECT_TRUE(params.apply_preset_text(std::string("amplitude = 1\0\x01\x02", 17), "bin"));
+}
+
+TEST_F(Fixture, PresetSavedWithAByteOrderMarkIsRead) {
+    // Some editors write UTF-8 with EF BB BF first: the first name must still be known.
+    EXPECT_FALSE(params.apply_preset_text("\xEF\xBB\xBF" "amplitude = 4\n", "bom.preset"));
+    EXPECT_FLOAT_EQ(amplitude, 4.0f);
+    // Only at the very start: elsewhere it is not part of a name.
+    EXPECT_TRUE(params.apply_preset_text("amplitude = 4\n\xEF\xBB\xBF" "wave_count = 2\n", "p"));
+}
+
+TEST_F(Fixture, PresetsThatAreNotBoundedRegularFilesAreRefused) {
+    // A device or a FIFO would never end or block: refused without reading.
+    const auto device = params.load_preset("/dev/urandom");
+    ASSERT_TRUE(device);
+    EXPECT_NE(device->find("not a regular file"), std::string::npos) << *device;
+    const std::string huge = temp_path("huge.preset");
+    std::ofstream(huge) << std::string(ocean::kMaxTextFileBytes + 1, '#');
+    const auto large = params.load_preset(huge);
+    ASSERT_TRUE(large);
+    EXPECT_NE(large->find("larger than"), std::string::npos) << *large;
+    std::remove(huge.c_str());
 }
 
 TEST_F(Fixture, MissingOrDirectoryPresetFileIsAnError) {
