@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/gl_debug.hpp"
 #include "common/image.hpp"
+#include "common/run_support.hpp"
 #include "common/text.hpp"
 
 #include <GLFW/glfw3.h>
@@ -25,27 +26,6 @@
 namespace ocean {
 
 namespace fs = std::filesystem;
-
-namespace {
-std::vector<std::string> list_steps() {
-    std::vector<std::string> steps;
-    for (const auto& entry : fs::directory_iterator(OCEAN_SOURCE_DIR)) {
-        const std::string name = entry.path().filename().string();
-        if (entry.is_directory() && name.size() > 7 && name.rfind("step", 0) == 0 && std::isdigit(name[4]) &&
-            std::isdigit(name[5]) && name[6] == '_')
-            steps.push_back(name);
-    }
-    std::sort(steps.begin(), steps.end());
-    return steps;
-}
-}  // namespace
-
-namespace {
-// Ctrl-C (SIGINT) and SIGTERM close the step like its window's close button: the frame ends, the
-// GL objects are released, the exit status is 0. A signal handler may only set a flag like this.
-volatile std::sig_atomic_t g_close_requested = 0;
-extern "C" void request_close_on_signal(int) { g_close_requested = 1; }
-}  // namespace
 
 App::App(StepInfo info) : info_(std::move(info)) {}
 
@@ -84,9 +64,11 @@ int App::run(const std::vector<std::string>& args, const StepLocation& where) {
     split_view_ = options.split;
     for (const auto& assignment : options.sets)
         if (auto error = params_.set_assignment(assignment)) return fail(kExitUsage, *error);
+    for (const auto& assignment : options.carries)  // only what this step has (Previous/Next)
+        if (params_.find(trim(assignment.substr(0, assignment.find('=')))) != nullptr)
+            if (auto error = params_.set_assignment(assignment)) return fail(kExitUsage, *error);
     if (!options.export_dir.empty() && !supports_export())
-        return fail(kExitUsage, "--export: " + step_name() + " has no maps to export (step05_fft and "
-                                "step06_foam_sky have)");
+        return fail(kExitUsage, "--export: " + step_name() + " simulates no maps to export");
     if (!options.save_preset.empty()) {
         if (auto error = params_.save_preset(options.save_preset, step_name() + " preset"))
             return fail(kExitRuntimeError, *error);
@@ -121,187 +103,72 @@ void App::draw_fullscreen_triangle() const {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void App::use_camera(glm::vec3 target, float distance, float yaw_deg, float pitch_deg) {
-    camera_.declare_params(params_, target, distance, yaw_deg, pitch_deg);
+void App::use_camera(const CameraView& view) {
+    camera_.declare_params(params_, view);
     camera_enabled_ = true;
 }
 
-std::vector<std::string> App::stage_paths(const std::vector<std::string>& stage_files) const {
-    // "dir/file" is relative to the repository (a later chapter using an earlier one's shader);
-    // a bare name is the step's own, or else common/shaders' (fullscreen.vert, for one).
-    std::vector<std::string> paths;
-    for (const auto& file : stage_files) {
-        if (file.find('/') != std::string::npos) {
-            paths.push_back((fs::path(OCEAN_SOURCE_DIR) / file).string());
-            continue;
-        }
-        const fs::path own = fs::path(shader_dir_) / file;
-        const fs::path shared = fs::path(OCEAN_SOURCE_DIR) / "common" / "shaders" / file;
-        paths.push_back((fs::exists(own) || !fs::exists(shared) ? own : shared).string());
-    }
-    return paths;
-}
-
-ShaderProgram& App::load_program(const std::string& name, const std::vector<std::string>& stage_files) {
-    auto program = std::make_unique<ShaderProgram>(name, stage_paths(stage_files));
-    if (auto error = program->build())
-        throw Error("shader program '" + name + "' does not build: " + first_line_summary(*error));
-    programs_.push_back(std::move(program));
-    return *programs_.back();
-}
-
-ShaderProgram* App::program_variant(const std::string& name, const std::vector<std::string>& stage_files,
-                                    const std::vector<std::string>& defines) {
-    const std::string key = name + "|" + join(defines, "|");
-    if (auto it = variants_.find(key); it != variants_.end()) return it->second;
-    const std::string label = defines.empty() ? name : name + " [" + join(defines, ", ") + "]";
-    auto program = std::make_unique<ShaderProgram>(label, stage_paths(stage_files), std::vector<std::string>{},
-                                                   defines);
-    if (auto error = program->build()) {
-        if (!running_) throw Error("shader program '" + label + "' does not build: " + first_line_summary(*error));
-        std::cerr << "shader program '" << label << "' does not build:\n" << *error;
-        panel_message_ = "'" + label + "' does not build (previous program kept):\n" + *error;
-        return nullptr;
-    }
-    programs_.push_back(std::move(program));
-    return variants_[key] = programs_.back().get();
-}
-
-void App::reload_changed_shaders() {
-    for (auto& program : programs_) {
-        if (!program->sources_changed()) continue;
-        if (auto error = program->build()) {
-            std::cerr << "shader reload failed, keeping the last good '" << program->name()
-                      << "':\n" << *error;
-            panel_message_ = "reload failed (last good program kept):\n" + *error;
-        } else {
-            std::cerr << "shader '" << program->name() << "' reloaded\n";
-            panel_message_.clear();
-        }
-    }
+void App::draw_grid(const ShaderProgram& program, const GridMesh& grid, bool wireframe) {
+    program.set("u_view_projection", camera_.projection(aspect()) * camera_.view());
+    program.set("u_eye", camera_.eye());
+    GpuScope timed(timers_, "ocean");
+    glEnable(GL_DEPTH_TEST);
+    glUseProgram(program.id());
+    grid.draw(wireframe);
+    glDisable(GL_DEPTH_TEST);
 }
 
 int App::run_loop(const Options& options) {
     const bool headless = options.headless || !display_available();
     if (!options.headless && headless) std::cout << "no display: rendering headless\n";
-    shader_dir_ = options.shader_dir.empty() ? where_.dir + "/shaders" : options.shader_dir;
-    if (!fs::is_directory(shader_dir_)) throw Error("shader directory '" + shader_dir_ + "' does not exist");
+    const std::string shader_dir = options.shader_dir.empty() ? where_.dir + "/shaders" : options.shader_dir;
+    if (!fs::is_directory(shader_dir)) throw Error("shader directory '" + shader_dir + "' does not exist");
+    programs_.set_shader_dir(shader_dir);
 
     context_ = Context::create({headless, options.width, options.height, step_name()});
     enable_gl_debug_output();
     std::cout << step_name() << ": " << context_->description() << "\n";
     empty_vao_ = make_vertex_array();
-    all_steps_ = list_steps();
+    all_steps_ = repository_steps();
     timers_.set_enabled(options.bench);
     framebuffer_size_ = context_->framebuffer_size();
     init_imgui();
     init();
 
     const int frame_limit = options.frames > 0 ? options.frames : (headless ? 10 : 0);
-    const bool fixed_clock = options.start_time.has_value() || options.fixed_dt.has_value();
-    const double fixed_dt = options.fixed_dt.value_or(0.0);
-    time_ = options.start_time.value_or(options.start_at.value_or(0.0));
+    FrameClock clock(options);
+    time_ = clock.start_time();
     panel_visible_ = !headless || options.show_ui;
-
-    using clock = std::chrono::steady_clock;
-    const auto start = clock::now();
-    auto previous = start;
-    auto bench_start = start;
     Image screenshot;
     int frame = 0;
-    g_close_requested = 0;
-    std::signal(SIGINT, request_close_on_signal);
-    std::signal(SIGTERM, request_close_on_signal);
+    CloseOnSignal signals;
     bool closed_early = false;
     for (; frame_limit == 0 || frame < frame_limit; ++frame) {
         context_->poll_events();
-        if (context_->should_close() || g_close_requested) {
+        if (context_->should_close() || signals.requested()) {
             closed_early = true;
             break;
         }
-        const auto now = clock::now();
-        const double real_dt = std::chrono::duration<double>(now - previous).count();
-        const double wall = std::chrono::duration<double>(now - start).count();
-        previous = now;
-        if (frame == 1) bench_start = now;  // the first frame pays for compilation and uploads
-        const double dt = paused_ ? 0.0 : (fixed_clock ? fixed_dt : real_dt);
-        if (frame > 0) time_ += dt;
-
-        if (wall - last_reload_check_ > 0.5) {
-            last_reload_check_ = wall;
-            reload_changed_shaders();
+        const FrameClock::Tick tick = clock.tick(frame, paused_);
+        if (frame > 0) time_ += tick.dt;
+        if (tick.wall - last_reload_check_ > 0.5) {
+            last_reload_check_ = tick.wall;
+            programs_.reload_changed();
         }
-        framebuffer_size_ = context_->framebuffer_size();
-        if (options.exercise_minimise && (frame == 2 || frame == 3)) {
-            framebuffer_size_ = glm::ivec2(0);  // as a minimised window reports
-            if (GLFWwindow* window = context_->window(); window != nullptr && frame == 2) glfwIconifyWindow(window);
-            if (GLFWwindow* window = context_->window(); window != nullptr && frame == 3) glfwRestoreWindow(window);
-        }
-        if (camera_enabled_) camera_.apply(read_camera_input(), float(real_dt));
-
-        ImGui_ImplOpenGL3_NewFrame();
-        if (context_->window() != nullptr) {
-            ImGui_ImplGlfw_NewFrame();
-        } else {
-            ImGui::GetIO().DisplaySize = ImVec2(float(framebuffer_size_.x), float(framebuffer_size_.y));
-            ImGui::GetIO().DeltaTime = float(dt > 0 ? dt : 1.0 / 60.0);
-        }
-        ImGui::NewFrame();
-        draw_panel(float(real_dt * 1000.0));
-        ImGui::Render();
-
-        update(time_, dt);
-        if (framebuffer_size_.x > 0 && framebuffer_size_.y > 0) {  // zero while minimised
-            if (split_view_ && split_variants())
-                render_split(*split_variants());
-            else {
-                bind_target();
-                render();
-            }
-            if (panel_visible_) {
-                bind_target();
-                ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            }
-        }
-        check_gl_errors("the frame");
+        this->frame(options, frame, tick.dt, tick.real_dt);
         const bool last = frame_limit > 0 && frame + 1 == frame_limit;
-        if (last && (!options.screenshot.empty() || headless))
-            screenshot = read_framebuffer(context_->target_framebuffer(), framebuffer_size_.x,
-                                          framebuffer_size_.y);
+        if (last && (!options.screenshot.empty() || headless)) screenshot = capture_frame(*context_, framebuffer_size_);
         context_->swap_buffers();
         timers_.collect();
         if (options.resource_log > 0 && (frame + 1) % options.resource_log == 0)
             std::cout << "resources: frame " << frame + 1 << " rss_kb " << resident_kilobytes() << " gl_objects "
                       << live_gl_objects() << std::endl;
-        running_ = true;  // a variant that fails to build from now on is shown, not fatal
+        programs_.set_running();  // a variant that fails to build from now on is shown, not fatal
     }
-    const double bench_seconds = std::chrono::duration<double>(clock::now() - bench_start).count();
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
     // Closed before the last frame: a headless target still holds the last picture.
-    if (closed_early && headless && frame > 0 && !options.screenshot.empty() && framebuffer_size_.x > 0)
-        screenshot = read_framebuffer(context_->target_framebuffer(), framebuffer_size_.x, framebuffer_size_.y);
-
-    if (!screenshot.rgba.empty()) {
-        const std::string path = options.screenshot.empty() ? "screenshots/" + step_name() + ".png"
-                                                            : options.screenshot;
-        const fs::path parent = fs::path(path).parent_path();
-        std::error_code ec;
-        if (!parent.empty()) fs::create_directories(parent, ec);
-        if (auto error = save_png(screenshot, path)) throw Error(*error);
-        std::cout << "screenshot: " << fs::absolute(path).string() << "\n";
-    }
-    if (!options.export_dir.empty()) {
-        std::error_code ec;
-        fs::create_directories(options.export_dir, ec);
-        if (ec) throw Error("--export: cannot create '" + options.export_dir + "': " + ec.message());
-        export_results(options.export_dir);
-        std::cout << "export: " << fs::absolute(options.export_dir).string() << "\n";
-    }
-    if (options.bench) {
-        std::cout << timers_.report(bench_seconds, std::max(0, frame - 1));
-        bench_extra(std::cout);
-    }
+    if (closed_early && headless && frame > 0 && !options.screenshot.empty())
+        screenshot = capture_frame(*context_, framebuffer_size_);
+    write_outputs(options, screenshot, frame, clock.bench_seconds());
 
     const GlDebugStats& gl = gl_debug_stats();
     if (gl.errors > 0 && headless) {
@@ -312,71 +179,69 @@ int App::run_loop(const Options& options) {
     return kExitOk;
 }
 
-void App::render_split(const SplitVariants& variants) {
-    // Render the whole frame once per variant (the steps' own passes stay untouched), keep the
-    // left half of the first, and put it over the second. Parameters are restored afterwards.
-    const std::string saved = params_.preset_text("split view");
-    const glm::ivec2 size = framebuffer_size_;
-    if (split_size_ != size) {
-        split_colour_ = make_renderbuffer();
-        glNamedRenderbufferStorage(split_colour_.id(), GL_RGBA8, size.x, size.y);
-        split_target_ = make_framebuffer();
-        glNamedFramebufferRenderbuffer(split_target_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, split_colour_.id());
-        split_size_ = size;
+void App::frame(const Options& options, int frame, double dt, double real_dt) {
+    framebuffer_size_ = context_->framebuffer_size();
+    if (options.exercise_minimise) framebuffer_size_ = exercise_minimise(*context_, frame, framebuffer_size_);
+    if (camera_enabled_) camera_.apply(read_camera_input(), float(real_dt));
+
+    ImGui_ImplOpenGL3_NewFrame();
+    if (context_->window() != nullptr) {
+        ImGui_ImplGlfw_NewFrame();
+    } else {
+        ImGui::GetIO().DisplaySize = ImVec2(float(framebuffer_size_.x), float(framebuffer_size_.y));
+        ImGui::GetIO().DeltaTime = float(dt > 0 ? dt : 1.0 / 60.0);
     }
-    const int middle = size.x / 2;
-    for (int side = 0; side < 2; ++side) {
-        for (const auto& assignment : side == 0 ? variants.left : variants.right)
-            if (auto error = params_.set_assignment(assignment)) panel_message_ = "split view: " + *error;
-        split_side_ = side;
-        bind_target();
-        render();
-        const GLuint target = context_->target_framebuffer();
-        if (side == 0)
-            glBlitNamedFramebuffer(target, split_target_.id(), 0, 0, middle, size.y, 0, 0, middle, size.y,
-                                   GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        else
-            glBlitNamedFramebuffer(split_target_.id(), target, 0, 0, middle, size.y, 0, 0, middle, size.y,
-                                   GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        params_.apply_preset_text(saved, "split view");
+    ImGui::NewFrame();
+    draw_panel(float(real_dt * 1000.0));
+    ImGui::Render();
+
+    update(time_, dt);
+    if (framebuffer_size_.x > 0 && framebuffer_size_.y > 0) {  // zero while minimised
+        const auto render_frame = [this] {
+            bind_target();
+            render();
+        };
+        const auto variants = split_view_ ? split_variants() : std::nullopt;
+        if (variants) {
+            std::string message;
+            split_.render(params_, *variants, framebuffer_size_, context_->target_framebuffer(), render_frame,
+                          &message);
+            if (!message.empty()) programs_.set_message(message);
+        } else {
+            render_frame();
+        }
+        if (panel_visible_) {
+            bind_target();
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        }
     }
-    split_side_ = -1;
-    // A thin white line between the halves.
-    bind_target();
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(middle - 1, 0, 2, size.y);
-    glClearColor(1, 1, 1, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glDisable(GL_SCISSOR_TEST);
+    check_gl_errors("the frame");
 }
 
-
-std::string App::step_executable(const std::string& step) const {
-    // Steps are built side by side: build/<preset>/<step>/<step>.
-    std::error_code ec;
-    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) return "";
-    const fs::path candidate = self.parent_path().parent_path() / step / step;
-    return fs::exists(candidate) ? candidate.string() : "";
+void App::write_outputs(const Options& options, const Image& screenshot, int frames, double bench_seconds) {
+    if (!screenshot.rgba.empty()) {
+        const std::string path = options.screenshot.empty() ? "screenshots/" + step_name() + ".png" : options.screenshot;
+        std::cout << "screenshot: " << save_screenshot(screenshot, path) << "\n";
+    }
+    if (!options.export_dir.empty()) {
+        export_results(prepare_export_dir(options.export_dir));
+        std::cout << "export: " << fs::absolute(options.export_dir).string() << "\n";
+    }
+    if (options.bench) {
+        std::cout << timers_.report(bench_seconds, std::max(0, frames - 1));
+        const auto extra = bench_extra();  // the step prints its own lines, then hands the figures
+        std::cout << bench_csv_line(step_name(), framebuffer_size_, timers_, bench_seconds, std::max(0, frames - 1),
+                                    extra);
+    }
 }
 
 void App::hand_over_to(const std::string& step) {
     const std::string executable = step_executable(step);
     if (executable.empty()) {
-        panel_message_ = step + " is not built next to this step";
+        programs_.set_message(step + " is not built next to this step");
         return;
     }
-    // The same moment and the same view: the camera carries over between 3D steps.
-    handoff_ = {executable, "--start-at", std::to_string(time_), "--size",
-                std::to_string(framebuffer_size_.x) + "x" + std::to_string(framebuffer_size_.y)};
-    if (camera_enabled_ && step.substr(0, 6) != "step01")
-        for (const char* name : {"camera_mode", "camera_yaw", "camera_pitch", "camera_distance", "camera_target_x",
-                                 "camera_target_y", "camera_target_z", "camera_fov"})
-            if (const Param* p = params_.find(name)) {
-                handoff_.push_back("--set");
-                handoff_.push_back(std::string(name) + "=" + p->value_text());
-            }
-    if (split_view_) handoff_.push_back("--split");
+    handoff_ = handoff_command(executable, time_, framebuffer_size_, params_, split_view_);
     context_->request_close();
 }
 
@@ -386,16 +251,6 @@ long resident_kilobytes() {
     long pages = 0, resident = 0;
     statm >> pages >> resident;
     return resident * (sysconf(_SC_PAGESIZE) / 1024);
-}
-
-int hand_off(int status, const std::vector<std::string>& command) {
-    if (command.empty()) return status;
-    std::vector<char*> argv;
-    for (const auto& a : command) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    std::cerr << "error: cannot start " << command[0] << ": " << std::strerror(errno) << std::endl;
-    return kExitRuntimeError;
 }
 
 void App::on_scroll(GLFWwindow* window, double /*dx*/, double dy) {

@@ -2,22 +2,26 @@
 // overrides a few hooks; the framework owns the context, the run loop, the clock, input, the
 // ImGui panel, shaders, screenshots and benchmarks.
 //
-//   class Step02 : public ocean::App {
-//       Step02() : App({"Sum of sines in 3D", "1.2.2", "..."}) { params().add_float(...); }
+//   class Chapter : public ocean::App {
+//       Chapter() : App({"Sum of sines in 3D", "1.2.2", "..."}) { params().add_float(...); }
 //       void init() override;                        // GL resources, programs
 //       void update(double time, double dt) override; // simulation
 //       void render() override;                      // draw into the bound target
 //       void ui() override;                          // extra panel widgets (optional)
 //   };
-//   OCEAN_MAIN(Step02)
+//   OCEAN_MAIN(Chapter)
 #pragma once
 
 #include "common/camera.hpp"
 #include "common/cli.hpp"
 #include "common/context.hpp"
 #include "common/gpu_timer.hpp"
+#include "common/grid.hpp"
+#include "common/handoff.hpp"
 #include "common/params.hpp"
+#include "common/program_library.hpp"
 #include "common/shader.hpp"
+#include "common/split_view.hpp"
 
 #include <iosfwd>
 #include <map>
@@ -35,7 +39,7 @@ struct StepInfo {
 };
 
 struct StepLocation {
-    std::string name;  // "step02_sine3d": folder, target and window title
+    std::string name;  // the step's folder, target and window title
     std::string dir;   // the step's source folder, where shaders/ lives
 };
 
@@ -60,51 +64,44 @@ public:
 
 protected:
     virtual void init() {}
+    // Once a frame, before the frame's render(s): advance the simulation, GPU passes included.
     virtual void update(double /*time*/, double /*dt*/) {}
+    // Draws the frame into the bound target. With the split view it runs twice a frame (see
+    // split_view.hpp), so per-frame state belongs in update().
     virtual void render() = 0;
     virtual void ui() {}
     // Steps that simulate maps write them for --export (after the last frame); throw ocean::Error
     // on failure.
     virtual bool supports_export() const { return false; }
     virtual void export_results(const std::string& /*dir*/) {}
-    // More --bench lines after the per-pass table (step05 compares its FFT backends).
-    virtual void bench_extra(std::ostream& /*out*/) {}
+    // Extra --bench measurements after the per-pass table, as (label, milliseconds): printed as
+    // text and carried in the machine-readable line (a step's FFT backends, say).
+    virtual std::vector<std::pair<std::string, double>> bench_extra() { return {}; }
 
-    // The split view (--split, or the panel): the chapter's two main variants, each a list of
-    // parameter assignments, drawn left and right of the screen's middle. Steps without one
-    // return nothing.
-    struct SplitVariants {
-        std::string left_label, right_label;
-        std::vector<std::string> left, right;  // "name=value" each
-    };
+    // The split view (--split, or the panel), a service a step opts into: its two variants as
+    // parameter assignments, drawn left and right of the screen's middle (split_view.hpp).
+    using SplitVariants = ocean::SplitVariants;
     virtual std::optional<SplitVariants> split_variants() const { return std::nullopt; }
-    // Every step of the repository, in order (the folders step01_* ... of the source tree).
+    // Every step of the repository, in order (CMake's list of stepNN_* folders).
     const std::vector<std::string>& all_steps() const { return all_steps_; }
     // Ends this step after the frame and starts `step` at the same time, size, camera and split
     // (the panel's Previous/Next buttons).
     void hand_over_to(const std::string& step);
 
-    // While a split frame renders: 0 for the left variant, 1 for the right, -1 otherwise. A step
-    // advances its simulation state (foam, say) only once a frame: when split_side() < 1.
-    int split_side() const { return split_side_; }
-
     ParamRegistry& params() { return params_; }
-    // Loads a program from files in the step's shaders/ folder (or --shader-dir); throws
-    // ocean::Error at start-up if it does not build. It then hot-reloads on its own.
-    ShaderProgram& load_program(const std::string& name, const std::vector<std::string>& stage_files);
-    // A compile-time variant of a program (`defines` such as "VIEW 3"), built on first use and
-    // kept. Before the first frame a failure throws like load_program; later (the user switched
-    // to a variant after breaking a shader) it returns nullptr and shows the error in the panel,
-    // and the step keeps drawing with the program it had.
-    ShaderProgram* program_variant(const std::string& name, const std::vector<std::string>& stage_files,
-                                   const std::vector<std::string>& defines);
-    // program_variant as a ProgramFactory, for a technique's classes (GpuOcean, Sky, ...).
-    ProgramFactory program_factory() {
-        return [this](const std::string& name, const std::vector<std::string>& files,
-                      const std::vector<std::string>& defines) { return program_variant(name, files, defines); };
+    // The one way to get a shader program: built on first use from the step's shaders/ (or
+    // --shader-dir, common/shaders, or "stepNN_x/shaders/file" of an earlier chapter), kept, and
+    // hot-reloaded (program_library.hpp). `defines` select a compile-time variant. A program that
+    // does not build stops the step at start-up; later, the last good program of that name is
+    // returned (nullptr only if there never was one) and the error shows in the panel.
+    ShaderProgram* program(const std::string& name, const std::vector<std::string>& stage_files,
+                           const std::vector<std::string>& defines = {}) {
+        return programs_.get(name, stage_files, defines);
     }
+    // The same, for a chapter's technique classes (GpuOcean, Sky, ...).
+    ProgramFactory program_factory() { return programs_.factory(); }
     // Declares the camera_* parameters and turns on mouse/keyboard camera control.
-    void use_camera(glm::vec3 target, float distance, float yaw_deg, float pitch_deg);
+    void use_camera(const CameraView& view);
     Camera& camera() { return camera_; }
     GpuTimers& timers() { return timers_; }
 
@@ -119,16 +116,17 @@ protected:
     // One triangle that covers the screen; pair with common/shaders/fullscreen.vert.
     void draw_fullscreen_triangle() const;
     GLuint fullscreen_vao() const { return empty_vao_.id(); }  // for passes that draw it themselves
+    // Draws `grid` with `program` from the camera (u_view_projection, u_eye set), depth-tested,
+    // timed as the "ocean" pass: the last lines of every grid-based step's render().
+    void draw_grid(const ShaderProgram& program, const GridMesh& grid, bool wireframe);
 
 private:
     int run_loop(const Options& options);
+    void frame(const Options& options, int frame, double dt, double real_dt);
+    void write_outputs(const Options& options, const struct Image& screenshot, int frames, double bench_seconds);
     void init_imgui();
     void shutdown_imgui();
-    void reload_changed_shaders();
-    std::vector<std::string> stage_paths(const std::vector<std::string>& stage_files) const;
     void draw_panel(float frame_ms);
-    void render_split(const SplitVariants& variants);
-    std::string step_executable(const std::string& step) const;
     CameraInput read_camera_input();
     static void on_scroll(struct GLFWwindow* window, double dx, double dy);
 
@@ -139,10 +137,7 @@ private:
     bool camera_enabled_ = false;
     // Declared before every GL object below so that it is destroyed after them.
     std::unique_ptr<Context> context_;
-    std::vector<std::unique_ptr<ShaderProgram>> programs_;
-    std::map<std::string, ShaderProgram*> variants_;  // name + defines -> one of programs_
-    bool running_ = false;  // past init(): build failures no longer end the program
-    std::string shader_dir_;
+    ProgramLibrary programs_;
     GpuTimers timers_;
     VertexArray empty_vao_;
     glm::ivec2 framebuffer_size_{0};
@@ -153,22 +148,15 @@ private:
     float scroll_accumulated_ = 0;
     glm::dvec2 last_mouse_{0.0};
     std::string preset_path_ = "preset.txt";
-    std::string panel_message_;
     double last_reload_check_ = 0;
     bool split_view_ = false;
+    SplitView split_;
     std::vector<std::string> handoff_;
     std::vector<std::string> all_steps_;
-    int split_side_ = -1;
-    Renderbuffer split_colour_;
-    Framebuffer split_target_;
-    glm::ivec2 split_size_{0};
 };
 
 // Resident memory of this process, kB (the soak test's sample).
 long resident_kilobytes();
-
-// Replaces this process with `command` (Prev/Next) once the step is gone, or returns status.
-int hand_off(int status, const std::vector<std::string>& command);
 
 }  // namespace ocean
 

@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include <stdexcept>
+
 namespace ocean {
 
-void Camera::declare_params(ParamRegistry& params, glm::vec3 initial_target, float initial_distance,
-                            float initial_yaw, float initial_pitch) {
+void Camera::declare_params(ParamRegistry& params, const CameraView& view) {
+    const glm::vec3 initial_target = view.target;
+    const float initial_distance = view.distance, initial_yaw = view.yaw_deg, initial_pitch = view.pitch_deg;
     params.add_choice("camera_mode", &mode, Orbit, {"orbit", "fly"},
                       "orbit turns around the target; fly moves the eye (WASD, Q/E)").in_group("camera");
     params.add_float("camera_yaw", &yaw_deg, initial_yaw, -360, 360,
@@ -63,12 +66,18 @@ namespace ocean {
 
 const std::vector<CameraPreset>& camera_presets() {
     static const std::vector<CameraPreset> presets{
-        {"overview", "above the sea, looking down at the waves", {0, 0, 0}, 70, 35, 28},
-        {"deck", "a ship's deck, 12 m up, the sea to the horizon", {0, 0, 0}, 60, 35, 12},
-        {"low", "5 m above the water, level with the crests", {0, 2, 0}, 30, 35, 7},
-        {"top", "straight down from 150 m: the pattern of the waves", {0, 0, 0}, 150, 0, 89},
+        {"overview", "above the sea, looking down at the waves", {{0, 0, 0}, 70, 35, 28}},
+        {"deck", "a ship's deck, 12 m up, the sea to the horizon", {{0, 0, 0}, 60, 35, 12}},
+        {"low", "5 m above the water, level with the crests", {{0, 2, 0}, 30, 35, 7}},
+        {"top", "straight down from 150 m: the pattern of the waves", {{0, 0, 0}, 150, 0, 89}},
     };
     return presets;
+}
+
+const CameraView& camera_view(const std::string& name) {
+    for (const auto& preset : camera_presets())
+        if (name == preset.name) return preset.view;
+    throw std::out_of_range("no camera preset '" + name + "'");
 }
 
 std::optional<std::string> apply_camera_preset(ParamRegistry& params, const std::string& name) {
@@ -79,12 +88,12 @@ std::optional<std::string> apply_camera_preset(ParamRegistry& params, const std:
         if (params.find("camera_yaw") == nullptr) return std::string("--camera: this step has no camera");
         const auto number = [](float v) { return std::to_string(v); };
         for (const auto& [key, value] :
-             std::vector<std::pair<std::string, std::string>>{{"camera_target_x", number(preset.target.x)},
-                                                              {"camera_target_y", number(preset.target.y)},
-                                                              {"camera_target_z", number(preset.target.z)},
-                                                              {"camera_distance", number(preset.distance)},
-                                                              {"camera_yaw", number(preset.yaw_deg)},
-                                                              {"camera_pitch", number(preset.pitch_deg)},
+             std::vector<std::pair<std::string, std::string>>{{"camera_target_x", number(preset.view.target.x)},
+                                                              {"camera_target_y", number(preset.view.target.y)},
+                                                              {"camera_target_z", number(preset.view.target.z)},
+                                                              {"camera_distance", number(preset.view.distance)},
+                                                              {"camera_yaw", number(preset.view.yaw_deg)},
+                                                              {"camera_pitch", number(preset.view.pitch_deg)},
                                                               {"camera_mode", "orbit"}})
             if (auto error = params.set(key, value)) return error;
         return std::nullopt;

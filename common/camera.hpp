@@ -22,13 +22,18 @@ struct CameraInput {
     bool fast = false;        // shift held
 };
 
+// Where a camera looks from: the orbit camera's target, distance and angles.
+struct CameraView {
+    glm::vec3 target;
+    float distance, yaw_deg, pitch_deg;
+};
+
 class Camera {
 public:
     enum Mode { Orbit = 0, Fly = 1 };
 
     // Declares camera_* parameters; the step chooses the defaults of its view.
-    void declare_params(ParamRegistry& params, glm::vec3 target, float distance, float yaw_deg,
-                        float pitch_deg);
+    void declare_params(ParamRegistry& params, const CameraView& view);
 
     void apply(const CameraInput& input, float dt);
     glm::vec3 eye() const;
@@ -47,10 +52,12 @@ public:
 struct CameraPreset {
     const char* name;
     const char* description;
-    glm::vec3 target;
-    float distance, yaw_deg, pitch_deg;
+    CameraView view;
 };
+// The views the 3D steps share (--camera NAME): overview, deck, low, top. A step starts from one
+// of them (App::use_camera(camera_view("deck"))), so screenshots of neighbouring steps line up.
 const std::vector<CameraPreset>& camera_presets();
+const CameraView& camera_view(const std::string& name);  // throws std::out_of_range if unknown
 // Sets the camera_* parameters to the preset's values, or returns a one-line error.
 std::optional<std::string> apply_camera_preset(ParamRegistry& params, const std::string& name);
 

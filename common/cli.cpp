@@ -113,6 +113,10 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             if (!take_value("name=value")) return result;
             if (value.find('=') == std::string::npos) return bad("name=value");
             o.sets.push_back(value);
+        } else if (name == "--carry") {
+            if (!take_value("name=value")) return result;
+            if (value.find('=') == std::string::npos) return bad("name=value");
+            o.carries.push_back(value);
         } else if (name == "--preset") {
             if (!take_value("a preset file")) return result;
             if (value.empty()) return bad("a preset file");
@@ -166,7 +170,9 @@ usage: )" + step + R"( [flags]
   --screenshot FILE.png write the last frame to FILE.png
                         (headless default: screenshots/<step>.png)
   --set name=value      set a parameter (repeatable; applied after --preset and --camera)
-  --camera NAME         a view shared by steps 02-06: overview, deck, low, top
+  --carry name=value    like --set, but ignored when this step has no such parameter
+                        (Previous/Next carry the camera with it)
+  --camera NAME         a view shared by the 3D steps: overview, deck, low, top
   --split               the chapter's two main variants side by side (left | right)
   --preset FILE         load parameters from a preset file
   --save-preset FILE    write the parameters (after --preset and --set) to FILE and exit
@@ -177,7 +183,7 @@ usage: )" + step + R"( [flags]
   --exercise-minimise   frames 2 and 3 run as if the window were minimised (size 0), then restored
   --shader-dir DIR      read this step's shaders from DIR instead of its source folder
   --export DIR          write the simulated maps and their parameters to DIR after the last
-                        frame (step05_fft and step06_foam_sky)
+                        frame (the steps that simulate maps)
   --help                this text
 
 Keys (windowed): drag to orbit, wheel to zoom, C switches orbit/fly camera (WASD, Q/E in fly),

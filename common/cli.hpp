@@ -18,13 +18,14 @@ struct Options {
     std::optional<double> start_at;    // --start-at T: a real clock that starts at T (Prev/Next)
     std::string screenshot;         // --screenshot FILE.png, written after the last frame
     std::vector<std::string> sets;  // --set name=value, in order
+    std::vector<std::string> carries;  // --carry name=value: set only where the step has `name`
     std::string preset;             // --preset FILE, applied before the --set values
     std::string save_preset;        // --save-preset FILE: write the parameters and exit
     bool list_params = false;
     bool bench = false;             // per-pass GPU times and frames per second after the run
     bool show_ui = false;           // --ui: draw the panel in headless runs (and screenshots)
     std::string shader_dir;         // --shader-dir DIR: read this step's shaders from DIR
-    std::string export_dir;         // --export DIR: the step writes its maps there (step05, step06)
+    std::string export_dir;         // --export DIR: a step that simulates maps writes them there
     std::string camera;             // --camera NAME: a shared view (camera_presets())
     bool split = false;             // --split: the chapter's two variants side by side
     int resource_log = 0;           // --resource-log N: print memory and GL objects every N frames

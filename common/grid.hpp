@@ -3,9 +3,11 @@
 #pragma once
 
 #include "common/gl.hpp"
+#include "common/params.hpp"
 
 #include <glm/vec2.hpp>
 
+#include <array>
 #include <vector>
 
 namespace ocean {
@@ -29,6 +31,35 @@ private:
     Buffer vertices_, indices_;
     int vertex_count_ = 0;
     GLsizei index_count_ = 0;
+};
+
+// The grid's size and resolution as parameters (plane_size, x_quads, z_quads), for the steps that
+// draw one plane.
+class GridParams {
+public:
+    void declare(ParamRegistry& p, float default_size = 80, int default_quads = 160) {
+        p.add_float("plane_size", &plane_size_, default_size, 1, 5000, "side of the square plane, metres")
+            .in_group("grid");
+        p.add_int("x_quads", &x_quads_, default_quads, 1, 2048, "grid cells along x (vertices: x_quads + 1)")
+            .in_group("grid");
+        p.add_int("z_quads", &z_quads_, default_quads, 1, 2048, "grid cells along z (vertices: z_quads + 1)")
+            .in_group("grid");
+    }
+
+    // Rebuilds the mesh only when its size or resolution changed.
+    void update(GridMesh& grid) {
+        const std::array<float, 3> wanted{plane_size_, float(x_quads_), float(z_quads_)};
+        if (wanted == built_for_) return;
+        grid.build({plane_size_, plane_size_}, x_quads_, z_quads_);
+        built_for_ = wanted;
+    }
+
+    int triangle_count() const { return 2 * x_quads_ * z_quads_; }
+
+private:
+    float plane_size_ = 80;
+    int x_quads_ = 160, z_quads_ = 160;
+    std::array<float, 3> built_for_{-1, -1, -1};
 };
 
 }  // namespace ocean

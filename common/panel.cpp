@@ -84,7 +84,7 @@ void App::draw_panel(float frame_ms) {
         if (ImGui::IsKeyPressed(GLFW_KEY_F1)) panel_visible_ = !panel_visible_;
         if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) context_->request_close();
         if (ImGui::IsKeyPressed(GLFW_KEY_F5))
-            for (auto& program : programs_) program->build();
+            programs_.rebuild_all();
         if (camera_enabled_ && ImGui::IsKeyPressed(GLFW_KEY_C)) {
             camera_.mode = camera_.mode == Camera::Orbit ? Camera::Fly : Camera::Orbit;
             params_.mark_changed();
@@ -150,20 +150,20 @@ void App::draw_panel(float frame_ms) {
     if (ImGui::InputText("preset file", path.data(), path.size())) preset_path_ = path.data();
     if (ImGui::Button("load preset")) {
         const auto error = params_.load_preset(preset_path_);
-        panel_message_ = error ? *error : "loaded " + preset_path_;
+        programs_.set_message(error ? *error : "loaded " + preset_path_);
     }
     ImGui::SameLine();
     if (ImGui::Button("save preset")) {
         const auto error = params_.save_preset(preset_path_, step_name() + " preset");
-        panel_message_ = error ? *error : "saved " + preset_path_;
+        programs_.set_message(error ? *error : "saved " + preset_path_);
     }
 
     ui();
 
-    if (!panel_message_.empty()) {
+    if (!programs_.message().empty()) {
         ImGui::Separator();
         ImGui::PushTextWrapPos(0);
-        ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", panel_message_.c_str());
+        ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", programs_.message().c_str());
         ImGui::PopTextWrapPos();
     }
     ImGui::End();

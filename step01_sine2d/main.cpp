@@ -1,6 +1,6 @@
 // step01_sine2d: a sum of sines, plotted in 2D on the GPU.
 // Seed sections 1.1, 1.2, 1.2.1.
-// New: everything (this is the first step). Each wave is a_i sin(x w_i + t phi_i) with
+// New: everything (this is the first step). Each wave is a_i sin(x w_i - t phi_i) with
 // w = 2 pi / wavelength and phi = speed * 2 pi / wavelength; the plot shows each wave in its
 // own colour and their sum in white, evaluated per pixel in plot.frag.
 // Controls: the panel's sliders (per-wave wavelength, amplitude, speed), add/remove buttons.
@@ -26,7 +26,7 @@ class Sine2D : public ocean::App {
 public:
     Sine2D()
         : App({"A sum of sines, in 2D", "1.1, 1.2, 1.2.1",
-               "f(x,t) = sum of a_i sin(x w_i + t phi_i), with w = 2 pi / wavelength and "
+               "f(x,t) = sum of a_i sin(x w_i - t phi_i), with w = 2 pi / wavelength and "
                "phi = speed * 2 pi / wavelength. Each wave has its own colour; white is the sum."}) {
         auto& p = params();
         p.add_int("wave_count", &wave_count_, 3, 1, kMaxWaves, "number of waves in the sum");
@@ -56,7 +56,7 @@ public:
 private:
     struct WaveParams { float wavelength, amplitude, speed; };
 
-    void init() override { plot_ = &load_program("plot", {"fullscreen.vert", "plot.frag"}); }
+    void init() override { plot_ = program("plot", {"fullscreen.vert", "plot.frag"}); }
 
     std::vector<step01::Wave> waves() const {
         std::vector<step01::Wave> out;
@@ -71,7 +71,7 @@ private:
         double total_amplitude = 0;
         for (const auto& wave : list) {
             packed.emplace_back(float(step01::angular_wavenumber(wave)), float(wave.amplitude),
-                                float(step01::phase_at(wave, time())), 0.0f);
+                                float(step01::phase_at(step01::phase_rate(wave), time())), 0.0f);
             total_amplitude += std::abs(wave.amplitude);
         }
         const glm::ivec2 size = framebuffer_size();

@@ -9,12 +9,14 @@
 // makes the wave repeat every `wavelength` metres (see README).
 #pragma once
 
+#include "common/constants.hpp"
+
 #include <cmath>
 #include <vector>
 
 namespace step01 {
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+using ocean::kTwoPi;
 
 struct Wave {
     double wavelength = 1;  // metres between crests
@@ -29,9 +31,9 @@ inline double phase_rate(const Wave& wave) { return wave.speed * kTwoPi / wave.w
 
 // The phase term -t * phi reduced to [0, 2 pi): the GPU gets it in single precision and adds it
 // to x w, so it stays exact however long the program runs (t * phi itself loses its fraction in a
-// float after hours).
-inline double phase_at(const Wave& wave, double time) {
-    const double phase = std::fmod(-time * phase_rate(wave), kTwoPi);
+// float after hours). Every sum-of-waves step (02, 04) uses this one.
+inline double phase_at(double phase_rate, double time) {
+    const double phase = std::fmod(-time * phase_rate, kTwoPi);
     return phase < 0 ? phase + kTwoPi : phase;
 }
 

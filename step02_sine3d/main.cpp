@@ -1,7 +1,7 @@
 // step02_sine3d: a plane of vertices lifted by a sum of directional sines in the vertex shader.
 // Seed section 1.2.2.
 // New since step01: the waves get a direction d_i in the x-z plane, h = sum a_i sin(d_i.(x,z) w_i
-// + t phi_i); a grid of (x_quads+1)(z_quads+1) vertices is displaced on the GPU (ocean.vert);
+// - t phi_i); a grid of (x_quads+1)(z_quads+1) vertices is displaced on the GPU (ocean.vert);
 // an orbit/fly camera; a wireframe view.
 // Controls: drag to orbit, wheel to zoom, C for the fly camera, the panel for everything else.
 #include "common/app.hpp"
@@ -17,37 +17,28 @@ public:
     Sine3D()
         : App({"A sum of sines, in 3D", "1.2.2",
                "A plane of (x_quads+1)(z_quads+1) vertices, each lifted in the vertex shader by "
-               "h = sum of a_i sin(d_i.(x,z) w_i + t phi_i). Every wave has a direction d_i. "
+               "h = sum of a_i sin(d_i.(x,z) w_i - t phi_i). Every wave has a direction d_i. "
                "Shading is only height colour and flat facets: light comes in step03."}) {
         waves_.declare(params());
         grid_params_.declare(params());
         params().add_bool("wireframe", &wireframe_, false, "draw the triangles' edges only").in_group("view");
         params().add_bool("facet_shading", &facet_shading_, true, "darken faces turned from a fixed direction")
             .in_group("view");
-        const auto& c = step02::kDefaultCamera;
-        use_camera(c.target, c.distance, c.yaw_deg, c.pitch_deg);
+        use_camera(ocean::camera_view("overview"));
     }
 
 private:
-    void init() override { ocean_ = &load_program("ocean", {"ocean.vert", "ocean.frag"}); }
 
     void update(double /*time*/, double /*dt*/) override { grid_params_.update(grid_); }
 
     void render() override {
         clear_target({0.06f, 0.07f, 0.09f});
-        glEnable(GL_DEPTH_TEST);
-
-        step02::upload_waves(*ocean_, waves_.waves(), time());
-        ocean_->set("u_view_projection", camera().projection(aspect()) * camera().view());
-        ocean_->set("u_height_extent", float(waves_.height_extent()));
-        ocean_->set("u_facet_shading", int(facet_shading_));
-        ocean_->set("u_wireframe", int(wireframe_));
-        ocean_->set("u_eye", camera().eye());
-
-        ocean::GpuScope timed(timers(), "ocean");
-        glUseProgram(ocean_->id());
-        grid_.draw(wireframe_);
-        glDisable(GL_DEPTH_TEST);
+        ocean::ShaderProgram* ocean = program("ocean", {"ocean.vert", "ocean.frag"});
+        step02::upload_waves(*ocean, waves_.waves(), time());
+        ocean->set("u_height_extent", float(waves_.height_extent()));
+        ocean->set("u_facet_shading", int(facet_shading_));
+        ocean->set("u_wireframe", int(wireframe_));
+        draw_grid(*ocean, grid_, wireframe_);
     }
 
     void ui() override {
@@ -59,10 +50,9 @@ private:
         return SplitVariants{"solid", "wireframe", {"wireframe=false"}, {"wireframe=true"}};
     }
 
-    ocean::ShaderProgram* ocean_ = nullptr;
     ocean::GridMesh grid_;
     step02::WaveParams waves_;
-    step02::GridParams grid_params_;
+    ocean::GridParams grid_params_;
     bool wireframe_ = false, facet_shading_ = true;
 };
 

@@ -1,9 +1,8 @@
 // The parameters of chapter 1.2.2's sea, declared once for every step that draws it (step02,
-// and step03 which lights the same waves): the waves, the grid and the default camera.
+// and step03 which lights the same waves).
 #pragma once
 
 #include "common/app.hpp"
-#include "common/grid.hpp"
 #include "step02_sine3d/wave_uniforms.hpp"
 
 #include <array>
@@ -11,10 +10,6 @@
 #include <string>
 
 namespace step02 {
-
-// Where steps 02-04 look from, so their screenshots line up.
-struct CameraView { glm::vec3 target; float distance, yaw_deg, pitch_deg; };
-constexpr CameraView kDefaultCamera{{0, 0, 0}, 70, 35, 28};
 
 class WaveParams {
 public:
@@ -60,33 +55,6 @@ private:
     int count_ = 4;
     float amplitude_ = 1;
     std::array<Wave, kMaxWaves> waves_{};
-};
-
-class GridParams {
-public:
-    void declare(ocean::ParamRegistry& p, float default_size = 80, int default_quads = 160) {
-        p.add_float("plane_size", &plane_size_, default_size, 1, 5000, "side of the square plane, metres")
-            .in_group("grid");
-        p.add_int("x_quads", &x_quads_, default_quads, 1, 2048, "grid cells along x (vertices: x_quads + 1)")
-            .in_group("grid");
-        p.add_int("z_quads", &z_quads_, default_quads, 1, 2048, "grid cells along z (vertices: z_quads + 1)")
-            .in_group("grid");
-    }
-
-    // Rebuilds the mesh only when its size or resolution changed.
-    void update(ocean::GridMesh& grid) {
-        const std::array<float, 3> wanted{plane_size_, float(x_quads_), float(z_quads_)};
-        if (wanted == built_for_) return;
-        grid.build({plane_size_, plane_size_}, x_quads_, z_quads_);
-        built_for_ = wanted;
-    }
-
-    int triangle_count() const { return 2 * x_quads_ * z_quads_; }
-
-private:
-    float plane_size_ = 80;
-    int x_quads_ = 160, z_quads_ = 160;
-    std::array<float, 3> built_for_{-1, -1, -1};
 };
 
 }  // namespace step02

@@ -22,7 +22,7 @@ inline void upload_waves(const ocean::ShaderProgram& program, const std::vector<
         const Direction d = direction(waves[i]);
         packed.emplace_back(float(d.x), float(d.z), float(angular_wavenumber(waves[i])),
                             float(waves[i].amplitude));
-        phases.push_back(float(phase_at(waves[i], time)));
+        phases.push_back(float(step01::phase_at(phase_rate(waves[i]), time)));
     }
     program.set("u_wave_count", int(count));
     program.set("u_waves", packed);

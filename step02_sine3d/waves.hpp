@@ -33,12 +33,6 @@ inline Direction direction(const DirectionalWave& wave) {
 inline double angular_wavenumber(const DirectionalWave& wave) { return kTwoPi / wave.wavelength; }
 inline double phase_rate(const DirectionalWave& wave) { return wave.speed * kTwoPi / wave.wavelength; }
 
-// The phase term -t * phi, reduced to [0, 2 pi) in double precision before it becomes a float.
-inline double phase_at(const DirectionalWave& wave, double time) {
-    const double phase = std::fmod(-time * phase_rate(wave), kTwoPi);
-    return phase < 0 ? phase + kTwoPi : phase;
-}
-
 inline double height(const std::vector<DirectionalWave>& waves, double x, double z, double time) {
     double h = 0;
     for (const auto& wave : waves) {

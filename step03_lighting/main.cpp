@@ -42,41 +42,32 @@ public:
             .in_group("light");
         light_.declare(p);
         p.add_bool("wireframe", &wireframe_, false, "draw the triangles' edges only").in_group("view");
-        const auto& c = step02::kDefaultCamera;
-        use_camera(c.target, c.distance, c.yaw_deg, c.pitch_deg);
+        use_camera(ocean::camera_view("overview"));
     }
 
 private:
-    void init() override {}
-
     // The compile-time variant for the current choices (see surface.glsl for why).
     ocean::ShaderProgram* ocean_variant() {
-        return program_variant("ocean", {"ocean.vert", "ocean.frag"},
-                               {"NORMAL_METHOD " + std::to_string(normal_method_), "VIEW " + std::to_string(view_),
-                                "PER_PIXEL " + std::to_string(int(lighting_ == 0))});
+        return program("ocean", {"ocean.vert", "ocean.frag"},
+                       {"NORMAL_METHOD " + std::to_string(normal_method_), "VIEW " + std::to_string(view_),
+                        "PER_PIXEL " + std::to_string(int(lighting_ == 0))});
     }
+
+    void init() override { ocean_variant(); }  // the default variant must build before the first frame
 
     void update(double /*time*/, double /*dt*/) override { grid_params_.update(grid_); }
 
     void render() override {
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
-        glEnable(GL_DEPTH_TEST);
-
-        if (ocean::ShaderProgram* variant = ocean_variant()) ocean_ = variant;
-        step02::upload_waves(*ocean_, waves_.waves(), time());
-        step03::upload_light(*ocean_, light_.light());
-        ocean_->set("u_view_projection", camera().projection(aspect()) * camera().view());
-        ocean_->set("u_eye", camera().eye());
-        ocean_->set("u_fd_step", fd_step_);
-        ocean_->set("u_angle_scale", angle_scale_);
-        ocean_->set("u_wireframe", int(wireframe_));
-        ocean_->set("u_background", step03::srgb_to_linear(clear));
-
-        ocean::GpuScope timed(timers(), "ocean");
-        glUseProgram(ocean_->id());
-        grid_.draw(wireframe_);
-        glDisable(GL_DEPTH_TEST);
+        ocean::ShaderProgram* ocean = ocean_variant();
+        step02::upload_waves(*ocean, waves_.waves(), time());
+        step03::upload_light(*ocean, light_.light());
+        ocean->set("u_fd_step", fd_step_);
+        ocean->set("u_angle_scale", angle_scale_);
+        ocean->set("u_wireframe", int(wireframe_));
+        ocean->set("u_background", step03::srgb_to_linear(clear));
+        draw_grid(*ocean, grid_, wireframe_);
     }
 
     void ui() override {
@@ -91,10 +82,9 @@ private:
                              {"normals=finite_difference"}};
     }
 
-    ocean::ShaderProgram* ocean_ = nullptr;
     ocean::GridMesh grid_;
     step02::WaveParams waves_;
-    step02::GridParams grid_params_;
+    ocean::GridParams grid_params_;
     int normal_method_ = 0, lighting_ = 0, view_ = 0;
     float fd_step_ = 1, angle_scale_ = 10;
     step03::LightParams light_;

@@ -26,8 +26,8 @@
 
 namespace step04 {
 
-using step02::kTwoPi;
-constexpr double kGravity = 9.81;
+using ocean::kGravity;
+using ocean::kTwoPi;
 
 enum class Shape { Sine = 0, ExpSine = 1 };
 
@@ -87,12 +87,6 @@ inline std::vector<FbmWave> fbm_waves(const CascadeSettings& s) {
     return waves;
 }
 
-// The phase term -t phi reduced to [0, 2 pi) in double precision (as step02's).
-inline double phase_at(const FbmWave& wave, double time) {
-    const double phase = std::fmod(-time * wave.phase_rate, kTwoPi);
-    return phase < 0 ? phase + kTwoPi : phase;
-}
-
 // Height and exact gradient of one warped cascade at p = (x, z).
 inline step03::HeightGradient cascade_height_gradient(const std::vector<FbmWave>& waves, Shape shape,
                                                       double warp, double x, double z, double time) {
@@ -100,7 +94,7 @@ inline step03::HeightGradient cascade_height_gradient(const std::vector<FbmWave>
     double j00 = 1, j01 = 0, j10 = 0, j11 = 1;    // J = dq/dp, row-major: [dqx/dx dqx/dz; dqz/dx dqz/dz]
     step03::HeightGradient g;
     for (const FbmWave& wave : waves) {
-        const double theta = (wave.dx * qx + wave.dz * qz) * wave.wavenumber + phase_at(wave, time);
+        const double theta = (wave.dx * qx + wave.dz * qz) * wave.wavenumber + step01::phase_at(wave.phase_rate, time);
         const ShapeValue v = wave_shape(shape, theta);
         g.height += wave.amplitude * v.value;
         const double slope = wave.amplitude * wave.wavenumber * v.first;  // df/d(along d)

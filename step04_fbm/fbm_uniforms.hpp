@@ -35,7 +35,7 @@ public:
                 const FbmWave& w = waves[std::size_t(i)];
                 data[std::size_t(c * kMaxWavesPerCascade + i)] = {
                     {float(w.dx), float(w.dz), float(w.wavenumber), float(w.amplitude)},
-                    {float(phase_at(w, time)), 0, 0, 0}};
+                    {float(step01::phase_at(w.phase_rate, time)), 0, 0, 0}};
             }
         }
         glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(data.size() * sizeof(GpuWave)), data.data());

@@ -7,7 +7,6 @@
 // Controls: as step02; the panel's "fbm", "cascades" and "light" groups.
 #include "common/app.hpp"
 #include "common/grid.hpp"
-#include "step02_sine3d/wave_params.hpp"
 #include "step03_lighting/light_params.hpp"
 #include "step03_lighting/light_uniforms.hpp"
 #include "step04_fbm/fbm_uniforms.hpp"
@@ -52,8 +51,7 @@ public:
         light_.declare(p);
         grid_params_.declare(p);
         p.add_bool("wireframe", &wireframe_, false, "draw the triangles' edges only").in_group("view");
-        const auto& c = step02::kDefaultCamera;
-        use_camera(c.target, c.distance, c.yaw_deg, c.pitch_deg);
+        use_camera(ocean::camera_view("overview"));
     }
 
 private:
@@ -78,22 +76,13 @@ private:
     void render() override {
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
-        glEnable(GL_DEPTH_TEST);
-
-        if (auto* variant = program_variant("ocean", {"ocean.vert", "ocean.frag"},
-                                            {"SHAPE " + std::to_string(shape_), "VIEW " + std::to_string(view_)}))
-            ocean_ = variant;
-        fbm_uniforms_->upload(*ocean_, cascades_, warp_, time());
-        step03::upload_light(*ocean_, light_.light());
-        ocean_->set("u_view_projection", camera().projection(aspect()) * camera().view());
-        ocean_->set("u_eye", camera().eye());
-        ocean_->set("u_wireframe", int(wireframe_));
-        ocean_->set("u_background", step03::srgb_to_linear(clear));
-
-        ocean::GpuScope timed(timers(), "ocean");
-        glUseProgram(ocean_->id());
-        grid_.draw(wireframe_);
-        glDisable(GL_DEPTH_TEST);
+        ocean::ShaderProgram* ocean = program("ocean", {"ocean.vert", "ocean.frag"},
+                                              {"SHAPE " + std::to_string(shape_), "VIEW " + std::to_string(view_)});
+        fbm_uniforms_->upload(*ocean, cascades_, warp_, time());
+        step03::upload_light(*ocean, light_.light());
+        ocean->set("u_wireframe", int(wireframe_));
+        ocean->set("u_background", step03::srgb_to_linear(clear));
+        draw_grid(*ocean, grid_, wireframe_);
     }
 
     void ui() override {
@@ -111,10 +100,9 @@ private:
         return SplitVariants{"sine", "exp(sin - 1)", {"shape=sine"}, {"shape=exp_sine"}};
     }
 
-    ocean::ShaderProgram* ocean_ = nullptr;
     std::unique_ptr<step04::FbmUniforms> fbm_uniforms_;  // made once the GL context exists
     ocean::GridMesh grid_;
-    step02::GridParams grid_params_;
+    ocean::GridParams grid_params_;
     step03::LightParams light_;
     std::vector<step04::Cascade> cascades_;
     unsigned cascades_generation_ = ~0u;

@@ -135,23 +135,25 @@ void GpuOcean::assemble(float choppiness) {
     glGenerateTextureMipmap(slopes_.id());
 }
 
-void GpuOcean::simulate(double time, Backend backend, float choppiness, ocean::GpuTimers& timers) {
+void GpuOcean::simulate(double time, Backend backend, float choppiness, ocean::GpuTimers* timers) {
+    ocean::GpuTimers untimed;  // disabled: its scopes cost nothing
+    ocean::GpuTimers& t = timers != nullptr ? *timers : untimed;
     const int layers = 4 * cascade_count();
     if (backend == Backend::Fftw) {
-        ocean::GpuScope t(timers, "fftw+upload");
+        ocean::GpuScope scope(t, "fftw+upload");
         upload_cpu_fields(time);
     } else {
         {
-            ocean::GpuScope t(timers, "evolve");
+            ocean::GpuScope scope(t, "evolve");
             evolve(time);
         }
-        ocean::GpuScope t(timers, backend == Backend::Dft ? "dft" : "fft");
+        ocean::GpuScope scope(t, backend == Backend::Dft ? "dft" : "fft");
         if (backend == Backend::Dft)
             transform_dft(spectra_.id(), fields_.id(), layers);
         else
             transform_fft(spectra_.id(), fields_.id(), layers);
     }
-    ocean::GpuScope t(timers, "assemble");
+    ocean::GpuScope scope(t, "assemble");
     assemble(choppiness);
 }
 
@@ -179,34 +181,40 @@ std::string format_ms(const char* label, double ms) {
 
 }  // namespace
 
-std::vector<std::string> time_backends(GpuOcean& ocean, double time, int repeats) {
-    const int n = ocean.resolution(), layers = 4 * ocean.cascade_count();
-    std::vector<std::string> lines;
+BackendTimes time_backends(GpuOcean& ocean, double time, int repeats) {
+    BackendTimes t;
+    t.n = ocean.resolution();
+    t.layers = 4 * ocean.cascade_count();
+    t.repeats = repeats;
     ocean.evolve(time);
-    const double fft = median_ms(repeats, [&] { ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), layers); });
-    double dft = 0;
-    if (n <= kMaxDftSize)
-        dft = median_ms(repeats, [&] { ocean.transform_dft(ocean.spectra_buffer(), ocean.fields_buffer(), layers); });
-    // FFTW: the same four transforms (double precision, planned once), timed without the upload.
-    FftwInverse2d fftw(n);
-    std::vector<ComplexField> inputs(std::size_t(layers), ComplexField(std::size_t(n) * n, Complex(0.5, -0.25)));
-    const double cpu = median_ms(repeats, [&] {
+    t.gpu_fft_ms = median_ms(repeats, [&] { ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers); });
+    if (t.n <= kMaxDftSize)
+        t.dft_ms = median_ms(repeats, [&] { ocean.transform_dft(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers); });
+    // FFTW: the same transforms (double precision, planned once), timed without the upload.
+    FftwInverse2d fftw(t.n);
+    std::vector<ComplexField> inputs(std::size_t(t.layers), ComplexField(std::size_t(t.n) * t.n, Complex(0.5, -0.25)));
+    t.fftw_ms = median_ms(repeats, [&] {
         for (const auto& input : inputs) fftw.run(input);
     });
-    lines.push_back("N = " + std::to_string(n) + ", " + std::to_string(layers) + " complex maps:");
-    if (n <= kMaxDftSize) lines.push_back(format_ms("DFT", dft));
-    else lines.push_back("DFT      (only for N <= 64)");
-    lines.push_back(format_ms("GPU FFT", fft));
-    lines.push_back(format_ms("FFTW", cpu));
+    ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers);  // leave the frame's result
+    return t;
+}
+
+std::vector<std::string> BackendTimes::lines() const {
+    std::vector<std::string> out;
+    out.push_back("N = " + std::to_string(n) + ", " + std::to_string(layers) + " complex maps, median of " +
+                  std::to_string(repeats) + ", wall ms around glFinish:");
+    out.push_back(n <= kMaxDftSize ? format_ms("DFT", dft_ms) : "DFT      (only for N <= 64)");
+    out.push_back(format_ms("GPU FFT", gpu_fft_ms));
+    out.push_back(format_ms("FFTW", fftw_ms));
     char ratio[160];
     if (n <= kMaxDftSize) {
-        std::snprintf(ratio, sizeof ratio, "DFT / GPU FFT = %.1f", dft / fft);
-        lines.push_back(ratio);
+        std::snprintf(ratio, sizeof ratio, "DFT / GPU FFT = %.1f", dft_ms / gpu_fft_ms);
+        out.push_back(ratio);
     }
-    std::snprintf(ratio, sizeof ratio, "GPU FFT / FFTW = %.3f", fft / cpu);
-    lines.push_back(ratio);
-    ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), layers);  // leave the frame's result
-    return lines;
+    std::snprintf(ratio, sizeof ratio, "GPU FFT / FFTW = %.3f", gpu_fft_ms / fftw_ms);
+    out.push_back(ratio);
+    return out;
 }
 
 std::vector<float> GpuOcean::read_fields() const {

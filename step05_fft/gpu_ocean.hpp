@@ -31,7 +31,9 @@ public:
 
     // One frame: evolve to `time`, inverse-transform with `backend`, unpack into the textures.
     // The FFTW backend evolves and transforms on the CPU (in double) and uploads the fields.
-    void simulate(double time, Backend backend, float choppiness, ocean::GpuTimers& timers);
+    // With `timers`, each pass is timed on its own (evolve, fft, assemble); without, the caller
+    // may time the whole (step06's "simulation").
+    void simulate(double time, Backend backend, float choppiness, ocean::GpuTimers* timers = nullptr);
 
     // The passes one by one (simulate calls them; tests and the benchmark call them alone).
     void evolve(double time);
@@ -63,8 +65,18 @@ private:
     std::unique_ptr<FftwInverse2d> fftw_;  // the FFTW backend's plan
 };
 
-// Times the same transforms (4 complex N x N fields) with each backend, `repeats` times, and
-// returns one line per backend with the median, plus the ratios (for the panel and --bench).
-std::vector<std::string> time_backends(GpuOcean& ocean, double time, int repeats);
+// The same transforms (4 complex N x N fields per cascade) timed with each backend: medians of
+// `repeats` runs, wall ms around glFinish (dft 0 when N > 64).
+struct BackendTimes {
+    int n = 0, layers = 0, repeats = 0;
+    double dft_ms = 0, gpu_fft_ms = 0, fftw_ms = 0;
+    // One line per backend and the ratios (the panel and --bench print them).
+    std::vector<std::string> lines() const;
+    // For --bench's machine-readable line.
+    std::vector<std::pair<std::string, double>> figures() const {
+        return {{"dft_ms", dft_ms}, {"gpu_fft_ms", gpu_fft_ms}, {"fftw_ms", fftw_ms}};
+    }
+};
+BackendTimes time_backends(GpuOcean& ocean, double time, int repeats);
 
 }  // namespace step05

@@ -8,7 +8,6 @@
 // Controls: as step02; the panel's "spectrum" group, the backend and the map views.
 #include "common/app.hpp"
 #include "common/grid.hpp"
-#include "step02_sine3d/wave_params.hpp"
 #include "step03_lighting/light_params.hpp"
 #include "step03_lighting/light_uniforms.hpp"
 #include "step05_fft/export.hpp"
@@ -47,9 +46,7 @@ public:
         light_.declare(p);
         grid_params_.declare(p, 800, 400);  // several tiles: the sea reaches the horizon
         p.add_bool("wireframe", &wireframe_, false, "draw the triangles' edges only").in_group("view");
-        // step02's heading, lower and closer: an open sea, seen from a ship's deck (12 m up).
-        const auto& c = step02::kDefaultCamera;
-        use_camera(c.target, 60, c.yaw_deg, 12);
+        use_camera(ocean::camera_view("deck"));  // an open sea, seen from a ship's deck (12 m up)
     }
 
 private:
@@ -82,37 +79,29 @@ private:
     }
 
     void render() override {
-        gpu_->simulate(time(), backend(), ocean_params_.choppiness(), timers());
+        gpu_->simulate(time(), backend(), ocean_params_.choppiness(), &timers());
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
         if (view_ > 0) {
             draw_map_view();
             return;
         }
-        auto* variant = program_variant("ocean", {"ocean.vert", "ocean.frag"}, {"NORMALS " + std::to_string(normals_)});
-        if (variant != nullptr) ocean_ = variant;
-        step03::upload_light(*ocean_, light_.light());
-        ocean_->set("u_view_projection", camera().projection(aspect()) * camera().view());
-        ocean_->set("u_eye", camera().eye());
-        ocean_->set("u_patch_size", float(spectrum_params_.patch_size));
-        ocean_->set("u_resolution", spectrum_params_.resolution);
-        ocean_->set("u_wireframe", int(wireframe_));
-        ocean_->set("u_background", step03::srgb_to_linear(clear));
-        ocean_->set("u_displacement", 0);
-        ocean_->set("u_slopes", 1);
+        ocean::ShaderProgram* ocean = program("ocean", {"ocean.vert", "ocean.frag"}, {"NORMALS " + std::to_string(normals_)});
+        step03::upload_light(*ocean, light_.light());
+        ocean->set("u_patch_size", float(spectrum_params_.patch_size));
+        ocean->set("u_resolution", spectrum_params_.resolution);
+        ocean->set("u_wireframe", int(wireframe_));
+        ocean->set("u_background", step03::srgb_to_linear(clear));
+        ocean->set("u_displacement", 0);
+        ocean->set("u_slopes", 1);
         glBindTextureUnit(0, gpu_->displacement_texture());
         glBindTextureUnit(1, gpu_->slopes_texture());
-
-        ocean::GpuScope timed(timers(), "ocean");
-        glEnable(GL_DEPTH_TEST);
-        glUseProgram(ocean_->id());
-        grid_.draw(wireframe_);
-        glDisable(GL_DEPTH_TEST);
+        draw_grid(*ocean, grid_, wireframe_);
     }
 
     void draw_map_view() {
-        auto* p = program_variant("map_view", {"fullscreen.vert", "map_view.frag"}, {});
-        if (p == nullptr) return;
+        ocean::ShaderProgram* p = program("map_view", {"fullscreen.vert", "map_view.frag"});
+        if (p == nullptr) return;  // first asked for after a shader broke: nothing to draw with
         const int map = view_ - 1;
         float range = map_range_;
         if (range <= 0) {  // about 2.5 standard deviations of the height; slopes and J - 1 within 0.5
@@ -134,7 +123,7 @@ private:
     void ui() override {
         ImGui::Separator();
         spectrum_view_.draw_ui();
-        if (ImGui::Button("compare the backends")) backend_times_ = step05::time_backends(*gpu_, time(), 3);
+        if (ImGui::Button("compare the backends")) backend_times_ = step05::time_backends(*gpu_, time(), 3).lines();
         for (const auto& line : backend_times_) ImGui::TextUnformatted(line.c_str());
     }
 
@@ -144,10 +133,10 @@ private:
                             spectrum_params_.patch_size, time(), ocean_params_.choppiness(), params());
     }
 
-    void bench_extra(std::ostream& out) override {
-        out << "bench: the same transforms (4 complex " << gpu_->resolution() << "x" << gpu_->resolution()
-            << " fields), median of 9, wall ms around glFinish:\n";
-        for (const auto& line : step05::time_backends(*gpu_, time(), 9)) out << "bench: " << line << "\n";
+    std::vector<std::pair<std::string, double>> bench_extra() override {
+        const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 9);
+        for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
+        return times.figures();
     }
 
     // The seed's DFT against the FFT: the same sea (the DFT needs resolution 64).
@@ -157,13 +146,12 @@ private:
 
     step05::OceanParams ocean_params_;
     step03::LightParams light_;
-    step02::GridParams grid_params_;
+    ocean::GridParams grid_params_;
     std::unique_ptr<step05::GpuOcean> gpu_;
     std::unique_ptr<step05::InitialSpectrum> spectrum_;
     step05::SpectrumParams spectrum_params_;
     step05::SpectrumView spectrum_view_;
     ocean::GridMesh grid_;
-    ocean::ShaderProgram* ocean_ = nullptr;
     std::vector<std::string> backend_times_;
     int backend_ = 1, normals_ = 0, view_ = 0;
     float map_range_ = 0;

@@ -9,6 +9,8 @@
 // the variance of the sea surface, in m^2, when amplitude_scale = 1.
 #pragma once
 
+#include "common/constants.hpp"
+
 #include <complex>
 #include <cstdint>
 #include <string>
@@ -16,8 +18,8 @@
 
 namespace step05 {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kGravity = 9.81;
+using ocean::kGravity;
+using ocean::kPi;
 
 enum class SpectrumModel { Jonswap = 0, Phillips = 1 };
 // JONSWAP's alpha and omega_p come from two separate fits to the 1973 data, and together they

@@ -64,7 +64,7 @@ public:
         p.add_choice("debug_map", &debug_map_, 0,
                      {"height", "displacement_x", "displacement_z", "slope_x", "slope_z", "jacobian"},
                      "view=cascade_map: which map");
-        use_camera({0, 2, 0}, 30, 35, 7);
+        use_camera(ocean::camera_view("low"));  // 5 m above the water, level with the crests
     }
 
 private:
@@ -98,24 +98,24 @@ private:
             if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
         }
         patches_.build(patch_count_, patch_size_);
-        dt_ = dt;
+        // Once a frame, whatever the split view shows: the sea, its foam and the sky move on.
+        {
+            ocean::GpuScope timed(timers(), "simulation");
+            gpu_->simulate(time(), step05::Backend::GpuFft, ocean_params_.choppiness());
+        }
+        update_foam(dt);
+        ocean::GpuScope timed(timers(), "sky");
+        sky_->render(look_.sky(time(), ocean_params_.spectrum().wind_direction));
     }
 
-    void simulate() {
-        ocean::GpuScope timed(timers(), "simulation");
-        gpu_->evolve(time());
-        gpu_->transform_fft(gpu_->spectra_buffer(), gpu_->fields_buffer(), 4 * step06::kCascades);
-        gpu_->assemble(ocean_params_.choppiness());
-    }
-
-    void update_foam() {
+    void update_foam(double dt) {
         ocean::GpuScope timed(timers(), "foam");
         step06::FoamSettings settings;
         settings.threshold = foam_threshold_;
         settings.injection = foam_injection_;
         settings.decay_rate = foam_decay_;
         const glm::vec3 eye = camera().eye(), forward = camera().forward();
-        foam_->update(*gpu_, cascade_view(), {eye.x, eye.z}, {forward.x, forward.z}, dt_, settings);
+        foam_->update(*gpu_, cascade_view(), {eye.x, eye.z}, {forward.x, forward.z}, dt, settings);
     }
 
     step06::CascadeView cascade_view() const {
@@ -145,8 +145,7 @@ private:
     void draw_sea() {
         const glm::mat4 view_projection = camera().projection(aspect()) * camera().view();
         {
-            auto* sky = program_variant("sky", {"fullscreen.vert", "sky.frag"}, {});
-            if (sky != nullptr) {
+            if (ocean::ShaderProgram* sky = program("sky", {"fullscreen.vert", "sky.frag"})) {
                 // The sun's disc is drawn here, not kept in the cubemap: the water's specular term
                 // is the sun's reflection, and a disc in the reflected sky would count it twice.
                 const step06::SkySettings settings = look_.sky(time(), ocean_params_.spectrum().wind_direction);
@@ -162,26 +161,25 @@ private:
             }
         }
         const int debug = view_ >= 1 && view_ <= 4 ? view_ : 0;
-        auto* p = program_variant("ocean", {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"},
-                          {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug)});
-        if (p != nullptr) ocean_ = p;
-        if (ocean_ == nullptr) return;
+        ocean::ShaderProgram* ocean =
+            program("ocean", {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"},
+                    {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug)});
         ocean::GpuScope timed(timers(), "ocean");
-        bind_cascades(*ocean_);
-        look_.upload_shading(*ocean_);
+        bind_cascades(*ocean);
+        look_.upload_shading(*ocean);
         const glm::vec3 eye = camera().eye();
-        ocean_->set("u_view_projection", view_projection);
-        ocean_->set("u_eye", eye);
-        ocean_->set("u_grid_offset", glm::floor(glm::vec2(eye.x, eye.z) / patch_size_) * patch_size_);
-        ocean_->set("u_patch_size", patch_size_);
-        ocean_->set("u_tess_scale", tess_scale_);
-        ocean_->set("u_frustum", step06::frustum_planes(view_projection));
-        ocean_->set("u_max_displacement", max_displacement_);
-        ocean_->set("u_cull", int(cull_));
-        ocean_->set("u_sky_max_lod", sky_->max_lod());
-        ocean_->set("u_wireframe", int(wireframe_));
+        ocean->set("u_view_projection", view_projection);
+        ocean->set("u_eye", eye);
+        ocean->set("u_grid_offset", glm::floor(glm::vec2(eye.x, eye.z) / patch_size_) * patch_size_);
+        ocean->set("u_patch_size", patch_size_);
+        ocean->set("u_tess_scale", tess_scale_);
+        ocean->set("u_frustum", step06::frustum_planes(view_projection));
+        ocean->set("u_max_displacement", max_displacement_);
+        ocean->set("u_cull", int(cull_));
+        ocean->set("u_sky_max_lod", sky_->max_lod());
+        ocean->set("u_wireframe", int(wireframe_));
         glEnable(GL_DEPTH_TEST);
-        glUseProgram(ocean_->id());
+        glUseProgram(ocean->id());
         if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
         patches_.draw();
         if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
@@ -189,8 +187,8 @@ private:
     }
 
     void draw_cascade_map() {
-        auto* p = program_variant("map_view", {"fullscreen.vert", "step05_fft/shaders/map_view.frag"}, {});
-        if (p == nullptr) return;
+        ocean::ShaderProgram* p = program("map_view", {"fullscreen.vert", "step05_fft/shaders/map_view.frag"});
+        if (p == nullptr) return;  // first asked for after a shader broke: nothing to draw with
         p->set("u_map", debug_map_);
         p->set("u_range", debug_map_ <= 2 ? 1.0f : 0.5f);
         p->set("u_resolution", glm::vec2(framebuffer_size()));
@@ -204,12 +202,6 @@ private:
     }
 
     void render() override {
-        if (split_side() < 1) {  // the right half of a split frame reuses the left's simulation
-            simulate();
-            update_foam();
-            ocean::GpuScope timed(timers(), "sky");
-            sky_->render(look_.sky(time(), ocean_params_.spectrum().wind_direction));
-        }
         if (view_ == 5) {
             bind_target();
             clear_target({0, 0, 0});
@@ -223,14 +215,15 @@ private:
         const bool bloom = look_.show("bloom") && view_ == 0;
         if (bloom) {
             ocean::GpuScope timed(timers(), "bloom");
-            auto* down = program_variant("bloom_down", {"fullscreen.vert", "bloom_down.frag"}, {});
-            auto* up = program_variant("bloom_up", {"fullscreen.vert", "bloom_up.frag"}, {});
+            ocean::ShaderProgram* down = program("bloom_down", {"fullscreen.vert", "bloom_down.frag"});
+            ocean::ShaderProgram* up = program("bloom_up", {"fullscreen.vert", "bloom_up.frag"});
             if (down != nullptr && up != nullptr) post_.bloom(*down, *up, look_.bloom_threshold, fullscreen_vao());
         }
         ocean::GpuScope timed(timers(), "tonemap");
         bind_target();
-        auto* tonemap = program_variant("tonemap", {"fullscreen.vert", "tonemap.frag"},
-                                {"TONEMAPPER " + std::to_string(view_ == 0 ? look_.tonemapper : 2)});
+        ocean::ShaderProgram* tonemap =
+            program("tonemap", {"fullscreen.vert", "tonemap.frag"},
+                    {"TONEMAPPER " + std::to_string(view_ == 0 ? look_.tonemapper : 2)});
         if (tonemap == nullptr) return;
         tonemap->set("u_scene", 0);
         tonemap->set("u_bloom", 1);
@@ -255,10 +248,10 @@ private:
                     sky_->uses_image() ? "from an image" : "procedural");
     }
 
-    void bench_extra(std::ostream& out) override {
-        out << "bench: the same transforms (all " << 4 * step06::kCascades << " complex " << gpu_->resolution() << "x"
-            << gpu_->resolution() << " maps of the 4 cascades), median of 5, wall ms around glFinish:\n";
-        for (const auto& line : step05::time_backends(*gpu_, time(), 5)) out << "bench: " << line << "\n";
+    std::vector<std::pair<std::string, double>> bench_extra() override {
+        const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 5);  // all 4 cascades' maps
+        for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
+        return times.figures();
     }
 
     bool supports_export() const override { return true; }
@@ -287,7 +280,6 @@ private:
     std::vector<std::unique_ptr<step05::InitialSpectrum>> spectra_;
     step05::SpectrumParams shared_spectrum_;
     std::unique_ptr<step06::FoamSimulation> foam_;
-    ocean::ShaderProgram* ocean_ = nullptr;
     std::string sky_image_loaded_;
     float foam_threshold_ = 0.7f, foam_injection_ = 8, foam_decay_ = 0.8f;
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
@@ -296,7 +288,6 @@ private:
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
-    double dt_ = 0;
 };
 
 }  // namespace

@@ -92,9 +92,8 @@ TEST_F(GerstnerMode, CpuProfileIsTheTrochoidAndJIsSmallestAtTheCrest) {
 TEST_F(GerstnerMode, GpuTexturesHoldTheTrochoid) {
     GpuOcean ocean(cache.factory());
     ocean.set_spectra({&spectrum});
-    ocean::GpuTimers timers;
     const double t = 7.3;
-    ocean.simulate(t, Backend::GpuFft, 1.0f, timers);
+    ocean.simulate(t, Backend::GpuFft, 1.0f);
     std::vector<float> displacement(kN * kN * 4), slopes(kN * kN * 4);
     glGetTextureSubImage(ocean.displacement_texture(), 0, 0, 0, 0, kN, kN, 1, GL_RGBA, GL_FLOAT,
                          GLsizei(displacement.size() * sizeof(float)), displacement.data());

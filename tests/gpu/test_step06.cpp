@@ -37,8 +37,7 @@ struct Step06Gpu : ocean_test::GlTest {
         }
         auto ocean = std::make_unique<step05::GpuOcean>(factory());
         ocean->set_spectra(pointers);
-        ocean::GpuTimers timers;
-        ocean->simulate(0, step05::Backend::GpuFft, 1, timers);
+        ocean->simulate(0, step05::Backend::GpuFft, 1);
         return ocean;
     }
 };
@@ -89,8 +88,7 @@ WindySea windy_sea(ocean::ProgramFactory factory, double time, float choppiness)
     }
     sea.gpu = std::make_unique<step05::GpuOcean>(std::move(factory));
     sea.gpu->set_spectra(pointers);
-    ocean::GpuTimers timers;
-    sea.gpu->simulate(time, step05::Backend::GpuFft, choppiness, timers);
+    sea.gpu->simulate(time, step05::Backend::GpuFft, choppiness);
     return sea;
 }
 
@@ -164,8 +162,7 @@ TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {
     const auto before = foam.read_level(0);
     const glm::ivec2 origin_before = foam.window(0).origin;
     // Change the sea under the foam (another time), so that a kept cell and a restarted one differ.
-    ocean::GpuTimers timers;
-    sea.gpu->simulate(5.5, step05::Backend::GpuFft, 1.6f, timers);
+    sea.gpu->simulate(5.5, step05::Backend::GpuFft, 1.6f);
     foam.update(*sea.gpu, all_cascades(), {13.0, -7.0}, {1, 0}, 0.0, settings);
     const auto after = foam.read_level(0);
     const glm::ivec2 shift = foam.window(0).origin - origin_before;

@@ -32,7 +32,7 @@ TEST_F(WaveReadback, Step01SumOfSinesMatchesTheCpu) {
         std::vector<glm::vec4> packed;
         for (const auto& w : waves)
             packed.emplace_back(float(step01::angular_wavenumber(w)), float(w.amplitude),
-                                float(step01::phase_at(w, t)), 0.0f);
+                                float(step01::phase_at(step01::phase_rate(w), t)), 0.0f);
         program.set("u_wave_count", int(waves.size()));
         program.set("u_waves", packed);
         program.set("u_x_range", glm::vec2(-20.0f, 20.0f));

@@ -202,7 +202,7 @@ namespace {
 TEST(CameraPresets, SetTheCameraParametersOrSayWhatExists) {
     ocean::ParamRegistry params;
     ocean::Camera camera;
-    camera.declare_params(params, {0, 0, 0}, 10, 0, 20);
+    camera.declare_params(params, {{0, 0, 0}, 10, 0, 20});
     ASSERT_FALSE(ocean::apply_camera_preset(params, "deck"));
     EXPECT_FLOAT_EQ(camera.distance, 60);
     EXPECT_FLOAT_EQ(camera.pitch_deg, 12);

@@ -1,0 +1,51 @@
+#include "common/handoff.hpp"
+
+#include "common/app.hpp"
+#include "common/text.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+
+namespace ocean {
+
+namespace fs = std::filesystem;
+
+std::string step_executable(const std::string& step) {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) return "";
+    const fs::path candidate = self.parent_path().parent_path() / step / step;
+    return fs::exists(candidate) ? candidate.string() : "";
+}
+
+std::vector<std::string> handoff_command(const std::string& executable, double time, glm::ivec2 size,
+                                         ParamRegistry& params, bool split) {
+    std::vector<std::string> command = {executable, "--start-at", std::to_string(time), "--size",
+                                        std::to_string(size.x) + "x" + std::to_string(size.y)};
+    for (const char* name : {"camera_mode", "camera_yaw", "camera_pitch", "camera_distance", "camera_target_x",
+                             "camera_target_y", "camera_target_z", "camera_fov"})
+        if (const Param* p = params.find(name)) {
+            command.push_back("--carry");
+            command.push_back(std::string(name) + "=" + p->value_text());
+        }
+    if (split) command.push_back("--split");
+    return command;
+}
+
+int hand_off(int status, const std::vector<std::string>& command) {
+    if (command.empty()) return status;
+    std::vector<char*> argv;
+    for (const auto& a : command) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    std::cerr << "error: cannot start " << command[0] << ": " << std::strerror(errno) << std::endl;
+    return kExitRuntimeError;
+}
+
+std::vector<std::string> repository_steps() { return split(OCEAN_STEP_LIST, ','); }
+
+}  // namespace ocean

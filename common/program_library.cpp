@@ -1,0 +1,68 @@
+#include "common/program_library.hpp"
+
+#include "common/error.hpp"
+#include "common/text.hpp"
+
+#include <filesystem>
+#include <iostream>
+
+namespace ocean {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> ProgramLibrary::stage_paths(const std::vector<std::string>& stage_files) const {
+    std::vector<std::string> paths;
+    for (const auto& file : stage_files) {
+        if (file.find('/') != std::string::npos) {
+            paths.push_back((fs::path(OCEAN_SOURCE_DIR) / file).string());
+            continue;
+        }
+        const fs::path own = fs::path(shader_dir_) / file;
+        const fs::path shared = fs::path(OCEAN_SOURCE_DIR) / "common" / "shaders" / file;
+        paths.push_back((fs::exists(own) || !fs::exists(shared) ? own : shared).string());
+    }
+    return paths;
+}
+
+ShaderProgram* ProgramLibrary::get(const std::string& name, const std::vector<std::string>& stage_files,
+                                   const std::vector<std::string>& defines) {
+    const std::string key = name + "|" + join(defines, "|");
+    if (auto it = by_key_.find(key); it != by_key_.end()) return last_good_[name] = it->second;
+    const auto fallback = [&]() -> ShaderProgram* {
+        const auto previous = last_good_.find(name);
+        return previous == last_good_.end() ? nullptr : previous->second;
+    };
+    // A variant that failed is tried again only once one of its files has changed.
+    auto failed = failed_.find(key);
+    if (failed != failed_.end() && !failed->second->sources_changed()) return fallback();
+    const std::string label = defines.empty() ? name : name + " [" + join(defines, ", ") + "]";
+    auto program = failed != failed_.end()
+                       ? std::move(failed->second)
+                       : std::make_unique<ShaderProgram>(label, stage_paths(stage_files), std::vector<std::string>{},
+                                                         defines);
+    if (failed != failed_.end()) failed_.erase(failed);
+    if (auto error = program->build()) {
+        if (!running_) throw Error("shader program '" + label + "' does not build: " + first_line_summary(*error));
+        std::cerr << "shader program '" << label << "' does not build:\n" << *error;
+        message_ = "'" + label + "' does not build (previous program kept):\n" + *error;
+        failed_[key] = std::move(program);
+        return fallback();
+    }
+    programs_.push_back(std::move(program));
+    return last_good_[name] = by_key_[key] = programs_.back().get();
+}
+
+void ProgramLibrary::reload(bool all) {
+    for (auto& program : programs_) {
+        if (!all && !program->sources_changed()) continue;
+        if (auto error = program->build()) {
+            std::cerr << "shader reload failed, keeping the last good '" << program->name() << "':\n" << *error;
+            message_ = "reload failed (last good program kept):\n" + *error;
+        } else {
+            std::cerr << "shader '" << program->name() << "' reloaded\n";
+            message_.clear();
+        }
+    }
+}
+
+}  // namespace ocean

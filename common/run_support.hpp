@@ -1,0 +1,70 @@
+// The run loop's collaborators (App::run_loop in app.cpp strings them together): the frame
+// clock, closing on Ctrl-C, capturing and writing the last frame, the --export folder, the
+// test hook that plays a minimised window, and the machine-readable --bench line.
+#pragma once
+
+#include "common/cli.hpp"
+#include "common/context.hpp"
+#include "common/gpu_timer.hpp"
+#include "common/image.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <chrono>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ocean {
+
+// Simulation time and frame time. With --time or --dt the clock is fixed (deterministic runs):
+// every frame advances it by --dt (0 without). Otherwise it follows the wall clock, from --start-at.
+class FrameClock {
+public:
+    explicit FrameClock(const Options& options);
+    double start_time() const { return start_time_; }
+    struct Tick {
+        double dt;       // what the simulation advances (0 when paused)
+        double real_dt;  // wall seconds since the previous frame (camera speed, the panel)
+        double wall;     // wall seconds since the start
+    };
+    Tick tick(int frame, bool paused);
+    // Wall seconds since frame 1: the first frame pays for compilation and uploads.
+    double bench_seconds() const;
+
+private:
+    using Clock = std::chrono::steady_clock;
+    bool fixed_;
+    double fixed_dt_, start_time_;
+    Clock::time_point start_ = Clock::now(), previous_ = start_, bench_start_ = start_;
+};
+
+// Ctrl-C (SIGINT) and SIGTERM close the step like its window's close button while this object
+// lives: the frame ends, the GL objects are released, the exit status is 0.
+class CloseOnSignal {
+public:
+    CloseOnSignal();
+    ~CloseOnSignal();
+    CloseOnSignal(const CloseOnSignal&) = delete;
+    CloseOnSignal& operator=(const CloseOnSignal&) = delete;
+    bool requested() const;
+};
+
+// The picture in the context's target (nothing while minimised).
+Image capture_frame(const Context& context, glm::ivec2 size);
+// Writes a screenshot (creating its folder); returns its absolute path. Throws ocean::Error.
+std::string save_screenshot(const Image& image, const std::string& path);
+// Creates the --export folder; returns it. Throws ocean::Error.
+std::string prepare_export_dir(const std::string& dir);
+
+// --exercise-minimise: frames 2 and 3 get a 0x0 framebuffer, as a minimised window reports (and
+// a real window is iconified and restored). Returns the size the frame should use.
+glm::ivec2 exercise_minimise(Context& context, int frame, glm::ivec2 size);
+
+// The --bench results as one CSV row, the format ./ocean bench collects (said here only):
+//   bench-csv-header: step,size,fps,total_ms,passes,<extra labels>
+//   bench-csv: <step>,<WxH>,<fps>,<sum of the passes' wall ms>,<pass=ms;...>,<extra ms...>
+std::string bench_csv_line(const std::string& step, glm::ivec2 size, GpuTimers& timers, double wall_seconds,
+                           int frames, const std::vector<std::pair<std::string, double>>& extra);
+
+}  // namespace ocean
