@@ -40,7 +40,7 @@ function(add_step name)
     if(ARG_LIBRARY)
       target_link_libraries(${name}_tests PRIVATE ${name}_lib)
     endif()
-    target_include_directories(${name}_tests PRIVATE "${PROJECT_SOURCE_DIR}")
+    target_include_directories(${name}_tests PRIVATE "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
     target_compile_definitions(${name}_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
       OCEAN_STEP_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
     ocean_warnings(${name}_tests)

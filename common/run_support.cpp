@@ -4,6 +4,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -96,7 +97,7 @@ std::string bench_csv_line(const std::string& step, glm::ivec2 size, GpuTimers& 
     for (const auto& [label, ms] : extra) {
         header += "," + label;
         std::snprintf(number, sizeof number, "%.3f", ms);
-        row += "," + std::string(number);
+        row += "," + (std::isfinite(ms) ? std::string(number) : std::string());  // not measured: empty
     }
     return "bench-csv-header: " + header + "\nbench-csv: " + row + "\n";
 }

@@ -64,6 +64,7 @@ glm::ivec2 exercise_minimise(Context& context, int frame, glm::ivec2 size);
 // The --bench results as one CSV row, the format ./ocean bench collects (said here only):
 //   bench-csv-header: step,size,fps,total_ms,passes,<extra labels>
 //   bench-csv: <step>,<WxH>,<fps>,<sum of the passes' wall ms>,<pass=ms;...>,<extra ms...>
+// (an extra figure that is not a finite number, not measured, is left empty)
 std::string bench_csv_line(const std::string& step, glm::ivec2 size, GpuTimers& timers, double wall_seconds,
                            int frames, const std::vector<std::pair<std::string, double>>& extra);
 

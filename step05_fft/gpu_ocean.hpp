@@ -8,6 +8,7 @@
 #include "common/shader.hpp"
 #include "step05_fft/ocean_maps.hpp"
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
@@ -69,7 +70,7 @@ private:
 // `repeats` runs, wall ms around glFinish (dft 0 when N > 64).
 struct BackendTimes {
     int n = 0, layers = 0, repeats = 0;
-    double dft_ms = 0, gpu_fft_ms = 0, fftw_ms = 0;
+    double dft_ms = std::nan(""), gpu_fft_ms = 0, fftw_ms = 0;  // no DFT above N = 64
     // One line per backend and the ratios (the panel and --bench print them).
     std::vector<std::string> lines() const;
     // For --bench's machine-readable line.
