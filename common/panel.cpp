@@ -16,31 +16,44 @@ bool param_widget(Param& p) {
     const char* label = p.name().c_str();
     bool changed = false;
     switch (p.type()) {
-        case ParamType::Float:
-            changed = ImGui::SliderFloat(label, p.float_value(), float(p.min()), float(p.max()), "%.3g",
+        // The widgets edit a copy; set_number clamps it to the registry's range (typed values,
+        // ctrl-click, can leave a slider's) and tells the parameter's generations.
+        case ParamType::Float: {
+            float value = float(p.number());
+            changed = ImGui::SliderFloat(label, &value, float(p.min()), float(p.max()), "%.3g",
                                          p.is_logarithmic() ? ImGuiSliderFlags_Logarithmic : 0);
-            // Typed values (ctrl-click) can leave the slider's range; the registry's range holds.
-            *p.float_value() = std::clamp(*p.float_value(), float(p.min()), float(p.max()));
+            if (changed) p.set_number(value);
             break;
-        case ParamType::Int:
-            changed = ImGui::SliderInt(label, p.int_value(), int(p.min()), int(p.max()));
-            *p.int_value() = std::clamp(*p.int_value(), int(p.min()), int(p.max()));
+        }
+        case ParamType::Int: {
+            int value = int(p.number());
+            changed = ImGui::SliderInt(label, &value, int(p.min()), int(p.max()));
+            if (changed) p.set_number(value);
             break;
-        case ParamType::Bool: changed = ImGui::Checkbox(label, p.bool_value()); break;
+        }
+        case ParamType::Bool: {
+            bool value = p.number() != 0;
+            changed = ImGui::Checkbox(label, &value);
+            if (changed) p.set_number(value ? 1 : 0);
+            break;
+        }
         case ParamType::Choice: {
             const auto& choices = p.choices();
-            int& value = *p.int_value();
+            const int value = int(p.number());
             if (ImGui::BeginCombo(label, choices[std::size_t(value)].c_str())) {
                 for (int i = 0; i < int(choices.size()); ++i)
                     if (ImGui::Selectable(choices[std::size_t(i)].c_str(), i == value)) {
-                        value = i;
+                        p.set_number(i);
                         changed = true;
                     }
                 ImGui::EndCombo();
             }
             break;
         }
-        case ParamType::Color: changed = ImGui::ColorEdit3(label, &p.color_value()->x); break;
+        case ParamType::Color:
+            changed = ImGui::ColorEdit3(label, &p.color_value()->x);
+            if (changed) p.changed();
+            break;
         case ParamType::Text: {
             std::array<char, 1025> buffer{};
             p.text_value()->copy(buffer.data(), buffer.size() - 1);

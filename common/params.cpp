@@ -66,10 +66,10 @@ std::string Param::range_text() const {
 
 std::string Param::value_text() const {
     switch (type_) {
-        case ParamType::Float: return format_number(*float_);
-        case ParamType::Int: return std::to_string(*int_);
-        case ParamType::Bool: return *bool_ ? "true" : "false";
-        case ParamType::Choice: return choices_.at(static_cast<std::size_t>(*int_));
+        case ParamType::Float: return format_number(get_());
+        case ParamType::Int: return std::to_string(static_cast<long long>(get_()));
+        case ParamType::Bool: return get_() != 0 ? "true" : "false";
+        case ParamType::Choice: return choices_.at(static_cast<std::size_t>(get_()));
         case ParamType::Color:
             return format_number(color_->r) + "," + format_number(color_->g) + "," +
                    format_number(color_->b);
@@ -163,67 +163,128 @@ std::optional<std::string> Param::check_text(const std::string& text) const {
 std::optional<std::string> Param::set_from_text(const std::string& text) {
     Parsed parsed;
     if (auto error = parse(text, parsed)) return error;
+    const std::string before = value_text();
     switch (type_) {
-        case ParamType::Float: *float_ = static_cast<float>(parsed.number); break;
+        case ParamType::Float:
         case ParamType::Int:
-        case ParamType::Choice: *int_ = static_cast<int>(parsed.number); break;
-        case ParamType::Bool: *bool_ = parsed.number != 0; break;
+        case ParamType::Choice:
+        case ParamType::Bool: put_(parsed.number); break;
         case ParamType::Color: *color_ = parsed.color; break;
         case ParamType::Text: *text_ = parsed.text; break;
     }
+    if (value_text() != before) changed();
     return std::nullopt;
 }
 
+void Param::set_number(double value) {
+    const double clamped = std::clamp(value, min_, max_);
+    if (clamped == get_()) return;
+    put_(clamped);
+    changed();
+}
+
+void Param::changed() const {
+    for (Generation* g : generations_) ++g->value;
+}
+
 void Param::reset() {
+    const std::string before = value_text();
     switch (type_) {
-        case ParamType::Float: *float_ = static_cast<float>(default_number_); break;
+        case ParamType::Float:
         case ParamType::Int:
-        case ParamType::Choice: *int_ = static_cast<int>(default_number_); break;
-        case ParamType::Bool: *bool_ = default_number_ != 0; break;
+        case ParamType::Choice:
+        case ParamType::Bool: put_(default_number_); break;
         case ParamType::Color: *color_ = default_color_; break;
         case ParamType::Text: *text_ = default_text_; break;
     }
+    if (value_text() != before) changed();
 }
 
 Param& ParamRegistry::add(std::unique_ptr<Param> param) {
     if (find(param->name_) != nullptr)
         throw std::logic_error("parameter '" + param->name_ + "' declared twice");
-    param->reset();
+    param->reset();  // the default stored (a double bound to a float range keeps its value)
     params_.push_back(std::move(param));
     return *params_.back();
 }
 
-Param& ParamRegistry::add_float(const std::string& name, float* value, float def, float min,
-                                float max, const std::string& help) {
+Param& ParamRegistry::add_number(const std::string& name, ParamType type, std::function<double()> get,
+                                 std::function<void(double)> put, double min, double max, const std::string& help,
+                                 std::vector<std::string> choices) {
     auto p = std::make_unique<Param>();
-    p->name_ = name; p->help_ = help; p->type_ = ParamType::Float; p->float_ = value;
-    p->default_number_ = def; p->min_ = min; p->max_ = max;
+    p->name_ = name; p->help_ = help; p->type_ = type;
+    p->default_number_ = get();
+    p->get_ = std::move(get); p->put_ = std::move(put);
+    p->min_ = min; p->max_ = max; p->choices_ = std::move(choices);
     return add(std::move(p));
+}
+
+Param& ParamRegistry::add_float(const std::string& name, float* value, float def, float min, float max,
+                                const std::string& help) {
+    *value = def;
+    return add_float(name, value, min, max, help);
+}
+
+Param& ParamRegistry::add_float(const std::string& name, float* value, float min, float max, const std::string& help) {
+    return add_number(name, ParamType::Float, [value] { return double(*value); },
+                      [value](double v) { *value = float(v); }, min, max, help);
+}
+
+Param& ParamRegistry::add_float(const std::string& name, double* value, double min, double max,
+                                const std::string& help) {
+    // Stored as a float would be (what the panel and presets show), so that a preset written and
+    // read back gives the same double.
+    *value = double(float(*value));
+    return add_number(name, ParamType::Float, [value] { return *value; },
+                      [value](double v) { *value = double(float(v)); }, min, max, help);
 }
 
 Param& ParamRegistry::add_int(const std::string& name, int* value, int def, int min, int max,
                               const std::string& help) {
-    auto p = std::make_unique<Param>();
-    p->name_ = name; p->help_ = help; p->type_ = ParamType::Int; p->int_ = value;
-    p->default_number_ = def; p->min_ = min; p->max_ = max;
-    return add(std::move(p));
+    *value = def;
+    return add_int(name, value, min, max, help);
 }
 
-Param& ParamRegistry::add_bool(const std::string& name, bool* value, bool def,
-                               const std::string& help) {
-    auto p = std::make_unique<Param>();
-    p->name_ = name; p->help_ = help; p->type_ = ParamType::Bool; p->bool_ = value;
-    p->default_number_ = def ? 1 : 0; p->min_ = 0; p->max_ = 1;
-    return add(std::move(p));
+Param& ParamRegistry::add_int(const std::string& name, int* value, int min, int max, const std::string& help) {
+    return add_number(name, ParamType::Int, [value] { return double(*value); },
+                      [value](double v) { *value = int(v); }, min, max, help);
 }
 
-Param& ParamRegistry::add_choice(const std::string& name, int* value, int def,
-                                 std::vector<std::string> choices, const std::string& help) {
-    auto p = std::make_unique<Param>();
-    p->name_ = name; p->help_ = help; p->type_ = ParamType::Choice; p->int_ = value;
-    p->default_number_ = def; p->min_ = 0; p->max_ = static_cast<double>(choices.size()) - 1;
-    p->choices_ = std::move(choices);
-    return add(std::move(p));
+Param& ParamRegistry::add_int(const std::string& name, std::uint64_t* value, int min, int max,
+                              const std::string& help) {
+    return add_number(name, ParamType::Int, [value] { return double(*value); },
+                      [value](double v) { *value = std::uint64_t(v); }, min, max, help);
+}
+
+Param& ParamRegistry::add_bool(const std::string& name, bool* value, bool def, const std::string& help) {
+    *value = def;
+    return add_bool(name, value, help);
+}
+
+Param& ParamRegistry::add_bool(const std::string& name, bool* value, const std::string& help) {
+    return add_number(name, ParamType::Bool, [value] { return *value ? 1.0 : 0.0; },
+                      [value](double v) { *value = v != 0; }, 0, 1, help);
+}
+
+Param& ParamRegistry::add_choice(const std::string& name, int* value, int def, std::vector<std::string> choices,
+                                 const std::string& help) {
+    *value = def;
+    const double last = double(choices.size()) - 1;
+    return add_number(name, ParamType::Choice, [value] { return double(*value); },
+                      [value](double v) { *value = int(v); }, 0, last, help, std::move(choices));
+}
+
+Param& ParamRegistry::add_choice(const std::string& name, int* value, const std::vector<int>& values,
+                                 const std::string& help) {
+    std::vector<std::string> names;
+    for (int v : values) names.push_back(std::to_string(v));
+    const auto index_of = [values](int v) {
+        const auto it = std::find(values.begin(), values.end(), v);
+        return it == values.end() ? 0.0 : double(it - values.begin());
+    };
+    return add_number(name, ParamType::Choice, [value, index_of] { return index_of(*value); },
+                      [value, values](double i) { *value = values.at(std::size_t(i)); }, 0,
+                      double(values.size()) - 1, help, std::move(names));
 }
 
 Param& ParamRegistry::add_color(const std::string& name, glm::vec3* value, glm::vec3 def,

@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -16,6 +17,13 @@
 namespace ocean {
 
 enum class ParamType { Float, Int, Bool, Choice, Color, Text };
+
+// A change counter: a parameter declared with `.bumps(counter)` increments it whenever its value
+// changes through the registry (--set, a preset, reset, the panel). A step compares the counter
+// with the one it last built for, instead of comparing structs field by field.
+struct Generation {
+    unsigned value = 1;  // a step's "built for" starts at 0: the first frame always builds
+};
 
 class Param {
 public:
@@ -28,6 +36,7 @@ public:
     Param& in_group(std::string group) { group_ = std::move(group); return *this; }
     Param& visible_if(std::function<bool()> predicate) { visible_ = std::move(predicate); return *this; }
     Param& logarithmic() { logarithmic_ = true; return *this; }
+    Param& bumps(Generation& generation) { generations_.push_back(&generation); return *this; }
 
     bool visible() const { return !visible_ || visible_(); }
     bool is_logarithmic() const { return logarithmic_; }
@@ -43,12 +52,13 @@ public:
     std::optional<std::string> check_text(const std::string& text) const;
     void reset();
 
-    // Bound storage and limits, for the UI.
-    float* float_value() const { return float_; }
-    int* int_value() const { return int_; }
-    bool* bool_value() const { return bool_; }
+    // The bound value, for the UI: numbers (Float, Int, Bool as 0/1, Choice as its index) read and
+    // written through one accessor whatever the storage (float, double, int, uint64, enum).
+    double number() const { return get_(); }
+    void set_number(double value);  // clamped to the range; bumps the generations when it changed
     glm::vec3* color_value() const { return color_; }
     std::string* text_value() const { return text_; }
+    void changed() const;  // bumps every Generation this parameter feeds
     double min() const { return min_; }
     double max() const { return max_; }
     const std::vector<std::string>& choices() const { return choices_; }
@@ -60,9 +70,8 @@ private:
 
     std::string name_, help_, group_;
     ParamType type_ = ParamType::Float;
-    float* float_ = nullptr;
-    int* int_ = nullptr;  // Int and Choice
-    bool* bool_ = nullptr;
+    std::function<double()> get_;         // Float, Int, Bool, Choice
+    std::function<void(double)> put_;
     glm::vec3* color_ = nullptr;
     std::string* text_ = nullptr;
     std::string default_text_;
@@ -72,18 +81,36 @@ private:
     std::vector<std::string> choices_;
     std::function<bool()> visible_;
     bool logarithmic_ = false;
+    std::vector<Generation*> generations_;
 };
 
 class ParamRegistry {
 public:
-    // Each declaration stores the default into *value at once. Names are snake_case, unique.
+    // Each declaration binds a parameter to the variable the math uses. With a `def` argument it
+    // stores the default into *value at once; without, the variable's current value is the default
+    // (the struct's own initialiser, or what the step set just before: the default is written
+    // once). Names are snake_case, unique.
     Param& add_float(const std::string& name, float* value, float def, float min, float max,
                      const std::string& help);
+    Param& add_float(const std::string& name, float* value, float min, float max, const std::string& help);
+    Param& add_float(const std::string& name, double* value, double min, double max, const std::string& help);
     Param& add_int(const std::string& name, int* value, int def, int min, int max,
                    const std::string& help);
+    Param& add_int(const std::string& name, int* value, int min, int max, const std::string& help);
+    Param& add_int(const std::string& name, std::uint64_t* value, int min, int max, const std::string& help);
     Param& add_bool(const std::string& name, bool* value, bool def, const std::string& help);
+    Param& add_bool(const std::string& name, bool* value, const std::string& help);
     Param& add_choice(const std::string& name, int* value, int def,
                       std::vector<std::string> choices, const std::string& help);
+    // An enum bound directly: choice i is the enumerator with value i.
+    template <class Enum>
+    Param& add_choice(const std::string& name, Enum* value, std::vector<std::string> choices, const std::string& help) {
+        return add_number(name, ParamType::Choice, [value] { return double(int(*value)); },
+                          [value](double v) { *value = Enum(int(v)); }, 0, double(choices.size()) - 1, help,
+                          std::move(choices));
+    }
+    // An int that takes one of a few values (a resolution: 64, 128, ...), shown by value.
+    Param& add_choice(const std::string& name, int* value, const std::vector<int>& values, const std::string& help);
     Param& add_color(const std::string& name, glm::vec3* value, glm::vec3 def,
                      const std::string& help);
     // Free text on one line (a file name): at most 1024 characters, no '#' (presets' comments).
@@ -114,6 +141,10 @@ public:
 
 private:
     Param& add(std::unique_ptr<Param> param);
+    // A number bound through accessors; the default is the value they read now.
+    Param& add_number(const std::string& name, ParamType type, std::function<double()> get,
+                      std::function<void(double)> put, double min, double max, const std::string& help,
+                      std::vector<std::string> choices = {});
     std::string unknown_name_message(const std::string& name) const;
 
     std::vector<std::unique_ptr<Param>> params_;

@@ -56,8 +56,9 @@ private:
 
     void update(double /*time*/, double /*dt*/) override {
         grid_params_.update(grid_);
-        const step05::SpectrumParams wanted = ocean_params_.spectrum();
-        if (!spectrum_ || !step05::same_spectrum(wanted, spectrum_params_)) {
+        if (spectrum_built_for_ != ocean_params_.changes.value) {  // a spectrum parameter moved
+            spectrum_built_for_ = ocean_params_.changes.value;
+            const step05::SpectrumParams& wanted = ocean_params_.spectrum();
             spectrum_params_ = wanted;
             spectrum_ = std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(wanted));
             gpu_->set_spectra({spectrum_.get()});
@@ -79,7 +80,7 @@ private:
     }
 
     void render() override {
-        gpu_->simulate(time(), backend(), ocean_params_.choppiness(), &timers());
+        gpu_->simulate(time(), backend(), ocean_params_.choppiness, &timers());
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
         if (view_ > 0) {
@@ -130,7 +131,7 @@ private:
     bool supports_export() const override { return true; }
     void export_results(const std::string& dir) override {
         step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
-                            spectrum_params_.patch_size, time(), ocean_params_.choppiness(), params());
+                            spectrum_params_.patch_size, time(), ocean_params_.choppiness, params());
     }
 
     std::vector<std::pair<std::string, double>> bench_extra() override {
@@ -149,7 +150,8 @@ private:
     ocean::GridParams grid_params_;
     std::unique_ptr<step05::GpuOcean> gpu_;
     std::unique_ptr<step05::InitialSpectrum> spectrum_;
-    step05::SpectrumParams spectrum_params_;
+    step05::SpectrumParams spectrum_params_;  // what spectrum_ was made from
+    unsigned spectrum_built_for_ = 0;
     step05::SpectrumView spectrum_view_;
     ocean::GridMesh grid_;
     std::vector<std::string> backend_times_;

@@ -210,14 +210,6 @@ double resolved_variance(const SpectrumParams& p) {
     return sum;
 }
 
-bool same_spectrum(const SpectrumParams& a, const SpectrumParams& b) {
-    return a.model == b.model && a.energy == b.energy && a.wind_speed == b.wind_speed && a.wind_direction == b.wind_direction &&
-           a.fetch == b.fetch && a.gamma == b.gamma && a.spread == b.spread && a.swell == b.swell &&
-           a.depth == b.depth && a.tma == b.tma && a.patch_size == b.patch_size && a.resolution == b.resolution &&
-           a.seed == b.seed && a.amplitude_scale == b.amplitude_scale && a.low_cutoff == b.low_cutoff &&
-           a.high_cutoff == b.high_cutoff;
-}
-
 std::string validate(const SpectrumParams& p) {
     const int n = p.resolution;
     if (n < 64 || n > 512 || (n & (n - 1)) != 0)

@@ -30,9 +30,9 @@ enum class JonswapEnergy { Fitted = 0, GrowthLaw = 1 };
 
 struct SpectrumParams {
     SpectrumModel model = SpectrumModel::Jonswap;
-    double wind_speed = 12;        // U, m/s at 10 m
+    double wind_speed = 9;         // U, m/s at 10 m
     double wind_direction = 30;    // degrees, direction the wind blows towards (0 = +x, 90 = +z)
-    double fetch = 300000;         // F, metres of open water upwind
+    double fetch = 100000;         // F, metres of open water upwind
     double gamma = 3.3;            // JONSWAP peak enhancement
     JonswapEnergy energy = JonswapEnergy::Fitted;
     double spread = 0.2;           // fraction of the energy spread evenly over all directions
@@ -129,8 +129,6 @@ private:
     double spare_ = 0;
 };
 
-// True when a and b give the same h0 and omega (so nothing needs recomputing).
-bool same_spectrum(const SpectrumParams& a, const SpectrumParams& b);
 
 // A one-line problem with the parameters, or "" (resolution not a power of two in [64, 512]...).
 std::string validate(const SpectrumParams& p);

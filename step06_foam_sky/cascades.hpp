@@ -7,6 +7,7 @@
 // the last band ends at the circle the last grid resolves, pi N / L_3.
 #pragma once
 
+#include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
 
 #include <array>
@@ -15,11 +16,13 @@
 namespace step06 {
 
 constexpr int kCascades = 4;
-// step06's defaults for the shared spectrum (the tests use the same sea): a fresh breeze over
-// cascade 0's 500 m tile, choppy.
-constexpr float kLargestTile = 500;
-constexpr float kDefaultWindSpeed = 14;
-constexpr float kDefaultChoppiness = 1.6f;
+// step06's sea, where it differs from step05's (the tests use the same): a fresh breeze over
+// cascade 0's 500 m tile, choppy. Set before OceanParams::declare, so these are the defaults.
+inline void use_default_sea(step05::OceanParams& params) {
+    params.sea.patch_size = 500;
+    params.sea.wind_speed = 14;
+    params.choppiness = 1.6f;
+}
 constexpr double kWavesPerTileAtBoundary = 6;
 
 struct Band {

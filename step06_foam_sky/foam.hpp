@@ -14,6 +14,7 @@
 #pragma once
 
 #include "common/gl.hpp"
+#include "common/params.hpp"
 #include "step05_fft/gpu_ocean.hpp"
 
 #include <glm/vec2.hpp>
@@ -29,6 +30,15 @@ struct FoamSettings {
     double injection = 8;     // foam per second per unit of (threshold - J)
     double decay_rate = 0.8;  // 1/s: foam fades as exp(-decay_rate t)
 };
+
+// foam_threshold, foam_injection, foam_decay, bound to `settings` (their defaults are its own).
+inline void declare_foam_params(ocean::ParamRegistry& p, FoamSettings& settings) {
+    p.add_float("foam_threshold", &settings.threshold, -1, 2, "Jacobian below which foam appears (bias)")
+        .in_group("foam");
+    p.add_float("foam_injection", &settings.injection, 0, 100, "foam added per second per unit below the threshold")
+        .in_group("foam");
+    p.add_float("foam_decay", &settings.decay_rate, 0, 20, "foam fades as exp(-decay t), per second").in_group("foam");
+}
 
 // A new foam texel starts where injection and decay would balance for the current J, so the
 // first frame already has foam on the crests (a fixed clock, dt = 0, would otherwise never grow

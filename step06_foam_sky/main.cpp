@@ -38,16 +38,12 @@ public:
                "where the Jacobian folds the surface; scatter + microfacet specular + sky reflection with "
                "Fresnel; a sky with sun and clouds; fog, bloom and a filmic tonemapper."}) {
         auto& p = params();
-        ocean_params_.declare(p, step06::kLargestTile, 2, step06::kDefaultWindSpeed, step06::kDefaultChoppiness);
+        step06::use_default_sea(ocean_params_);  // step05's spectrum, over a 500 m first tile, in a fresh breeze
+        ocean_params_.declare(p);
         for (int c = 0; c < step06::kCascades; ++c)
             p.add_bool("cascade_" + std::to_string(c), &cascade_on_[c], true,
                        "draw cascade " + std::to_string(c) + " (0: the longest waves)").in_group("cascades");
-        p.add_float("foam_threshold", &foam_threshold_, 0.7f, -1, 2, "Jacobian below which foam appears (bias)")
-            .in_group("foam");
-        p.add_float("foam_injection", &foam_injection_, 8, 0, 100, "foam added per second per unit below the threshold")
-            .in_group("foam");
-        p.add_float("foam_decay", &foam_decay_, 0.8f, 0, 20, "foam fades as exp(-decay t), per second")
-            .in_group("foam");
+        step06::declare_foam_params(p, foam_settings_);
         p.add_float("tess_scale", &tess_scale_, 12, 0.5f, 64, "edge level = tess_scale * patch / distance")
             .in_group("geometry");
         p.add_float("tess_patch_size", &patch_size_, 16, 2, 200, "side of a tessellated patch, metres").in_group("geometry");
@@ -75,8 +71,9 @@ private:
     }
 
     void update(double /*time*/, double dt) override {
-        const step05::SpectrumParams wanted = ocean_params_.spectrum();
-        if (spectra_.empty() || !step05::same_spectrum(wanted, shared_spectrum_)) {
+        if (spectrum_built_for_ != ocean_params_.changes.value) {  // a spectrum parameter moved
+            spectrum_built_for_ = ocean_params_.changes.value;
+            const step05::SpectrumParams& wanted = ocean_params_.spectrum();
             shared_spectrum_ = wanted;
             spectra_.clear();
             std::vector<const step05::InitialSpectrum*> pointers;
@@ -92,7 +89,7 @@ private:
         // A bound on how far any point moves, for the frustum culling: five standard deviations of
         // the height, and as much again times the choppiness sideways (|D~| = |h~| mode by mode).
         // Every frame: the choppiness may change without the spectrum changing.
-        max_displacement_ = float(5 * std::sqrt(height_variance_) * (1 + ocean_params_.choppiness())) + 1.0f;
+        max_displacement_ = float(5 * std::sqrt(height_variance_) * (1 + ocean_params_.choppiness)) + 1.0f;
         if (look_.sky_image != sky_image_loaded_) {
             sky_image_loaded_ = look_.sky_image;
             if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
@@ -101,7 +98,7 @@ private:
         // Once a frame, whatever the split view shows: the sea, its foam and the sky move on.
         {
             ocean::GpuScope timed(timers(), "simulation");
-            gpu_->simulate(time(), step05::Backend::GpuFft, ocean_params_.choppiness());
+            gpu_->simulate(time(), step05::Backend::GpuFft, ocean_params_.choppiness);
         }
         update_foam(dt);
         ocean::GpuScope timed(timers(), "sky");
@@ -110,12 +107,8 @@ private:
 
     void update_foam(double dt) {
         ocean::GpuScope timed(timers(), "foam");
-        step06::FoamSettings settings;
-        settings.threshold = foam_threshold_;
-        settings.injection = foam_injection_;
-        settings.decay_rate = foam_decay_;
         const glm::vec3 eye = camera().eye(), forward = camera().forward();
-        foam_->update(*gpu_, cascade_view(), {eye.x, eye.z}, {forward.x, forward.z}, dt, settings);
+        foam_->update(*gpu_, cascade_view(), {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
     }
 
     step06::CascadeView cascade_view() const {
@@ -258,7 +251,7 @@ private:
     void export_results(const std::string& dir) override {
         // The rendered surface (all cascades) and the foam, on one grid around the camera.
         ocean::ProgramFactory programs = program_factory();
-        step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view(), time(), ocean_params_.choppiness(),
+        step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view(), time(), ocean_params_.choppiness,
                                params());
     }
 
@@ -281,7 +274,8 @@ private:
     step05::SpectrumParams shared_spectrum_;
     std::unique_ptr<step06::FoamSimulation> foam_;
     std::string sky_image_loaded_;
-    float foam_threshold_ = 0.7f, foam_injection_ = 8, foam_decay_ = 0.8f;
+    step06::FoamSettings foam_settings_;
+    unsigned spectrum_built_for_ = 0;
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
     double height_variance_ = 0;  // m^2, of the summed cascades
     int split_effect_ = 0;

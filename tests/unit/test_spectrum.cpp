@@ -220,6 +220,8 @@ TEST(Step05Energy, HeightVarianceMatchesTheSpectrumIntegral) {
     // U = 12 m/s, F = 300 km: k_p = 0.044 rad/m, 7 lattice steps of a 1000 m tile. The annulus
     // runs from 2.5 dk (where S is below 1e-4 of its peak) to 60 dk (inside the Nyquist circle).
     SpectrumParams p;
+    p.wind_speed = 12;
+    p.fetch = 300000;
     p.resolution = 128;
     p.patch_size = 1000;
     p.depth = 10000;
