@@ -2,7 +2,10 @@
 
 #include "common/text.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <utility>
 #include <cstdlib>
 
 namespace ocean {
@@ -59,21 +62,22 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             return !has_inline_value;
         };
 
-        if (name == "--help" || name == "-h") {
+        // The flags that take a non-empty text.
+        struct TextFlag { const char* flag; std::string Options::*member; const char* what; };
+        static const TextFlag texts[] = {
+            {"--preset", &Options::preset, "a preset file"}, {"--save-preset", &Options::save_preset, "a preset file"},
+            {"--camera", &Options::camera, "a camera name"}, {"--export", &Options::export_dir, "a directory"},
+            {"--shader-dir", &Options::shader_dir, "a directory"}};
+        // The flags that take no value, each setting one switch.
+        static const std::pair<const char*, bool Options::*> switches[] = {
+            {"--help", &Options::help}, {"-h", &Options::help}, {"--headless", &Options::headless},
+            {"--list-params", &Options::list_params}, {"--bench", &Options::bench}, {"--ui", &Options::show_ui},
+            {"--exercise-minimise", &Options::exercise_minimise}, {"--split", &Options::split}};
+        const auto a_switch = std::find_if(std::begin(switches), std::end(switches),
+                                           [&](const auto& s) { return name == s.first; });
+        if (a_switch != std::end(switches)) {
             if (!no_value()) return result;
-            o.help = true;
-        } else if (name == "--headless") {
-            if (!no_value()) return result;
-            o.headless = true;
-        } else if (name == "--list-params") {
-            if (!no_value()) return result;
-            o.list_params = true;
-        } else if (name == "--bench") {
-            if (!no_value()) return result;
-            o.bench = true;
-        } else if (name == "--ui") {
-            if (!no_value()) return result;
-            o.show_ui = true;
+            o.*(a_switch->second) = true;
         } else if (name == "--size") {
             if (!take_value("WxH")) return result;
             const auto parts = split(lowercase(value), 'x');
@@ -89,16 +93,11 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             const auto n = parse_integer(value);
             if (!n || *n < 1 || *n > 100000000) return bad("a frame count in [1, 100000000]");
             o.frames = static_cast<int>(*n);
-        } else if (name == "--time") {
+        } else if (name == "--time" || name == "--start-at") {
             if (!take_value("seconds")) return result;
             const auto t = parse_double(value);
             if (!t || *t < 0 || *t > 1e9) return bad("a time in seconds in [0, 1e9]");
-            o.start_time = *t;
-        } else if (name == "--start-at") {
-            if (!take_value("seconds")) return result;
-            const auto t = parse_double(value);
-            if (!t || *t < 0 || *t > 1e9) return bad("a time in seconds in [0, 1e9]");
-            o.start_at = *t;
+            (name == "--time" ? o.start_time : o.start_at) = *t;
         } else if (name == "--dt") {
             if (!take_value("seconds")) return result;
             const auto dt = parse_double(value);
@@ -109,45 +108,21 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             if (value.size() < 5 || lowercase(value.substr(value.size() - 4)) != ".png")
                 return bad("a path ending in .png");
             o.screenshot = value;
-        } else if (name == "--set") {
+        } else if (name == "--set" || name == "--carry") {
             if (!take_value("name=value")) return result;
             if (value.find('=') == std::string::npos) return bad("name=value");
-            o.sets.push_back(value);
-        } else if (name == "--carry") {
-            if (!take_value("name=value")) return result;
-            if (value.find('=') == std::string::npos) return bad("name=value");
-            o.carries.push_back(value);
-        } else if (name == "--preset") {
-            if (!take_value("a preset file")) return result;
-            if (value.empty()) return bad("a preset file");
-            o.preset = value;
-        } else if (name == "--save-preset") {
-            if (!take_value("a preset file")) return result;
-            if (value.empty()) return bad("a preset file");
-            o.save_preset = value;
-        } else if (name == "--camera") {
-            if (!take_value("a camera name")) return result;
-            if (value.empty()) return bad("a camera name");
-            o.camera = value;
+            (name == "--set" ? o.sets : o.carries).push_back(value);
+        } else if (const auto text = std::find_if(std::begin(texts), std::end(texts),
+                                                  [&](const TextFlag& t) { return name == t.flag; });
+                   text != std::end(texts)) {
+            if (!take_value(text->what)) return result;
+            if (value.empty()) return bad(text->what);
+            o.*(text->member) = value;
         } else if (name == "--resource-log") {
             if (!take_value("a frame interval")) return result;
             const auto n = parse_integer(value);
             if (!n || *n < 1 || *n > 1000000) return bad("a frame interval in [1, 1000000]");
             o.resource_log = int(*n);
-        } else if (name == "--exercise-minimise") {
-            if (!no_value()) return result;
-            o.exercise_minimise = true;
-        } else if (name == "--split") {
-            if (!no_value()) return result;
-            o.split = true;
-        } else if (name == "--export") {
-            if (!take_value("a directory")) return result;
-            if (value.empty()) return bad("a directory");
-            o.export_dir = value;
-        } else if (name == "--shader-dir") {
-            if (!take_value("a directory")) return result;
-            if (value.empty()) return bad("a directory");
-            o.shader_dir = value;
         } else {
             result.error = "unknown flag '" + ellipsize(flag, 40) + "' (--help lists the flags)";
             return result;

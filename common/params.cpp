@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 #include <string_view>
 
 namespace ocean {
@@ -219,48 +220,46 @@ Param& ParamRegistry::add_number(const std::string& name, ParamType type, std::f
     return add(std::move(p));
 }
 
+template <class T>
+Param& ParamRegistry::bind(const std::string& name, ParamType type, T* value, double min, double max,
+                           const std::string& help) {
+    if constexpr (std::is_same_v<T, double>) {
+        // Stored as a float would be (what the panel and presets show), so that a preset written
+        // and read back gives the same double.
+        *value = double(float(*value));
+        return add_number(name, type, [value] { return *value; }, [value](double v) { *value = double(float(v)); },
+                          min, max, help);
+    } else {
+        return add_number(name, type, [value] { return double(*value); }, [value](double v) { *value = T(v); }, min,
+                          max, help);
+    }
+}
+
 Param& ParamRegistry::add_float(const std::string& name, float* value, float def, float min, float max,
                                 const std::string& help) {
-    *value = def;
-    return add_float(name, value, min, max, help);
+    return add_float(name, &(*value = def), min, max, help);
 }
-
 Param& ParamRegistry::add_float(const std::string& name, float* value, float min, float max, const std::string& help) {
-    return add_number(name, ParamType::Float, [value] { return double(*value); },
-                      [value](double v) { *value = float(v); }, min, max, help);
+    return bind(name, ParamType::Float, value, min, max, help);
 }
-
 Param& ParamRegistry::add_float(const std::string& name, double* value, double min, double max,
                                 const std::string& help) {
-    // Stored as a float would be (what the panel and presets show), so that a preset written and
-    // read back gives the same double.
-    *value = double(float(*value));
-    return add_number(name, ParamType::Float, [value] { return *value; },
-                      [value](double v) { *value = double(float(v)); }, min, max, help);
+    return bind(name, ParamType::Float, value, min, max, help);
 }
-
 Param& ParamRegistry::add_int(const std::string& name, int* value, int def, int min, int max,
                               const std::string& help) {
-    *value = def;
-    return add_int(name, value, min, max, help);
+    return add_int(name, &(*value = def), min, max, help);
 }
-
 Param& ParamRegistry::add_int(const std::string& name, int* value, int min, int max, const std::string& help) {
-    return add_number(name, ParamType::Int, [value] { return double(*value); },
-                      [value](double v) { *value = int(v); }, min, max, help);
+    return bind(name, ParamType::Int, value, min, max, help);
 }
-
 Param& ParamRegistry::add_int(const std::string& name, std::uint64_t* value, int min, int max,
                               const std::string& help) {
-    return add_number(name, ParamType::Int, [value] { return double(*value); },
-                      [value](double v) { *value = std::uint64_t(v); }, min, max, help);
+    return bind(name, ParamType::Int, value, min, max, help);
 }
-
 Param& ParamRegistry::add_bool(const std::string& name, bool* value, bool def, const std::string& help) {
-    *value = def;
-    return add_bool(name, value, help);
+    return add_bool(name, &(*value = def), help);
 }
-
 Param& ParamRegistry::add_bool(const std::string& name, bool* value, const std::string& help) {
     return add_number(name, ParamType::Bool, [value] { return *value ? 1.0 : 0.0; },
                       [value](double v) { *value = v != 0; }, 0, 1, help);

@@ -141,6 +141,8 @@ public:
 
 private:
     Param& add(std::unique_ptr<Param> param);
+    template <class T>  // float, double, int, uint64 storage
+    Param& bind(const std::string& name, ParamType type, T* value, double min, double max, const std::string& help);
     // A number bound through accessors; the default is the value they read now.
     Param& add_number(const std::string& name, ParamType type, std::function<double()> get,
                       std::function<void(double)> put, double min, double max, const std::string& help,

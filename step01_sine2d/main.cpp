@@ -6,6 +6,7 @@
 // Controls: the panel's sliders (per-wave wavelength, amplitude, speed), add/remove buttons.
 #include "common/app.hpp"
 #include "step01_sine2d/sine_sum.hpp"
+#include "step01_sine2d/wave_params.hpp"
 
 #include <imgui.h>
 
@@ -33,18 +34,11 @@ public:
         p.add_float("amplitude", &amplitude_, 1, 0, 10, "scale applied to every wave's amplitude");
         // Deep-water-like defaults: longer waves are higher and faster (speed ~ sqrt(g L / 2 pi)).
         for (int i = 0; i < kMaxWaves; ++i) {
-            const std::string prefix = "wave" + std::to_string(i) + "_";
-            const std::string group = "wave " + std::to_string(i);
             const float wavelength = 9.0f * std::pow(0.62f, float(i));
             const float speed = std::sqrt(9.81f * wavelength / 6.2831853f) * (i % 3 == 1 ? -1.0f : 1.0f);
-            auto visible = [this, i] { return i < wave_count_; };
-            p.add_float(prefix + "wavelength", &waves_[i].wavelength, wavelength, 0.1f, 100,
-                        "distance between crests, metres").in_group(group).visible_if(visible).logarithmic();
-            p.add_float(prefix + "amplitude", &waves_[i].amplitude, 0.8f * std::pow(0.6f, float(i)), 0, 5,
-                        "height of a crest above rest, metres").in_group(group).visible_if(visible);
-            p.add_float(prefix + "speed", &waves_[i].speed, speed, -20, 20,
-                        "crest speed, metres per second (negative: the other way)")
-                .in_group(group).visible_if(visible);
+            waves_[i] = {wavelength, 0.8f * std::pow(0.6f, float(i)), speed};
+            step01::declare_wave(p, i, waves_[i], {100, 5, 20, "crest speed, metres per second (negative: the other way)"},
+                                 [this, i] { return i < wave_count_; });
         }
         p.add_float("x_min", &x_min_, -4, -500, 500, "left edge of the plot, metres").in_group("view");
         p.add_float("x_span", &x_span_, 32, 1, 1000, "metres across the plot").in_group("view").logarithmic();
@@ -54,7 +48,6 @@ public:
     }
 
 private:
-    struct WaveParams { float wavelength, amplitude, speed; };
 
     void init() override { plot_ = program("plot", {"fullscreen.vert", "plot.frag"}); }
 
@@ -116,7 +109,7 @@ private:
     ocean::ShaderProgram* plot_ = nullptr;
     int wave_count_ = 3;
     float amplitude_ = 1;
-    std::array<WaveParams, kMaxWaves> waves_{};
+    std::array<step01::WaveSliders, kMaxWaves> waves_{};
     float x_min_ = -4, x_span_ = 32, line_width_ = 2;
     bool show_waves_ = true, show_sum_ = true;
 };

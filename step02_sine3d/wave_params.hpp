@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/app.hpp"
+#include "step01_sine2d/wave_params.hpp"
 #include "step02_sine3d/wave_uniforms.hpp"
 
 #include <array>
@@ -17,28 +18,23 @@ public:
         p.add_int("wave_count", &count_, 4, 1, kMaxWaves, "number of waves in the sum");
         p.add_float("amplitude", &amplitude_, 1, 0, 10, "scale applied to every wave's amplitude");
         for (int i = 0; i < kMaxWaves; ++i) {
-            const std::string prefix = "wave" + std::to_string(i) + "_";
-            const std::string group = "wave " + std::to_string(i);
             // Defaults: a long swell and shorter waves turning away from it, deep-water speeds.
             const float wavelength = 18.0f * std::pow(0.68f, float(i));
             auto visible = [this, i] { return i < count_; };
-            p.add_float(prefix + "direction", &waves_[i].direction, std::fmod(20.0f + 67.0f * float(i), 360.0f), 0,
-                        360, "angle of the direction d in the x-z plane, degrees (0 = +x, 90 = +z); crests travel along +d")
-                .in_group(group).visible_if(visible);
-            p.add_float(prefix + "wavelength", &waves_[i].wavelength, wavelength, 0.1f, 200,
-                        "distance between crests, metres").in_group(group).visible_if(visible).logarithmic();
-            p.add_float(prefix + "amplitude", &waves_[i].amplitude, 0.055f * wavelength, 0, 10,
-                        "height of a crest above rest, metres").in_group(group).visible_if(visible);
-            p.add_float(prefix + "speed", &waves_[i].speed, std::sqrt(9.81f * wavelength / 6.2831853f), -30, 30,
-                        "crest speed, metres per second (positive: along +d)")
-                .in_group(group).visible_if(visible);
+            directions_[i] = std::fmod(20.0f + 67.0f * float(i), 360.0f);
+            p.add_float("wave" + std::to_string(i) + "_direction", &directions_[i], 0, 360,
+                        "angle of the direction d in the x-z plane, degrees (0 = +x, 90 = +z); crests travel along +d")
+                .in_group("wave " + std::to_string(i)).visible_if(visible);
+            waves_[i] = {wavelength, 0.055f * wavelength, std::sqrt(9.81f * wavelength / 6.2831853f)};
+            step01::declare_wave(p, i, waves_[i], {200, 10, 30, "crest speed, metres per second (positive: along +d)"},
+                                 visible);
         }
     }
 
     std::vector<DirectionalWave> waves() const {
         std::vector<DirectionalWave> out;
         for (int i = 0; i < count_; ++i)
-            out.push_back({waves_[i].direction, waves_[i].wavelength, double(amplitude_) * waves_[i].amplitude,
+            out.push_back({directions_[i], waves_[i].wavelength, double(amplitude_) * waves_[i].amplitude,
                            waves_[i].speed});
         return out;
     }
@@ -51,10 +47,10 @@ public:
     }
 
 private:
-    struct Wave { float direction, wavelength, amplitude, speed; };
     int count_ = 4;
     float amplitude_ = 1;
-    std::array<Wave, kMaxWaves> waves_{};
+    std::array<step01::WaveSliders, kMaxWaves> waves_{};
+    std::array<float, kMaxWaves> directions_{};  // degrees
 };
 
 }  // namespace step02

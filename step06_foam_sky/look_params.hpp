@@ -9,46 +9,78 @@
 
 #include <glm/vec3.hpp>
 
+#include <stdexcept>
 #include <string>
 
 namespace step06 {
 
 class LookParams {
 public:
+    // Every look parameter from one table each: name, the member it fills (whose initialiser
+    // below is its default), range, meaning, panel group.
     void declare(ocean::ParamRegistry& p) {
-        auto g = [](ocean::Param& param, const char* group) -> ocean::Param& { return param.in_group(group); };
-        g(p.add_float("sun_azimuth", &sun_azimuth, 330, 0, 360, "sun heading, degrees (0 = +x, 90 = +z)"), "sun and sky");
-        g(p.add_float("sun_elevation", &sun_elevation, 18, -5, 90, "sun height above the horizon, degrees"), "sun and sky");
-        g(p.add_float("sun_intensity", &sun_intensity, 6, 0, 100, "sunlight, linear units (the disc is brighter)"), "sun and sky");
-        g(p.add_color("sun_colour", &sun_colour, {1.0f, 0.92f, 0.8f}, "colour of the sunlight (sRGB)"), "sun and sky");
-        g(p.add_color("zenith_colour", &zenith_colour, {0.16f, 0.36f, 0.7f}, "sky straight up (sRGB)"), "sun and sky");
-        g(p.add_color("horizon_colour", &horizon_colour, {0.6f, 0.7f, 0.8f}, "sky at the horizon (sRGB)"), "sun and sky");
-        g(p.add_float("cloud_cover", &cloud_cover, 0.35f, 0, 1, "fraction of the sky under cloud"), "sun and sky");
-        g(p.add_float("cloud_speed", &cloud_speed, 12, 0, 100, "cloud drift, metres per second"), "sun and sky");
-        g(p.add_text("sky_image", &sky_image, "", "equirectangular sky image (.hdr, .png); empty: procedural"), "sun and sky");
-        g(p.add_choice("microfacet", &microfacet, 0, {"ggx", "beckmann"}, "specular microfacet distribution"), "water");
-        g(p.add_float("roughness", &roughness, 0.08f, 0.01f, 1, "microfacet roughness alpha near the camera"), "water");
-        g(p.add_float("roughness_far", &roughness_far, 0.3f, 0.01f, 1, "roughness far away (unresolved waves)"), "water");
-        g(p.add_float("roughness_distance", &roughness_distance, 400, 1, 10000, "metres over which roughness grows"), "water");
-        g(p.add_color("scatter_colour", &scatter_colour, {0.05f, 0.32f, 0.36f}, "colour of light scattered in the water (sRGB)"), "water");
-        g(p.add_color("bubble_colour", &bubble_colour, {0.2f, 0.45f, 0.45f}, "colour of light scattered by bubbles (sRGB)"), "water");
-        g(p.add_float("scatter_crest", &k1, 1.2f, 0, 10, "k1: light through the crests (times wave height)"), "water");
-        g(p.add_float("scatter_view", &k2, 0.35f, 0, 10, "k2: scatter towards the viewer"), "water");
-        g(p.add_float("scatter_lambert", &k3, 0.25f, 0, 10, "k3: Lambert term of the scattered light"), "water");
-        g(p.add_float("scatter_bubbles", &k4, 0.3f, 0, 10, "k4: bubbles (where there is foam)"), "water");
-        g(p.add_float("height_scale", &height_scale, 2.0f, 0.01f, 50, "metres of height that count as a full crest"), "water");
-        g(p.add_float("ambient", &ambient, 0.6f, 0, 10, "skylight reaching the water, linear"), "water");
-        g(p.add_color("foam_colour", &foam_colour, {0.92f, 0.94f, 0.95f}, "foam albedo (sRGB)"), "water");
-        g(p.add_float("foam_roughness", &foam_roughness, 0.6f, 0.01f, 1, "microfacet roughness of foam"), "water");
-        g(p.add_float("fog_density", &fog_density, 0.0012f, 0, 0.1f, "fog per metre at sea level"), "post");
-        g(p.add_float("fog_falloff", &fog_falloff, 0.02f, 0.0001f, 1, "how fast fog thins with height, per metre"), "post");
-        g(p.add_float("bloom_threshold", &bloom_threshold, 2.5f, 0, 100, "linear brightness where bloom starts"), "post");
-        g(p.add_float("bloom_strength", &bloom_strength, 0.06f, 0, 2, "how much of the glow is added"), "post");
-        g(p.add_float("exposure", &exposure, 0.9f, 0.01f, 20, "scale before the tonemapper"), "post").logarithmic();
-        g(p.add_choice("tonemapper", &tonemapper, 0, {"aces", "agx", "none"}, "filmic curve: ACES fitted, AgX, or a clamp"), "post");
+        struct Number { const char* name; float LookParams::*member; float min, max; const char* help; const char* group; };
+        static const Number numbers[] = {
+            {"sun_azimuth", &LookParams::sun_azimuth, 0, 360, "sun heading, degrees (0 = +x, 90 = +z)", kSky},
+            {"sun_elevation", &LookParams::sun_elevation, -5, 90, "sun height above the horizon, degrees", kSky},
+            {"sun_intensity", &LookParams::sun_intensity, 0, 100, "sunlight, linear units (the disc is brighter)", kSky},
+            {"cloud_cover", &LookParams::cloud_cover, 0, 1, "fraction of the sky under cloud", kSky},
+            {"cloud_speed", &LookParams::cloud_speed, 0, 100, "cloud drift, metres per second", kSky},
+            {"roughness", &LookParams::roughness, 0.01f, 1, "microfacet roughness alpha near the camera", kWater},
+            {"roughness_far", &LookParams::roughness_far, 0.01f, 1, "roughness far away (unresolved waves)", kWater},
+            {"roughness_distance", &LookParams::roughness_distance, 1, 10000, "metres over which roughness grows", kWater},
+            {"scatter_crest", &LookParams::k1, 0, 10, "k1: light through the crests (times wave height)", kWater},
+            {"scatter_view", &LookParams::k2, 0, 10, "k2: scatter towards the viewer", kWater},
+            {"scatter_lambert", &LookParams::k3, 0, 10, "k3: Lambert term of the scattered light", kWater},
+            {"scatter_bubbles", &LookParams::k4, 0, 10, "k4: bubbles (where there is foam)", kWater},
+            {"height_scale", &LookParams::height_scale, 0.01f, 50, "metres of height that count as a full crest", kWater},
+            {"ambient", &LookParams::ambient, 0, 10, "skylight reaching the water, linear", kWater},
+            {"foam_roughness", &LookParams::foam_roughness, 0.01f, 1, "microfacet roughness of foam", kWater},
+            {"fog_density", &LookParams::fog_density, 0, 0.1f, "fog per metre at sea level", kPost},
+            {"fog_falloff", &LookParams::fog_falloff, 0.0001f, 1, "how fast fog thins with height, per metre", kPost},
+            {"bloom_threshold", &LookParams::bloom_threshold, 0, 100, "linear brightness where bloom starts", kPost},
+            {"bloom_strength", &LookParams::bloom_strength, 0, 2, "how much of the glow is added", kPost},
+            {"exposure", &LookParams::exposure, 0.01f, 20, "scale before the tonemapper", kPost},
+        };
+        struct Colour { const char* name; glm::vec3 LookParams::*member; const char* help; const char* group; };
+        static const Colour colours[] = {
+            {"sun_colour", &LookParams::sun_colour, "colour of the sunlight (sRGB)", kSky},
+            {"zenith_colour", &LookParams::zenith_colour, "sky straight up (sRGB)", kSky},
+            {"horizon_colour", &LookParams::horizon_colour, "sky at the horizon (sRGB)", kSky},
+            {"scatter_colour", &LookParams::scatter_colour, "colour of light scattered in the water (sRGB)", kWater},
+            {"bubble_colour", &LookParams::bubble_colour, "colour of light scattered by bubbles (sRGB)", kWater},
+            {"foam_colour", &LookParams::foam_colour, "foam albedo (sRGB)", kWater},
+        };
+        // In the order the panel and presets have always listed them.
+        const auto number = [&](const char* name) -> ocean::Param& {
+            for (const Number& n : numbers)
+                if (std::string(name) == n.name) return p.add_float(n.name, &(this->*n.member), n.min, n.max, n.help).in_group(n.group);
+            throw std::logic_error(name);
+        };
+        const auto colour = [&](const char* name) {
+            for (const Colour& c : colours)
+                if (std::string(name) == c.name) p.add_color(c.name, &(this->*c.member), this->*c.member, c.help).in_group(c.group);
+        };
+        for (const char* name : {"sun_azimuth", "sun_elevation", "sun_intensity"}) number(name);
+        for (const char* name : {"sun_colour", "zenith_colour", "horizon_colour"}) colour(name);
+        for (const char* name : {"cloud_cover", "cloud_speed"}) number(name);
+        p.add_text("sky_image", &sky_image, sky_image, "equirectangular sky image (.hdr, .png); empty: procedural").in_group(kSky);
+        p.add_choice("microfacet", &microfacet, microfacet, {"ggx", "beckmann"}, "specular microfacet distribution")
+            .in_group(kWater);
+        for (const char* name : {"roughness", "roughness_far", "roughness_distance"}) number(name);
+        for (const char* name : {"scatter_colour", "bubble_colour"}) colour(name);
+        for (const char* name : {"scatter_crest", "scatter_view", "scatter_lambert", "scatter_bubbles", "height_scale",
+                                 "ambient"})
+            number(name);
+        colour("foam_colour");
+        for (const char* name : {"foam_roughness", "fog_density", "fog_falloff", "bloom_threshold", "bloom_strength"})
+            number(name);
+        number("exposure").logarithmic();
+        p.add_choice("tonemapper", &tonemapper, tonemapper, {"aces", "agx", "none"},
+                     "filmic curve: ACES fitted, AgX, or a clamp").in_group(kPost);
         for (std::size_t i = 0; i < std::size(kToggles); ++i)
-            g(p.add_bool(std::string("show_") + kToggles[i], &shown[i], true, std::string("draw the ") + kToggles[i]),
-              "terms and passes");
+            p.add_bool(std::string("show_") + kToggles[i], &shown[i], std::string("draw the ") + kToggles[i])
+                .in_group("terms and passes");
     }
 
     glm::vec3 to_sun() const {
@@ -102,16 +134,20 @@ public:
 
     bool show(const char* name) const { return shown[index(name)]; }
 
+    // The defaults (declare() binds each to its parameter).
     float sun_azimuth = 330, sun_elevation = 18, sun_intensity = 6, cloud_cover = 0.35f, cloud_speed = 12;
-    glm::vec3 sun_colour{1.0f}, zenith_colour{0.0f}, horizon_colour{0.0f};
+    glm::vec3 sun_colour{1.0f, 0.92f, 0.8f}, zenith_colour{0.16f, 0.36f, 0.7f}, horizon_colour{0.6f, 0.7f, 0.8f};
     std::string sky_image;
     int microfacet = 0, tonemapper = 0;
     float roughness = 0.08f, roughness_far = 0.3f, roughness_distance = 400;
-    glm::vec3 scatter_colour{0.0f}, bubble_colour{0.0f}, foam_colour{1.0f};
+    glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
     float k1 = 1.2f, k2 = 0.35f, k3 = 0.25f, k4 = 0.3f, height_scale = 2, ambient = 0.6f, foam_roughness = 0.6f;
     float fog_density = 0.0012f, fog_falloff = 0.02f, bloom_threshold = 2.5f, bloom_strength = 0.06f, exposure = 0.9f;
 
 private:
+    static constexpr const char* kSky = "sun and sky";
+    static constexpr const char* kWater = "water";
+    static constexpr const char* kPost = "post";
     // What show_<name> turns on and off: each lighting term and each pass.
     static constexpr const char* kToggles[] = {"ambient_term", "scatter_term", "specular_term", "reflection_term",
                                                "foam", "fog", "bloom"};

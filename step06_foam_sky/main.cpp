@@ -32,12 +32,17 @@ namespace {
 
 class FoamSky : public ocean::App {
 public:
-    FoamSky()
-        : App({"Foam and sky", "5, 5.1-5.6",
+    FoamSky() : App(step_info()) { declare(params()); }
+
+private:
+    static ocean::StepInfo step_info() {
+        return {"Foam and sky", "5, 5.1-5.6",
                "Four cascades of the FFT ocean (each its own band of waves), tessellated near the camera; foam "
                "where the Jacobian folds the surface; scatter + microfacet specular + sky reflection with "
-               "Fresnel; a sky with sun and clouds; fog, bloom and a filmic tonemapper."}) {
-        auto& p = params();
+               "Fresnel; a sky with sun and clouds; fog, bloom and a filmic tonemapper."};
+    }
+
+    void declare(ocean::ParamRegistry& p) {
         step06::use_default_sea(ocean_params_);  // step05's spectrum, over a 500 m first tile, in a fresh breeze
         ocean_params_.declare(p);
         for (int c = 0; c < step06::kCascades; ++c)
@@ -63,7 +68,6 @@ public:
         use_camera(ocean::camera_view("low"));  // 5 m above the water, level with the crests
     }
 
-private:
     void init() override {
         gpu_ = std::make_unique<step05::GpuOcean>(program_factory());
         sky_ = std::make_unique<step06::Sky>(program_factory(), 128);

@@ -8,17 +8,22 @@
 
 namespace {
 
+// The title, the seed's sections and the paragraph the panel shows.
+ocean::StepInfo chapter_info() {
+    return {"A new chapter", "-",
+            "The template every chapter starts from: one travelling wave, h = a sin(w (x - c t)), drawn as a "
+            "band of colour. Replace it with the chapter's technique."};
+}
+
 class Chapter : public ocean::App {
 public:
-    Chapter()
-        : App({"A new chapter", "-",
-               "The template every chapter starts from: one travelling wave, h = a sin(w (x - c t)), drawn as "
-               "a band of colour. Replace it with the chapter's technique."}) {
-        auto& p = params();
-        p.add_float("amplitude", &amplitude_, 1, 0, 10, "wave amplitude, metres");
-        p.add_float("wavelength", &wavelength_, 8, 0.5f, 100, "distance between crests, metres").logarithmic();
-        p.add_float("speed", &speed_, 2, -20, 20, "crest speed towards +x, metres per second");
-        p.add_float("x_span", &x_span_, 32, 1, 1000, "metres of x across the screen");
+    Chapter() : App(chapter_info()) {
+        // Each parameter bound to its member; the member's initialiser (below) is the default.
+        ocean::ParamRegistry& p = params();
+        p.add_float("amplitude", &amplitude_, 0, 10, "wave amplitude, metres");
+        p.add_float("wavelength", &wavelength_, 0.5f, 100, "distance between crests, metres").logarithmic();
+        p.add_float("speed", &speed_, -20, 20, "crest speed towards +x, metres per second");
+        p.add_float("x_span", &x_span_, 1, 1000, "metres of x across the screen");
     }
 
 private:
