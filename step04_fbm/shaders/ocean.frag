@@ -6,8 +6,12 @@
 #include "srgb.glsl"
 
 #ifndef VIEW
-#define VIEW 0  // 0 lit, 1 diffuse, 2 specular, 3 normals
+#define VIEW 0  // VIEW_* below, in the order of main.cpp's `view` choices
 #endif
+#define VIEW_LIT 0
+#define VIEW_DIFFUSE 1
+#define VIEW_SPECULAR 2
+#define VIEW_NORMALS 3
 
 in vec3 v_world_position;
 in vec3 v_normal;
@@ -24,13 +28,13 @@ void main() {
         return;
     }
     vec3 normal = fbm_normal(fbm_height_gradient(v_rest_xz).yz);
-#if VIEW == 3
+#if VIEW == VIEW_NORMALS
     out_color = vec4(0.5 * normal + 0.5, 1.0);
 #else
     LightTerms t = light_terms(normal, normalize(u_eye - v_world_position));
-#if VIEW == 1
+#if VIEW == VIEW_DIFFUSE
     vec3 colour = t.diffuse;
-#elif VIEW == 2
+#elif VIEW == VIEW_SPECULAR
     vec3 colour = t.specular;
 #else
     vec3 colour = t.ambient + t.diffuse + t.specular;
