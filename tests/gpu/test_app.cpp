@@ -122,6 +122,21 @@ TEST(App, NextStepStartsAtTheSameTimeSizeAndView) {
     EXPECT_EQ(ocean::hand_off(3, {}), 3) << "no neighbour chosen: the status passes through";
 }
 
+TEST(App, CarriedParametersApplyOnlyWhereTheStepHasThem) {
+    // Previous/Next pass the camera as --carry: a step without a camera ignores it, a step with
+    // the parameter takes it (and refuses a bad value like --set).
+    ProbeStep step;
+    EXPECT_EQ(step.run({"--headless", "--size", "8x8", "--frames", "1", "--carry", "camera_yaw=10",
+                        "--carry", "level=0.75", "--screenshot", temp("carry.png")}, kWhere), 0);
+    std::string error;
+    const auto image = ocean::load_image(temp("carry.png"), &error);
+    ASSERT_TRUE(image) << error;
+    EXPECT_NEAR(image->rgba[0], 191, 1) << "level 0.75 was carried";
+    ProbeStep again;
+    EXPECT_EQ(again.run({"--carry", "level=2"}, kWhere), ocean::kExitUsage) << "out of range, as with --set";
+    fs::remove(temp("carry.png"));
+}
+
 TEST(App, BadInputIsRefusedBeforeAnyContextIsMade) {
     ProbeStep step;
     EXPECT_EQ(step.run({"--set", "level=2"}, kWhere), ocean::kExitUsage);
