@@ -10,24 +10,28 @@
 namespace ocean {
 
 void Camera::declare_params(ParamRegistry& params, const CameraView& view) {
-    const glm::vec3 initial_target = view.target;
-    const float initial_distance = view.distance, initial_yaw = view.yaw_deg, initial_pitch = view.pitch_deg;
-    params.add_choice("camera_mode", &mode, Orbit, {"orbit", "fly"},
-                      "orbit turns around the target; fly moves the eye (WASD, Q/E)").in_group("camera");
-    params.add_float("camera_yaw", &yaw_deg, initial_yaw, -360, 360,
-                     "heading of the view, degrees (0 looks along -z)").in_group("camera");
-    params.add_float("camera_pitch", &pitch_deg, initial_pitch, -89, 89,
-                     "how far the view looks down, degrees").in_group("camera");
-    params.add_float("camera_distance", &distance, initial_distance, 0.5f, 1000,
-                     "eye-to-target distance, metres").in_group("camera").logarithmic();
-    params.add_float("camera_target_x", &target.x, initial_target.x, -10000, 10000,
-                     "point looked at, x (metres)").in_group("camera");
-    params.add_float("camera_target_y", &target.y, initial_target.y, -1000, 1000,
-                     "point looked at, y (metres, up)").in_group("camera");
-    params.add_float("camera_target_z", &target.z, initial_target.z, -10000, 10000,
-                     "point looked at, z (metres)").in_group("camera");
-    params.add_float("camera_fov", &fov_deg, 50, 10, 120, "vertical field of view, degrees")
+    // The view is the default; the parameters are bound to the camera the steps draw from.
+    mode = Orbit;
+    target = view.target;
+    distance = view.distance;
+    yaw_deg = view.yaw_deg;
+    pitch_deg = view.pitch_deg;
+    struct Number { const char* name; float* value; float min, max; const char* help; };
+    const Number numbers[] = {
+        {"camera_yaw", &yaw_deg, -360, 360, "heading of the view, degrees (0 looks along -z)"},
+        {"camera_pitch", &pitch_deg, -89, 89, "how far the view looks down, degrees"},
+        {"camera_distance", &distance, 0.5f, 1000, "eye-to-target distance, metres"},
+        {"camera_target_x", &target.x, -10000, 10000, "point looked at, x (metres)"},
+        {"camera_target_y", &target.y, -1000, 1000, "point looked at, y (metres, up)"},
+        {"camera_target_z", &target.z, -10000, 10000, "point looked at, z (metres)"},
+        {"camera_fov", &fov_deg, 10, 120, "vertical field of view, degrees"},
+    };
+    params.add_choice("camera_mode", &mode, {"orbit", "fly"}, "orbit turns around the target; fly moves the eye (WASD, Q/E)")
         .in_group("camera");
+    for (const Number& n : numbers) {
+        Param& p = params.add_float(n.name, n.value, n.min, n.max, n.help).in_group("camera");
+        if (n.value == &distance) p.logarithmic();
+    }
 }
 
 glm::vec3 Camera::forward() const {

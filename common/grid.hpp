@@ -37,13 +37,13 @@ private:
 // draw one plane.
 class GridParams {
 public:
-    void declare(ParamRegistry& p, float default_size = 80, int default_quads = 160) {
-        p.add_float("plane_size", &plane_size_, default_size, 1, 5000, "side of the square plane, metres")
-            .in_group("grid");
-        p.add_int("x_quads", &x_quads_, default_quads, 1, 2048, "grid cells along x (vertices: x_quads + 1)")
-            .in_group("grid");
-        p.add_int("z_quads", &z_quads_, default_quads, 1, 2048, "grid cells along z (vertices: z_quads + 1)")
-            .in_group("grid");
+    // The defaults: a plane of `size` metres with `quads` cells a side.
+    explicit GridParams(float size = 80, int quads = 160) : plane_size_(size), x_quads_(quads), z_quads_(quads) {}
+
+    void declare(ParamRegistry& p) {
+        p.add_float("plane_size", &plane_size_, 1, 5000, "side of the square plane, metres").in_group("grid");
+        p.add_int("x_quads", &x_quads_, 1, 2048, "grid cells along x (vertices: x_quads + 1)").in_group("grid");
+        p.add_int("z_quads", &z_quads_, 1, 2048, "grid cells along z (vertices: z_quads + 1)").in_group("grid");
     }
 
     // Rebuilds the mesh only when its size or resolution changed.
@@ -57,8 +57,8 @@ public:
     int triangle_count() const { return 2 * x_quads_ * z_quads_; }
 
 private:
-    float plane_size_ = 80;
-    int x_quads_ = 160, z_quads_ = 160;
+    float plane_size_;
+    int x_quads_, z_quads_;
     std::array<float, 3> built_for_{-1, -1, -1};
 };
 

@@ -267,13 +267,17 @@ Param& ParamRegistry::add_bool(const std::string& name, bool* value, const std::
 
 Param& ParamRegistry::add_choice(const std::string& name, int* value, int def, std::vector<std::string> choices,
                                  const std::string& help) {
-    *value = def;
+    return add_choice(name, &(*value = def), std::move(choices), help);
+}
+
+Param& ParamRegistry::add_choice(const std::string& name, int* value, std::vector<std::string> choices,
+                                 const std::string& help) {
     const double last = double(choices.size()) - 1;
     return add_number(name, ParamType::Choice, [value] { return double(*value); },
                       [value](double v) { *value = int(v); }, 0, last, help, std::move(choices));
 }
 
-Param& ParamRegistry::add_choice(const std::string& name, int* value, const std::vector<int>& values,
+Param& ParamRegistry::add_value_choice(const std::string& name, int* value, const std::vector<int>& values,
                                  const std::string& help) {
     std::vector<std::string> names;
     for (int v : values) names.push_back(std::to_string(v));
@@ -288,9 +292,13 @@ Param& ParamRegistry::add_choice(const std::string& name, int* value, const std:
 
 Param& ParamRegistry::add_color(const std::string& name, glm::vec3* value, glm::vec3 def,
                                 const std::string& help) {
+    return add_color(name, &(*value = def), help);
+}
+
+Param& ParamRegistry::add_color(const std::string& name, glm::vec3* value, const std::string& help) {
     auto p = std::make_unique<Param>();
     p->name_ = name; p->help_ = help; p->type_ = ParamType::Color; p->color_ = value;
-    p->default_color_ = def; p->min_ = 0; p->max_ = 1;
+    p->default_color_ = *value; p->min_ = 0; p->max_ = 1;
     return add(std::move(p));
 }
 

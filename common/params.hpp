@@ -102,6 +102,7 @@ public:
     Param& add_bool(const std::string& name, bool* value, const std::string& help);
     Param& add_choice(const std::string& name, int* value, int def,
                       std::vector<std::string> choices, const std::string& help);
+    Param& add_choice(const std::string& name, int* value, std::vector<std::string> choices, const std::string& help);
     // An enum bound directly: choice i is the enumerator with value i.
     template <class Enum>
     Param& add_choice(const std::string& name, Enum* value, std::vector<std::string> choices, const std::string& help) {
@@ -110,9 +111,10 @@ public:
                           std::move(choices));
     }
     // An int that takes one of a few values (a resolution: 64, 128, ...), shown by value.
-    Param& add_choice(const std::string& name, int* value, const std::vector<int>& values, const std::string& help);
+    Param& add_value_choice(const std::string& name, int* value, const std::vector<int>& values, const std::string& help);
     Param& add_color(const std::string& name, glm::vec3* value, glm::vec3 def,
                      const std::string& help);
+    Param& add_color(const std::string& name, glm::vec3* value, const std::string& help);
     // Free text on one line (a file name): at most 1024 characters, no '#' (presets' comments).
     Param& add_text(const std::string& name, std::string* value, const std::string& def,
                     const std::string& help);

@@ -30,8 +30,8 @@ public:
                "f(x,t) = sum of a_i sin(x w_i - t phi_i), with w = 2 pi / wavelength and "
                "phi = speed * 2 pi / wavelength. Each wave has its own colour; white is the sum."}) {
         auto& p = params();
-        p.add_int("wave_count", &wave_count_, 3, 1, kMaxWaves, "number of waves in the sum");
-        p.add_float("amplitude", &amplitude_, 1, 0, 10, "scale applied to every wave's amplitude");
+        p.add_int("wave_count", &wave_count_, 1, kMaxWaves, "number of waves in the sum");
+        p.add_float("amplitude", &amplitude_, 0, 10, "scale applied to every wave's amplitude");
         // Deep-water-like defaults: longer waves are higher and faster (speed ~ sqrt(g L / 2 pi)).
         for (int i = 0; i < kMaxWaves; ++i) {
             const float wavelength = 9.0f * std::pow(0.62f, float(i));
@@ -40,11 +40,11 @@ public:
             step01::declare_wave(p, i, waves_[i], {100, 5, 20, "crest speed, metres per second (negative: the other way)"},
                                  [this, i] { return i < wave_count_; });
         }
-        p.add_float("x_min", &x_min_, -4, -500, 500, "left edge of the plot, metres").in_group("view");
-        p.add_float("x_span", &x_span_, 32, 1, 1000, "metres across the plot").in_group("view").logarithmic();
-        p.add_bool("show_waves", &show_waves_, true, "draw each wave in its own colour").in_group("view");
-        p.add_bool("show_sum", &show_sum_, true, "draw the sum of the waves in white").in_group("view");
-        p.add_float("line_width", &line_width_, 2, 0.5f, 10, "width of a wave's line, pixels").in_group("view");
+        p.add_float("x_min", &x_min_, -500, 500, "left edge of the plot, metres").in_group("view");
+        p.add_float("x_span", &x_span_, 1, 1000, "metres across the plot").in_group("view").logarithmic();
+        p.add_bool("show_waves", &show_waves_, "draw each wave in its own colour").in_group("view");
+        p.add_bool("show_sum", &show_sum_, "draw the sum of the waves in white").in_group("view");
+        p.add_float("line_width", &line_width_, 0.5f, 10, "width of a wave's line, pixels").in_group("view");
     }
 
 private:

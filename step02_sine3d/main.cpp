@@ -21,8 +21,8 @@ public:
                "Shading is only height colour and flat facets: light comes in step03."}) {
         waves_.declare(params());
         grid_params_.declare(params());
-        params().add_bool("wireframe", &wireframe_, false, "draw the triangles' edges only").in_group("view");
-        params().add_bool("facet_shading", &facet_shading_, true, "darken faces turned from a fixed direction")
+        params().add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
+        params().add_bool("facet_shading", &facet_shading_, "darken faces turned from a fixed direction")
             .in_group("view");
         use_camera(ocean::camera_view("overview"));
     }

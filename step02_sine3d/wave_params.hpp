@@ -15,8 +15,8 @@ namespace step02 {
 class WaveParams {
 public:
     void declare(ocean::ParamRegistry& p) {
-        p.add_int("wave_count", &count_, 4, 1, kMaxWaves, "number of waves in the sum");
-        p.add_float("amplitude", &amplitude_, 1, 0, 10, "scale applied to every wave's amplitude");
+        p.add_int("wave_count", &count_, 1, kMaxWaves, "number of waves in the sum");
+        p.add_float("amplitude", &amplitude_, 0, 10, "scale applied to every wave's amplitude");
         for (int i = 0; i < kMaxWaves; ++i) {
             // Defaults: a long swell and shorter waves turning away from it, deep-water speeds.
             const float wavelength = 18.0f * std::pow(0.68f, float(i));

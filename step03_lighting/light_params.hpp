@@ -21,17 +21,17 @@ inline glm::vec3 srgb_to_linear(glm::vec3 c) {
 class LightParams {
 public:
     void declare(ocean::ParamRegistry& p) {
-        p.add_float("sun_azimuth", &sun_azimuth_, 305, 0, 360, "sun heading, degrees (0 = +x, 90 = +z)")
+        p.add_float("sun_azimuth", &sun_azimuth_, 0, 360, "sun heading, degrees (0 = +x, 90 = +z)")
             .in_group("light");
-        p.add_float("sun_elevation", &sun_elevation_, 25, -10, 90, "sun height above the horizon, degrees")
+        p.add_float("sun_elevation", &sun_elevation_, -10, 90, "sun height above the horizon, degrees")
             .in_group("light");
-        p.add_color("sun_colour", &sun_colour_, {1.0f, 0.96f, 0.88f}, "colour of the sunlight (sRGB)")
+        p.add_color("sun_colour", &sun_colour_, "colour of the sunlight (sRGB)")
             .in_group("light");
-        p.add_color("water_colour", &water_colour_, {0.10f, 0.42f, 0.66f}, "diffuse tint of the water (sRGB)")
+        p.add_color("water_colour", &water_colour_, "diffuse tint of the water (sRGB)")
             .in_group("light");
-        p.add_color("ambient_colour", &ambient_colour_, {0.04f, 0.14f, 0.24f}, "light from the whole sky (sRGB)")
+        p.add_color("ambient_colour", &ambient_colour_, "light from the whole sky (sRGB)")
             .in_group("light");
-        p.add_float("shininess", &shininess_, 160, 1, 4096, "Blinn-Phong exponent: larger, smaller highlight")
+        p.add_float("shininess", &shininess_, 1, 4096, "Blinn-Phong exponent: larger, smaller highlight")
             .in_group("light").logarithmic();
     }
 
@@ -49,7 +49,7 @@ public:
 
 private:
     float sun_azimuth_ = 305, sun_elevation_ = 25, shininess_ = 160;
-    glm::vec3 sun_colour_{1.0f}, water_colour_{0.0f}, ambient_colour_{0.0f};
+    glm::vec3 sun_colour_{1.0f, 0.96f, 0.88f}, water_colour_{0.10f, 0.42f, 0.66f}, ambient_colour_{0.04f, 0.14f, 0.24f};
 };
 
 }  // namespace step03

@@ -27,21 +27,21 @@ public:
         waves_.declare(params());
         grid_params_.declare(params());
         auto& p = params();
-        p.add_choice("normals", &normal_method_, 0, {"analytic", "finite_difference"},
+        p.add_choice("normals", &normal_method_, {"analytic", "finite_difference"},
                      "normals from the analytic derivatives, or from central differences of the height")
             .in_group("normals");
-        p.add_float("fd_step", &fd_step_, 1, 0.001f, 5, "finite-difference step, metres (the seed uses 1)")
+        p.add_float("fd_step", &fd_step_, 0.001f, 5, "finite-difference step, metres (the seed uses 1)")
             .in_group("normals").logarithmic();
-        p.add_float("angle_scale", &angle_scale_, 10, 0.01f, 90,
+        p.add_float("angle_scale", &angle_scale_, 0.01f, 90,
                     "normal_difference view: degrees between the normals shown as full red")
             .in_group("normals").logarithmic();
-        p.add_choice("lighting", &lighting_, 0, {"per_pixel", "per_vertex"},
+        p.add_choice("lighting", &lighting_, {"per_pixel", "per_vertex"},
                      "evaluate the light at every pixel, or at vertices and interpolate").in_group("light");
-        p.add_choice("view", &view_, 0, {"lit", "ambient", "diffuse", "specular", "normals", "normal_difference"},
+        p.add_choice("view", &view_, {"lit", "ambient", "diffuse", "specular", "normals", "normal_difference"},
                      "the whole light, one term alone, the normals as colours, or the analytic/finite-difference angle")
             .in_group("light");
         light_.declare(p);
-        p.add_bool("wireframe", &wireframe_, false, "draw the triangles' edges only").in_group("view");
+        p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         use_camera(ocean::camera_view("overview"));
     }
 

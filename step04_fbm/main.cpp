@@ -26,31 +26,31 @@ public:
                "moves each wave's input downhill of the waves before it, with an exact normal; cascades "
                "with different base wavelengths hide the repeats."}) {
         auto& p = params();
-        p.add_choice("shape", &shape_, int(step04::Shape::ExpSine), {"sine", "exp_sine"},
+        p.add_choice("shape", &shape_, {"sine", "exp_sine"},
                      "wave shape: sin(x), or exp(sin(x) - 1) with sharp crests and flat troughs").in_group("fbm");
-        p.add_int("wave_count", &wave_count_, 20, 1, step04::kMaxWavesPerCascade, "waves in each cascade")
+        p.add_int("wave_count", &wave_count_, 1, step04::kMaxWavesPerCascade, "waves in each cascade")
             .in_group("fbm");
-        p.add_float("base_wavelength", &base_wavelength_, 40, 1, 500, "wavelength of wave 0, metres")
+        p.add_float("base_wavelength", &base_wavelength_, 1, 500, "wavelength of wave 0, metres")
             .in_group("fbm").logarithmic();
-        p.add_float("amplitude", &amplitude_, 1.2f, 0, 10, "amplitude of wave 0 (a0), metres").in_group("fbm");
-        p.add_float("gain", &gain_, 0.82f, 0, 1, "amplitude ratio of neighbouring waves").in_group("fbm");
-        p.add_float("lacunarity", &lacunarity_, 1.18f, 1, 3, "frequency ratio of neighbouring waves")
+        p.add_float("amplitude", &amplitude_, 0, 10, "amplitude of wave 0 (a0), metres").in_group("fbm");
+        p.add_float("gain", &gain_, 0, 1, "amplitude ratio of neighbouring waves").in_group("fbm");
+        p.add_float("lacunarity", &lacunarity_, 1, 3, "frequency ratio of neighbouring waves")
             .in_group("fbm");
-        p.add_float("speed", &speed_, 1, 0, 5, "phase speed, 1 = deep water (phi = sqrt(g w))").in_group("fbm");
-        p.add_int("seed", &seed_, 1, 0, 1000000, "seed of the wave directions").in_group("fbm");
-        p.add_float("warp", &warp_, 4, 0, 10,
+        p.add_float("speed", &speed_, 0, 5, "phase speed, 1 = deep water (phi = sqrt(g w))").in_group("fbm");
+        p.add_int("seed", &seed_, 0, 1000000, "seed of the wave directions").in_group("fbm");
+        p.add_float("warp", &warp_, 0, 10,
                     "domain warping strength s: each wave pushes the next ones' input by s a grad f")
             .in_group("fbm");
-        p.add_int("cascade_count", &cascade_count_, 2, 1, step04::kMaxCascades, "independent sums layered")
+        p.add_int("cascade_count", &cascade_count_, 1, step04::kMaxCascades, "independent sums layered")
             .in_group("cascades");
-        p.add_float("cascade_ratio", &cascade_ratio_, 0.37f, 0.05f, 0.95f,
+        p.add_float("cascade_ratio", &cascade_ratio_, 0.05f, 0.95f,
                     "base wavelength and amplitude of cascade c: ratio^c times cascade 0's")
             .in_group("cascades");
-        p.add_choice("view", &view_, 0, {"lit", "diffuse", "specular", "normals"},
+        p.add_choice("view", &view_, {"lit", "diffuse", "specular", "normals"},
                      "the whole light, one term alone, or the normals as colours").in_group("light");
         light_.declare(p);
         grid_params_.declare(p);
-        p.add_bool("wireframe", &wireframe_, false, "draw the triangles' edges only").in_group("view");
+        p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         use_camera(ocean::camera_view("overview"));
     }
 
@@ -106,7 +106,7 @@ private:
     step03::LightParams light_;
     std::vector<step04::Cascade> cascades_;
     unsigned cascades_generation_ = ~0u;
-    int shape_ = 1, wave_count_ = 20, seed_ = 1, cascade_count_ = 2, view_ = 0;
+    int shape_ = int(step04::Shape::ExpSine), wave_count_ = 20, seed_ = 1, cascade_count_ = 2, view_ = 0;
     float base_wavelength_ = 40, amplitude_ = 1.2f, gain_ = 0.82f, lacunarity_ = 1.18f, speed_ = 1;
     float warp_ = 4, cascade_ratio_ = 0.37f;
     bool wireframe_ = false;

@@ -33,19 +33,19 @@ public:
                "shared memory) gives heights, choppy displacements and slopes."}) {
         auto& p = params();
         ocean_params_.declare(p);
-        p.add_choice("backend", &backend_, int(Backend::GpuFft), {"dft", "gpu_fft", "fftw"},
+        p.add_choice("backend", &backend_, {"dft", "gpu_fft", "fftw"},
                      "inverse transform: naive DFT on the GPU (N <= 64), GPU FFT, or FFTW on the CPU");
-        p.add_choice("normals", &normals_, 0, {"slopes", "finite_difference"},
+        p.add_choice("normals", &normals_, {"slopes", "finite_difference"},
                      "normals from the slope maps (i k h~) or from differences of the height map");
-        p.add_choice("view", &view_, 0,
+        p.add_choice("view", &view_,
                      {"shaded", "height", "displacement_x", "displacement_z", "slope_x", "slope_z", "jacobian",
                       "spectrum"},
                      "the lit sea, or one map over the screen");
-        p.add_float("map_range", &map_range_, 0, 0, 100,
+        p.add_float("map_range", &map_range_, 0, 100,
                     "value shown at full colour in the map views (0: chosen from the spectrum)");
         light_.declare(p);
-        grid_params_.declare(p, 800, 400);  // several tiles: the sea reaches the horizon
-        p.add_bool("wireframe", &wireframe_, false, "draw the triangles' edges only").in_group("view");
+        grid_params_.declare(p);
+        p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         use_camera(ocean::camera_view("deck"));  // an open sea, seen from a ship's deck (12 m up)
     }
 
@@ -147,7 +147,7 @@ private:
 
     step05::OceanParams ocean_params_;
     step03::LightParams light_;
-    ocean::GridParams grid_params_;
+    ocean::GridParams grid_params_{800, 400};  // several tiles: the sea reaches the horizon
     std::unique_ptr<step05::GpuOcean> gpu_;
     std::unique_ptr<step05::InitialSpectrum> spectrum_;
     step05::SpectrumParams spectrum_params_;  // what spectrum_ was made from
@@ -155,7 +155,7 @@ private:
     step05::SpectrumView spectrum_view_;
     ocean::GridMesh grid_;
     std::vector<std::string> backend_times_;
-    int backend_ = 1, normals_ = 0, view_ = 0;
+    int backend_ = int(Backend::GpuFft), normals_ = 0, view_ = 0;
     float map_range_ = 0;
     float height_sigma_ = 0;  // metres: the square root of the spectrum's resolved variance
     bool wireframe_ = false, warned_dft_ = false;

@@ -35,7 +35,7 @@ public:
         spectrum(p.add_bool("tma", &sea.tma, "TMA: attenuate the spectrum in shallow water"));
         spectrum(p.add_float("patch_size", &sea.patch_size, 10, 5000, "side of the simulated tile, metres (it repeats)"))
             .logarithmic();
-        spectrum(p.add_choice("resolution", &sea.resolution, {64, 128, 256, 512},
+        spectrum(p.add_value_choice("resolution", &sea.resolution, {64, 128, 256, 512},
                               "modes per side of the tile (a power of two)"));
         spectrum(p.add_int("seed", &sea.seed, 0, 1000000, "seed of the random amplitudes"));
         spectrum(p.add_float("amplitude_scale", &sea.amplitude_scale, 0, 10, "height scale; 1 = physical metres"));

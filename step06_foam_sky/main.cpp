@@ -46,23 +46,23 @@ private:
         step06::use_default_sea(ocean_params_);  // step05's spectrum, over a 500 m first tile, in a fresh breeze
         ocean_params_.declare(p);
         for (int c = 0; c < step06::kCascades; ++c)
-            p.add_bool("cascade_" + std::to_string(c), &cascade_on_[c], true,
+            p.add_bool("cascade_" + std::to_string(c), &cascade_on_[c],
                        "draw cascade " + std::to_string(c) + " (0: the longest waves)").in_group("cascades");
         step06::declare_foam_params(p, foam_settings_);
-        p.add_float("tess_scale", &tess_scale_, 12, 0.5f, 64, "edge level = tess_scale * patch / distance")
+        p.add_float("tess_scale", &tess_scale_, 0.5f, 64, "edge level = tess_scale * patch / distance")
             .in_group("geometry");
-        p.add_float("tess_patch_size", &patch_size_, 16, 2, 200, "side of a tessellated patch, metres").in_group("geometry");
-        p.add_int("patch_count", &patch_count_, 96, 4, 400, "patches per side around the camera").in_group("geometry");
-        p.add_bool("frustum_culling", &cull_, true, "discard patches outside the view").in_group("geometry");
-        p.add_bool("wireframe", &wireframe_, false, "edges only, coloured by tessellation level").in_group("geometry");
+        p.add_float("tess_patch_size", &patch_size_, 2, 200, "side of a tessellated patch, metres").in_group("geometry");
+        p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").in_group("geometry");
+        p.add_bool("frustum_culling", &cull_, "discard patches outside the view").in_group("geometry");
+        p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level").in_group("geometry");
         look_.declare(p);
-        p.add_choice("view", &view_, 0, {"shaded", "normals", "foam", "jacobian", "tessellation", "cascade_map"},
+        p.add_choice("view", &view_, {"shaded", "normals", "foam", "jacobian", "tessellation", "cascade_map"},
                      "the final picture, or one ingredient");
-        p.add_choice("split_effect", &split_effect_, 0,
+        p.add_choice("split_effect", &split_effect_,
                      {"fog", "bloom", "foam", "scatter_term", "specular_term", "reflection_term", "ambient_term"},
                      "split view: the effect shown on the left and left out on the right");
-        p.add_int("debug_cascade", &debug_cascade_, 0, 0, step06::kCascades - 1, "view=cascade_map: which cascade");
-        p.add_choice("debug_map", &debug_map_, 0,
+        p.add_int("debug_cascade", &debug_cascade_, 0, step06::kCascades - 1, "view=cascade_map: which cascade");
+        p.add_choice("debug_map", &debug_map_,
                      {"height", "displacement_x", "displacement_z", "slope_x", "slope_z", "jacobian"},
                      "view=cascade_map: which map");
         use_camera(ocean::camera_view("low"));  // 5 m above the water, level with the crests
