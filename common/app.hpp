@@ -43,8 +43,6 @@ struct StepLocation {
     std::string dir;   // the step's source folder, where shaders/ lives
 };
 
-// Exit statuses, the same for every step (README: "Exit status").
-enum ExitCode { kExitOk = 0, kExitRuntimeError = 1, kExitUsage = 2, kExitGlError = 3 };
 
 class App {
 public:

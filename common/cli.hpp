@@ -8,6 +8,9 @@
 
 namespace ocean {
 
+// Exit statuses, the same for every step (README: "Exit status").
+enum ExitCode { kExitOk = 0, kExitRuntimeError = 1, kExitUsage = 2, kExitGlError = 3 };
+
 struct Options {
     bool help = false;
     bool headless = false;          // --headless, or implied when there is no display

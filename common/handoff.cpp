@@ -1,6 +1,6 @@
 #include "common/handoff.hpp"
 
-#include "common/app.hpp"
+#include "common/cli.hpp"
 #include "common/text.hpp"
 
 #include <unistd.h>
