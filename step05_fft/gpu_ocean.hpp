@@ -49,6 +49,8 @@ public:
     GLuint fields_buffer() const { return fields_.id(); }
     GLuint displacement_texture() const { return displacement_.id(); }  // 2D array, a layer a cascade
     GLuint slopes_texture() const { return slopes_.id(); }
+    // (dh/dx^2, dh/dz^2, dh/dx dh/dz, 0) per texel, mipmapped: the second moments of the slope.
+    GLuint slope_moments_texture() const { return slope_moments_.id(); }
     // The fields of every cascade as 4 packed complex values per texel (tests, export).
     std::vector<float> read_fields() const;
 
@@ -62,7 +64,7 @@ private:
     int n_ = 0;
     ocean::Buffer h0_, omega_;
     ocean::Buffer spectra_, fields_;
-    ocean::Texture displacement_, slopes_;
+    ocean::Texture displacement_, slopes_, slope_moments_;
     std::unique_ptr<FftwInverse2d> fftw_;  // the FFTW backend's plan
 };
 

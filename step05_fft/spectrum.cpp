@@ -199,14 +199,20 @@ InitialSpectrum initial_spectrum(const SpectrumParams& p) {
     return s;
 }
 
-double resolved_variance(const SpectrumParams& p) {
+double resolved_variance(const SpectrumParams& p) { return resolved_moment(p, 0); }
+
+double resolved_slope_variance(const SpectrumParams& p) { return resolved_moment(p, 2); }
+
+double resolved_moment(const SpectrumParams& p, int power) {
     const int n = p.resolution;
     const double dk = 2 * kPi / p.patch_size;
     double sum = 0;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
-            if (resolved_mode(p, i, j))
-                sum += spectrum_2d(p, wavenumber(i, n, p.patch_size), wavenumber(j, n, p.patch_size)) * dk * dk;
+            if (resolved_mode(p, i, j)) {
+                const double kx = wavenumber(i, n, p.patch_size), kz = wavenumber(j, n, p.patch_size);
+                sum += std::pow(kx * kx + kz * kz, 0.5 * power) * spectrum_2d(p, kx, kz) * dk * dk;
+            }
     return sum;
 }
 

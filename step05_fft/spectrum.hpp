@@ -115,6 +115,11 @@ InitialSpectrum initial_spectrum(const SpectrumParams& p);
 
 // sum over resolved modes of Phi(k) dk^2: the expected variance of the height field, m^2.
 double resolved_variance(const SpectrumParams& p);
+// sum over resolved modes of |k|^2 Phi(k) dk^2: the expected variance of the slope, summed over
+// both axes (E[(dh/dx)^2 + (dh/dz)^2]).
+double resolved_slope_variance(const SpectrumParams& p);
+// sum over resolved modes of |k|^power Phi(k) dk^2.
+double resolved_moment(const SpectrumParams& p, int power);
 
 // Standard normal numbers from splitmix64 + Box-Muller: the same seed, the same sea, anywhere.
 class GaussianRandom {

@@ -26,9 +26,8 @@ public:
             {"sun_intensity", &LookParams::sun_intensity, 0, 100, "sunlight, linear units (the disc is brighter)", kSky},
             {"cloud_cover", &LookParams::cloud_cover, 0, 1, "fraction of the sky under cloud", kSky},
             {"cloud_speed", &LookParams::cloud_speed, 0, 100, "cloud drift, metres per second", kSky},
-            {"roughness", &LookParams::roughness, 0.01f, 1, "microfacet roughness alpha near the camera", kWater},
-            {"roughness_far", &LookParams::roughness_far, 0.01f, 1, "roughness far away (unresolved waves)", kWater},
-            {"roughness_distance", &LookParams::roughness_distance, 1, 10000, "metres over which roughness grows", kWater},
+            {"roughness", &LookParams::roughness, 0.01f, 1,
+             "microfacet roughness alpha of the resolved surface (waves a pixel cannot resolve add their slopes)", kWater},
             {"scatter_crest", &LookParams::k1, 0, 10, "k1: light through the crests (times wave height)", kWater},
             {"scatter_view", &LookParams::k2, 0, 10, "k2: scatter towards the viewer", kWater},
             {"scatter_lambert", &LookParams::k3, 0, 10, "k3: Lambert term of the scattered light", kWater},
@@ -67,7 +66,7 @@ public:
         p.add_text("sky_image", &sky_image, sky_image, "equirectangular sky image (.hdr, .png); empty: procedural").in_group(kSky);
         p.add_choice("microfacet", &microfacet, microfacet, {"ggx", "beckmann"}, "specular microfacet distribution")
             .in_group(kWater);
-        for (const char* name : {"roughness", "roughness_far", "roughness_distance"}) number(name);
+        number("roughness");
         for (const char* name : {"scatter_colour", "bubble_colour"}) colour(name);
         for (const char* name : {"scatter_crest", "scatter_view", "scatter_lambert", "scatter_bubbles", "height_scale",
                                  "ambient"})
@@ -111,8 +110,6 @@ public:
         p.set("u_sun_radiance", sun_radiance());
         p.set("u_ambient", ambient * step03::srgb_to_linear(glm::mix(horizon_colour, zenith_colour, 0.5f)));
         p.set("u_roughness", roughness);
-        p.set("u_roughness_far", roughness_far);
-        p.set("u_roughness_distance", roughness_distance);
         p.set("u_height_scale", height_scale);
         p.set("u_scatter_colour", step03::srgb_to_linear(scatter_colour));
         p.set("u_bubble_colour", step03::srgb_to_linear(bubble_colour));
@@ -139,7 +136,7 @@ public:
     glm::vec3 sun_colour{1.0f, 0.92f, 0.8f}, zenith_colour{0.16f, 0.36f, 0.7f}, horizon_colour{0.6f, 0.7f, 0.8f};
     std::string sky_image;
     int microfacet = 0, tonemapper = 0;
-    float roughness = 0.08f, roughness_far = 0.3f, roughness_distance = 400;
+    float roughness = 0.08f;
     glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
     float k1 = 1.2f, k2 = 0.35f, k3 = 0.25f, k4 = 0.3f, height_scale = 2, ambient = 0.6f, foam_roughness = 0.6f;
     float fog_density = 0.0012f, fog_falloff = 0.02f, bloom_threshold = 2.5f, bloom_strength = 0.06f, exposure = 0.9f;

@@ -88,7 +88,11 @@ private:
             gpu_->set_spectra(pointers);
             foam_->resize(wanted.resolution);
             height_variance_ = 0;
-            for (const auto& p : step06::cascade_spectra(wanted)) height_variance_ += step05::resolved_variance(p);
+            slope_variances_.clear();
+            for (const auto& p : step06::cascade_spectra(wanted)) {
+                height_variance_ += step05::resolved_variance(p);
+                slope_variances_.push_back(float(step05::resolved_slope_variance(p)));
+            }
         }
         // A bound on how far any point moves, for the frustum culling: five standard deviations of
         // the height, and as much again times the choppiness sideways (|D~| = |h~| mode by mode).
@@ -133,10 +137,13 @@ private:
         p.set("u_displacement", 0);
         p.set("u_slopes", 1);
         p.set("u_sky", 3);
+        p.set("u_slope_moments", 4);
+        p.set("u_cascade_slope_variance", slope_variances_);
         glBindTextureUnit(0, gpu_->displacement_texture());
         glBindTextureUnit(1, gpu_->slopes_texture());
         foam_->bind(p, 2);
         glBindTextureUnit(3, sky_->cubemap());
+        glBindTextureUnit(4, gpu_->slope_moments_texture());
     }
 
     void draw_sea() {
@@ -281,7 +288,8 @@ private:
     step06::FoamSettings foam_settings_;
     unsigned spectrum_built_for_ = 0;
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
-    double height_variance_ = 0;  // m^2, of the summed cascades
+    double height_variance_ = 0;         // m^2, of the summed cascades
+    std::vector<float> slope_variances_;  // E[sx^2 + sz^2] of each cascade (the unresolved roughness)
     int split_effect_ = 0;
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};

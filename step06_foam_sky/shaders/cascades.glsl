@@ -17,16 +17,32 @@ vec4 total_displacement(vec2 p, float lod) {
     return sum;
 }
 
+// The mip level of cascade c that averages a footprint of `footprint` metres.
+float cascade_lod(int c, float footprint) {
+    return max(0.0, log2(footprint * float(textureSize(u_displacement, 0).x) / u_patch_sizes[c]));
+}
+
+// (l Dx, h, l Dz, l dDx/dz) summed over the cascades as a sample `footprint` metres wide sees
+// them: a vertex of a mesh whose vertices are footprint / 2 apart can carry no wave shorter than
+// the footprint (two vertices a wavelength), so each cascade is read at the mip level that
+// averages the footprint, and one whose whole tile is under two footprints not at all.
+vec4 displacement_at(vec2 p, float footprint) {
+    vec4 sum = vec4(0.0);
+    for (int c = 0; c < CASCADES; ++c)
+        if (u_cascade_enabled[c] && footprint < 0.5 * u_patch_sizes[c])
+            sum += textureLod(u_displacement, cascade_uv(p, c), cascade_lod(c, footprint));
+    return sum;
+}
+
 // The summed surface at p as seen by a sample `footprint` metres wide (compute shaders: foam,
 // export): each cascade at the mip level that averages that footprint, and none whose tile is
 // under two footprints (its mipmapped mean is zero), as the fragment shader does.
 void surface_at(vec2 p, float footprint, out vec4 displacement, out vec4 slopes) {
     displacement = vec4(0.0);
     slopes = vec4(0.0);
-    float n = float(textureSize(u_displacement, 0).x);
     for (int c = 0; c < CASCADES; ++c) {
         if (!u_cascade_enabled[c] || footprint >= 0.5 * u_patch_sizes[c]) continue;
-        float lod = max(0.0, log2(footprint * n / u_patch_sizes[c]));
+        float lod = cascade_lod(c, footprint);
         displacement += textureLod(u_displacement, cascade_uv(p, c), lod);
         slopes += textureLod(u_slopes, cascade_uv(p, c), lod);
     }

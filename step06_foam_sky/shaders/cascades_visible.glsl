@@ -21,11 +21,29 @@ vec4 visible_displacement(vec2 p) {
     return sum;
 }
 
+uniform sampler2DArray u_slope_moments;         // (sx^2, sz^2, sx sz, 0), mipmapped (step05)
+uniform float u_cascade_slope_variance[CASCADES];  // E[sx^2 + sz^2] of each whole cascade
+
+// The slope variance this pixel's footprint averages away (LEAN mapping, Olano and Baker 2010;
+// Bruneton, Neyret and Holzschuch 2010): for each cascade the mipmapped mean of s^2 less the
+// square of the mipmapped mean slope, and all of the variance of the cascades the pixel cannot
+// see at all. Set by total_slopes.
+float unresolved_slope_variance = 0.0;
+
 // (dh/dx, dh/dz, l dDx/dx, l dDz/dz) summed: derivatives of a sum are sums of derivatives.
 vec4 total_slopes(vec2 p) {
     vec4 sum = vec4(0.0);
-    for (int c = 0; c < CASCADES; ++c)
-        if (cascade_seen[c]) sum += texture(u_slopes, cascade_uv(p, c));
+    unresolved_slope_variance = 0.0;
+    for (int c = 0; c < CASCADES; ++c) {
+        if (cascade_seen[c]) {
+            vec4 slopes = texture(u_slopes, cascade_uv(p, c));
+            vec2 moments = texture(u_slope_moments, cascade_uv(p, c)).xy;
+            sum += slopes;
+            unresolved_slope_variance += max(moments.x - slopes.x * slopes.x + moments.y - slopes.y * slopes.y, 0.0);
+        } else if (u_cascade_enabled[c]) {
+            unresolved_slope_variance += u_cascade_slope_variance[c];
+        }
+    }
     return sum;
 }
 

@@ -20,7 +20,7 @@ uniform vec3 u_sun_radiance;
 uniform vec3 u_ambient;
 uniform samplerCube u_sky;
 uniform float u_sky_max_lod;
-uniform float u_roughness, u_roughness_far, u_roughness_distance;
+uniform float u_roughness;  // of the resolved surface; the unresolved waves add their slope variance
 uniform float u_height_scale;          // metres that count as a full crest for the scatter term
 uniform vec3 u_scatter_colour, u_bubble_colour, u_foam_colour;
 uniform float u_k1, u_k2, u_k3, u_k4;
@@ -60,8 +60,10 @@ void main() {
     out_colour = vec4(level_colour(v_level), 1.0); return;
 #endif
 
-    // Unresolved waves far away: the surface looks rougher with distance.
-    float alpha = mix(u_roughness, u_roughness_far, 1.0 - exp(-distance / u_roughness_distance));
+    // Waves too small for this pixel are not lost: their slopes become microfacets. A Beckmann
+    // surface of roughness alpha has slope variance alpha^2 / 2 per axis, so the unresolved
+    // variance summed over both axes adds to alpha^2 (GGX is given the same alpha).
+    float alpha = sqrt(u_roughness * u_roughness + unresolved_slope_variance);
     alpha = mix(alpha, u_foam_roughness, foam);
     const float f0 = 0.02;
     float fresnel = fresnel_schlick(dot(n, v), f0);

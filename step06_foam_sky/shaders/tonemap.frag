@@ -38,14 +38,25 @@ vec3 agx(vec3 c) {
     return clamp(outset * c, 0.0, 1.0);
 }
 
+// A dither of one 8-bit step, triangular (the difference of two uniform values, so the error's
+// mean and variance do not depend on the colour), from Jimenez's interleaved gradient noise at
+// this pixel: smooth gradients (the sky) no longer show bands when the result is rounded to 8
+// bits. Deterministic: the same pixel gets the same offset every frame.
+vec3 dither(vec3 srgb) {
+    float a = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    float b = fract(52.9829189 * fract(dot(gl_FragCoord.xy + vec2(7.0, 13.0), vec2(0.06711056, 0.00583715))));
+    return srgb + (a - b) / 255.0;
+}
+
 void main() {
     vec3 c = texture(u_scene, v_uv).rgb + u_bloom_strength * texture(u_bloom, v_uv).rgb;
     c *= u_exposure;
 #if TONEMAPPER == 0
-    out_colour = vec4(linear_to_srgb(aces_fitted(c)), 1.0);
+    vec3 srgb = linear_to_srgb(aces_fitted(c));
 #elif TONEMAPPER == 1
-    out_colour = vec4(agx(c), 1.0);
+    vec3 srgb = agx(c);
 #else
-    out_colour = vec4(linear_to_srgb(c), 1.0);
+    vec3 srgb = linear_to_srgb(c);
 #endif
+    out_colour = vec4(dither(srgb), 1.0);
 }

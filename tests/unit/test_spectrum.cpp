@@ -243,6 +243,28 @@ TEST(Step05Energy, HeightVarianceMatchesTheSpectrumIntegral) {
     EXPECT_NEAR(resolved_variance(p) / integral, 1.0, 0.03);
 }
 
+TEST(Step05Energy, SlopeVarianceIsTheSecondMomentOfTheSpectrum) {
+    // E[(dh/dx)^2 + (dh/dz)^2] = integral of |k|^2 Phi d^2k = integral of k^2 F(k) dk (D sums to
+    // 1): the grid's sum (which step06's roughness uses) against that 1D integral, over an annulus
+    // the grid covers, as in the height test above.
+    SpectrumParams p;
+    p.resolution = 128;
+    p.patch_size = 1000;
+    p.depth = 10000;
+    const double dk = 2 * kPi / p.patch_size;
+    p.low_cutoff = 2.5 * dk;
+    p.high_cutoff = 60 * dk;
+    double integral = 0;
+    const int steps = 200000;
+    for (int i = 0; i < steps; ++i) {
+        const double step = (p.high_cutoff - p.low_cutoff) / steps, k = p.low_cutoff + (i + 0.5) * step;
+        integral += k * k * omnidirectional_k(p, k) * step;
+    }
+    std::printf("slope variance: %.6f on the grid, %.6f integral of k^2 F(k)\n", resolved_slope_variance(p), integral);
+    EXPECT_NEAR(resolved_slope_variance(p) / integral, 1.0, 0.03);
+    EXPECT_DOUBLE_EQ(resolved_moment(p, 0), resolved_variance(p));
+}
+
 TEST(Step05Energy, HeightsAgainstObservedGrowth) {
     // U = 10 m/s, F = 100 km. JONSWAP's separately fitted alpha and omega_p give Hs = 4 sqrt(E)
     // of about 2.13 m; the JONSWAP growth law (E g^2 / U^4 = 1.6e-7 g F / U^2) and the Coastal
