@@ -9,6 +9,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
+
 #include <stdexcept>
 #include <string>
 
@@ -86,7 +88,14 @@ public:
         const auto d = step03::sun_direction(sun_azimuth, sun_elevation);
         return {float(d.x), float(d.y), float(d.z)};
     }
-    glm::vec3 sun_radiance() const { return sun_intensity * step03::srgb_to_linear(sun_colour); }
+    // Direct sunlight after the clouds: broken cloud (cover up to a half) leaves the sun mostly
+    // clear; towards overcast it dims to 15 % (a thick layer lets through about a tenth of the
+    // direct beam). The glint, the scatter and the disc dim with it; the sky's own light stays.
+    float sun_transmission() const {
+        const float t = std::clamp((cloud_cover - 0.5f) / 0.5f, 0.0f, 1.0f);
+        return 1.0f - 0.85f * t * t * (3.0f - 2.0f * t);
+    }
+    glm::vec3 sun_radiance() const { return sun_transmission() * sun_intensity * step03::srgb_to_linear(sun_colour); }
 
     // The clouds drift with the wind that raises the sea (wind_direction_deg: where it blows to).
     SkySettings sky(double time, double wind_direction_deg) const {
@@ -132,7 +141,7 @@ public:
     bool show(const char* name) const { return shown[index(name)]; }
 
     // The defaults (declare() binds each to its parameter).
-    float sun_azimuth = 330, sun_elevation = 18, sun_intensity = 6, cloud_cover = 0.35f, cloud_speed = 12;
+    float sun_azimuth = 330, sun_elevation = 11, sun_intensity = 6, cloud_cover = 0.35f, cloud_speed = 12;
     glm::vec3 sun_colour{1.0f, 0.92f, 0.8f}, zenith_colour{0.16f, 0.36f, 0.7f}, horizon_colour{0.6f, 0.7f, 0.8f};
     std::string sky_image;
     int microfacet = 0, tonemapper = 0;

@@ -37,10 +37,11 @@ vec3 sky_radiance(vec3 direction) {
     // reflection pointing down would see: more sea than sky).
     vec3 colour = up >= 0.0 ? mix(u_horizon_colour, u_zenith_colour, pow(up, 0.45))
                             : u_horizon_colour * mix(1.0, 0.35, clamp(-up * 4.0, 0.0, 1.0));
-    // Forward scattering around the sun: a tight halo and a wide glow, in units of the sunlight
-    // (the disc is u_sun_disc_gain times brighter than the light it casts).
+    // Forward scattering around the sun: a tight aureole (a few degrees: a wider one blows out a
+    // quarter of the sky) and a faint wide glow, in units of the sunlight (the disc is
+    // u_sun_disc_gain times brighter than the light it casts).
     vec3 sunlight = u_sun_radiance / u_sun_disc_gain;
-    colour += sunlight * (0.6 * pow(max(cos_sun, 0.0), 64.0) + 0.08 * pow(max(cos_sun, 0.0), 6.0));
+    colour += sunlight * (1.0 * pow(max(cos_sun, 0.0), 512.0) + 0.06 * pow(max(cos_sun, 0.0), 8.0));
     // Clouds on a plane 1000 m up, projected along the view ray, fading towards the horizon.
     if (up > 0.0 && u_cloud_cover > 0.0) {
         vec2 p = (direction.xz / up * 1000.0 + u_cloud_offset) / 900.0;
