@@ -35,6 +35,20 @@ inline std::array<double, kCascades> cascade_patch_sizes(double largest) {
     return {largest, largest / 3.7, largest / 3.7 / 3.3, largest / 3.7 / 3.3 / 3.55};
 }
 
+// The first tile must hold the spectrum's peak well: at least kPeakWavelengthsPerTile peak
+// wavelengths (deep water, lambda_p = 2 pi g / omega_p^2), so that the longest waves are many
+// modes, not one or two (a storm's 410 m peak in a 500 m tile repeats as a regular swell). The
+// tile is patch_size, or longer when the peak needs it; the other tiles and the bands follow.
+constexpr double kPeakWavelengthsPerTile = 5;
+inline double largest_tile(const step05::SpectrumParams& shared) {
+    const double peak = step05::peak_omega_of(shared);
+    const double peak_wavelength = peak > 0 ? 2 * step05::kPi * step05::kGravity / (peak * peak) : 0;
+    return std::max(shared.patch_size, kPeakWavelengthsPerTile * peak_wavelength);
+}
+inline std::array<double, kCascades> cascade_patch_sizes(const step05::SpectrumParams& shared) {
+    return cascade_patch_sizes(largest_tile(shared));
+}
+
 inline std::array<Band, kCascades> cascade_bands(const std::array<double, kCascades>& patch_sizes, int resolution) {
     std::array<Band, kCascades> bands{};
     for (int c = 0; c < kCascades; ++c) {
@@ -47,7 +61,7 @@ inline std::array<Band, kCascades> cascade_bands(const std::array<double, kCasca
 
 // The spectrum parameters of each cascade: the shared ones, with its tile, band and seed.
 inline std::array<step05::SpectrumParams, kCascades> cascade_spectra(const step05::SpectrumParams& shared) {
-    const auto sizes = cascade_patch_sizes(shared.patch_size);
+    const auto sizes = cascade_patch_sizes(shared);
     const auto bands = cascade_bands(sizes, shared.resolution);
     std::array<step05::SpectrumParams, kCascades> out;
     for (int c = 0; c < kCascades; ++c) {

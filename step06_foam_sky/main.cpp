@@ -121,7 +121,7 @@ private:
 
     step06::CascadeView cascade_view() const {
         step06::CascadeView view;
-        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_.patch_size);
+        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_);
         for (int c = 0; c < step06::kCascades; ++c) {
             view.patch_sizes[std::size_t(c)] = float(sizes[std::size_t(c)]);
             view.enabled[std::size_t(c)] = cascade_on_[c];
@@ -241,7 +241,7 @@ private:
 
     void ui() override {
         ImGui::Separator();
-        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_.patch_size);
+        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_);
         const auto bands = step06::cascade_bands(sizes, shared_spectrum_.resolution);
         for (int c = 0; c < step06::kCascades; ++c)
             ImGui::Text("cascade %d: tile %.1f m, waves %.2f m .. %.2f m", c, sizes[std::size_t(c)],
