@@ -21,7 +21,7 @@ constexpr int kCascades = 4;
 inline void use_default_sea(step05::OceanParams& params) {
     params.sea.patch_size = 500;
     params.sea.wind_speed = 14;
-    params.choppiness = 1.6f;
+    params.choppiness = 1.3f;
 }
 constexpr double kWavesPerTileAtBoundary = 6;
 

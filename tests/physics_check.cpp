@@ -13,6 +13,10 @@
 //       corr(height, Jacobian) must be negative (the surface squeezes, J < 1, at the crests: sharp
 //       crests, not sharp troughs), and where DIR has foam.pfm, corr(foam, height) positive (foam
 //       on the crests).
+//   physics_check whitecaps DIR...
+//       the whitecap fraction of each export (foam > 0.3 on its grid, after >= 10 s of simulated
+//       foam) against Monahan and O'Muircheartaigh's W = 3.84e-6 U^3.41 (U the export's
+//       wind_speed, m/s): within a factor of 2 where W >= 0.2 %, below 0.2 % where W is.
 // Prints the figures; exit 0 when they hold, 1 otherwise (and 2 on bad input).
 #include "common/image.hpp"
 #include "common/text.hpp"
@@ -23,6 +27,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -156,6 +161,24 @@ int crests(const std::string& dir) {
     return failures == 0 ? 0 : 1;
 }
 
+int whitecaps(const std::vector<std::string>& dirs) {
+    int failures = 0;
+    for (const auto& dir : dirs) {
+        const Export e = read_export(dir);
+        const auto foam = e.map(dir, e.values.at("file.foam"));
+        double covered = 0;
+        for (double f : foam) covered += f > 0.3;
+        covered /= double(foam.size());
+        const double wind = std::stod(e.values.at("wind_speed"));
+        const double monahan = 3.84e-6 * std::pow(wind, 3.41);
+        const bool ok = monahan < 0.002 ? covered < 0.002 : covered >= monahan / 2 && covered <= monahan * 2;
+        std::printf("%-40s U = %4.1f m/s: whitecaps %6.2f %% of the sea, Monahan %6.2f %% (%s)\n", dir.c_str(), wind,
+                    100 * covered, 100 * monahan, monahan < 0.002 ? "must be < 0.2 %" : "within a factor of 2");
+        failures += ok ? 0 : 1;
+    }
+    return failures == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -163,7 +186,8 @@ int main(int argc, char** argv) {
         const std::string mode = argc > 1 ? argv[1] : "";
         if (mode == "travel" && argc == 6) return travel(argv[2], argv[3], std::stod(argv[4]), std::stod(argv[5]));
         if (mode == "crests" && argc == 3) return crests(argv[2]);
-        std::fprintf(stderr, "usage: physics_check travel DIR_A DIR_B DEGREES TOLERANCE | crests DIR\n");
+        if (mode == "whitecaps" && argc >= 3) return whitecaps(std::vector<std::string>(argv + 2, argv + argc));
+        std::fprintf(stderr, "usage: physics_check travel DIR_A DIR_B DEGREES TOLERANCE | crests DIR | whitecaps DIR...\n");
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "physics_check: %s\n", e.what());

@@ -133,11 +133,11 @@ TEST(Step06Foam, ImpulseDecaysExponentiallyWhateverTheFrameRate) {
 }
 
 TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
-    // Below the clamp (J = 0.65, threshold 0.7, injection 8: 8 * 0.05 / 0.8 = 0.5), the warm start is the
+    // Below the clamp (J = 0.7, threshold 0.75, injection 8: 8 * 0.05 / 0.8 = 0.5), the warm start is the
     // balance of injection and decay: stepping from it, or from zero long enough, stays there
     // (the discrete fixed point is I dt / (1 - e^{-r dt}), which tends to I / r as dt -> 0).
     const step06::FoamSettings s;
-    const double j = 0.65;
+    const double j = 0.7;
     const double steady = step06::foam_steady_state(j, s);
     EXPECT_NEAR(steady, 0.5, 1e-12);
     const double dt = 1.0 / 240;
@@ -151,7 +151,7 @@ TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
     // Without decay the floor of 0.1/s keeps the warm start finite (0.05 * 8 / 0.1 = 4, clamped).
     step06::FoamSettings no_decay = s;
     no_decay.decay_rate = 0;
-    EXPECT_EQ(step06::foam_steady_state(0.65, no_decay), 1.0);
+    EXPECT_EQ(step06::foam_steady_state(0.7, no_decay), 1.0);
 }
 
 TEST(Step06Tessellation, LevelFallsWithDistance) {
