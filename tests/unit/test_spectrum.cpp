@@ -212,13 +212,10 @@ TEST(Step05Energy, PiersonMoskowitzVarianceMatchesTheClosedForm) {
                 1e-6);
 }
 
-TEST(Step05Energy, HeightVarianceMatchesTheSpectrumIntegral) {
-    // Parseval: the mean of h^2 over the grid is sum |h~(k)|^2, whose expectation is the integral
-    // of Phi over the modes the grid carries. The sum is checked against an integral of S(omega)
-    // done here in polar coordinates (not the code's resolved_variance), over the annulus the
-    // grid covers fully, with the grid restricted to it by the cut-offs.
-    // U = 12 m/s, F = 300 km: k_p = 0.044 rad/m, 7 lattice steps of a 1000 m tile. The annulus
-    // runs from 2.5 dk (where S is below 1e-4 of its peak) to 60 dk (inside the Nyquist circle).
+// U = 12 m/s, F = 300 km: k_p = 0.044 rad/m, 7 lattice steps of a 1000 m tile, in deep water. The
+// cut-offs keep an annulus from 2.5 dk (where S is below 1e-4 of its peak) to 60 dk (inside the
+// Nyquist circle): the grid covers it fully.
+SpectrumParams annulus_sea() {
     SpectrumParams p;
     p.wind_speed = 12;
     p.fetch = 300000;
@@ -228,6 +225,15 @@ TEST(Step05Energy, HeightVarianceMatchesTheSpectrumIntegral) {
     const double dk = 2 * kPi / p.patch_size;
     p.low_cutoff = 2.5 * dk;
     p.high_cutoff = 60 * dk;
+    return p;
+}
+
+TEST(Step05Energy, HeightVarianceMatchesTheSpectrumIntegral) {
+    // Parseval: the mean of h^2 over the grid is sum |h~(k)|^2, whose expectation is the integral
+    // of Phi over the modes the grid carries. The sum is checked against an integral of S(omega)
+    // done here in polar coordinates (not the code's resolved_variance), over the annulus the
+    // grid covers fully, with the grid restricted to it by the cut-offs.
+    SpectrumParams p = annulus_sea();
     double integral = 0;                         // int S(omega) domega over the annulus (D sums to 1)
     const double w0 = dispersion(p.low_cutoff, p.depth), w1 = dispersion(p.high_cutoff, p.depth);
     for (int i = 0; i < 100000; ++i) {
@@ -247,13 +253,7 @@ TEST(Step05Energy, SlopeVarianceIsTheSecondMomentOfTheSpectrum) {
     // E[(dh/dx)^2 + (dh/dz)^2] = integral of |k|^2 Phi d^2k = integral of k^2 F(k) dk (D sums to
     // 1): the grid's sum (which step06's roughness uses) against that 1D integral, over an annulus
     // the grid covers, as in the height test above.
-    SpectrumParams p;
-    p.resolution = 128;
-    p.patch_size = 1000;
-    p.depth = 10000;
-    const double dk = 2 * kPi / p.patch_size;
-    p.low_cutoff = 2.5 * dk;
-    p.high_cutoff = 60 * dk;
+    const SpectrumParams p = annulus_sea();
     double integral = 0;
     const int steps = 200000;
     for (int i = 0; i < steps; ++i) {
