@@ -27,9 +27,9 @@ void Camera::declare_params(ParamRegistry& params, const CameraView& view) {
         {"camera_fov", &fov_deg, 10, 120, "vertical field of view, degrees"},
     };
     params.add_choice("camera_mode", &mode, {"orbit", "fly"}, "orbit turns around the target; fly moves the eye (WASD, Q/E)")
-        .in_group("camera");
+        .in_group(kCameraGroup);
     for (const Number& n : numbers) {
-        Param& p = params.add_float(n.name, n.value, n.min, n.max, n.help).in_group("camera");
+        Param& p = params.add_float(n.name, n.value, n.min, n.max, n.help).in_group(kCameraGroup);
         if (n.value == &distance) p.logarithmic();
     }
 }

@@ -23,6 +23,9 @@ struct CameraInput {
 };
 
 // Where a camera looks from: the orbit camera's target, distance and angles.
+// The panel group of the camera_* parameters (Previous/Next carry it to the next step).
+inline const std::string kCameraGroup = "camera";
+
 struct CameraView {
     glm::vec3 target;
     float distance, yaw_deg, pitch_deg;

@@ -1,5 +1,6 @@
 #include "common/handoff.hpp"
 
+#include "common/camera.hpp"
 #include "common/cli.hpp"
 #include "common/text.hpp"
 
@@ -23,14 +24,13 @@ std::string step_executable(const std::string& step) {
 }
 
 std::vector<std::string> handoff_command(const std::string& executable, double time, glm::ivec2 size,
-                                         ParamRegistry& params, bool split) {
+                                         const ParamRegistry& params, bool split) {
     std::vector<std::string> command = {executable, "--start-at", std::to_string(time), "--size",
                                         std::to_string(size.x) + "x" + std::to_string(size.y)};
-    for (const char* name : {"camera_mode", "camera_yaw", "camera_pitch", "camera_distance", "camera_target_x",
-                             "camera_target_y", "camera_target_z", "camera_fov"})
-        if (const Param* p = params.find(name)) {
+    for (const auto& p : params.all())
+        if (p->group() == kCameraGroup) {
             command.push_back("--carry");
-            command.push_back(std::string(name) + "=" + p->value_text());
+            command.push_back(p->name() + "=" + p->value_text());
         }
     if (split) command.push_back("--split");
     return command;

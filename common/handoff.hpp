@@ -16,9 +16,9 @@ namespace ocean {
 std::string step_executable(const std::string& step);
 
 // The command line that starts `executable` where this step is: --start-at, --size, the camera
-// parameters this step has (as --carry), --split.
+// parameters this step has (its kCameraGroup, as --carry), --split.
 std::vector<std::string> handoff_command(const std::string& executable, double time, glm::ivec2 size,
-                                         ParamRegistry& params, bool split);
+                                         const ParamRegistry& params, bool split);
 
 // Replaces this process with `command` once the step is gone, or returns status.
 int hand_off(int status, const std::vector<std::string>& command);

@@ -221,6 +221,15 @@ std::vector<std::string> BackendTimes::lines() const {
     return out;
 }
 
+void GpuOcean::bind_maps(const ocean::ShaderProgram& program) const {
+    program.set("u_displacement", 0);
+    program.set("u_slopes", 1);
+    program.set("u_slope_moments", 2);
+    glBindTextureUnit(0, displacement_.id());
+    glBindTextureUnit(1, slopes_.id());
+    glBindTextureUnit(2, slope_moments_.id());
+}
+
 std::vector<float> GpuOcean::read_fields() const {
     std::vector<float> out(std::size_t(n_) * n_ * 4 * 2 * cascades_.size());
     glGetNamedBufferSubData(fields_.id(), 0, GLsizeiptr(out.size() * sizeof(float)), out.data());

@@ -51,6 +51,9 @@ public:
     GLuint slopes_texture() const { return slopes_.id(); }
     // (dh/dx^2, dh/dz^2, dh/dx dh/dz, 0) per texel, mipmapped: the second moments of the slope.
     GLuint slope_moments_texture() const { return slope_moments_.id(); }
+    // Binds the three maps to texture units 0, 1, 2 and points `program`'s u_displacement,
+    // u_slopes and u_slope_moments at them (a program without one of them ignores it).
+    void bind_maps(const ocean::ShaderProgram& program) const;
     // The fields of every cascade as 4 packed complex values per texel (tests, export).
     std::vector<float> read_fields() const;
 
@@ -69,7 +72,7 @@ private:
 };
 
 // The same transforms (4 complex N x N fields per cascade) timed with each backend: medians of
-// `repeats` runs, wall ms around glFinish (dft 0 when N > 64).
+// `repeats` runs, wall ms around glFinish.
 struct BackendTimes {
     int n = 0, layers = 0, repeats = 0;
     double dft_ms = std::nan(""), gpu_fft_ms = 0, fftw_ms = 0;  // no DFT above N = 64

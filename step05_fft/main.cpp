@@ -59,7 +59,6 @@ private:
         if (spectrum_built_for_ != ocean_params_.changes.value) {  // a spectrum parameter moved
             spectrum_built_for_ = ocean_params_.changes.value;
             const step05::SpectrumParams& wanted = ocean_params_.spectrum();
-            spectrum_params_ = wanted;
             spectrum_ = std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(wanted));
             gpu_->set_spectra({spectrum_.get()});
             spectrum_view_.update(wanted, *spectrum_);
@@ -89,14 +88,11 @@ private:
         }
         ocean::ShaderProgram* ocean = program("ocean", {"ocean.vert", "ocean.frag"}, {"NORMALS " + std::to_string(normals_)});
         step03::upload_light(*ocean, light_.light());
-        ocean->set("u_patch_size", float(spectrum_params_.patch_size));
-        ocean->set("u_resolution", spectrum_params_.resolution);
+        ocean->set("u_patch_size", float(ocean_params_.sea.patch_size));
+        ocean->set("u_resolution", ocean_params_.sea.resolution);
         ocean->set("u_wireframe", int(wireframe_));
         ocean->set("u_background", step03::srgb_to_linear(clear));
-        ocean->set("u_displacement", 0);
-        ocean->set("u_slopes", 1);
-        glBindTextureUnit(0, gpu_->displacement_texture());
-        glBindTextureUnit(1, gpu_->slopes_texture());
+        gpu_->bind_maps(*ocean);
         draw_grid(*ocean, grid_, wireframe_);
     }
 
@@ -111,12 +107,9 @@ private:
         p->set("u_map", map);
         p->set("u_range", range);
         p->set("u_resolution", glm::vec2(framebuffer_size()));
-        p->set("u_displacement", 0);
-        p->set("u_slopes", 1);
-        p->set("u_spectrum_image", 2);
-        glBindTextureUnit(0, gpu_->displacement_texture());
-        glBindTextureUnit(1, gpu_->slopes_texture());
-        glBindTextureUnit(2, spectrum_view_.texture());
+        gpu_->bind_maps(*p);
+        p->set("u_spectrum_image", 3);
+        glBindTextureUnit(3, spectrum_view_.texture());
         glUseProgram(p->id());
         draw_fullscreen_triangle();
     }
@@ -131,7 +124,7 @@ private:
     bool supports_export() const override { return true; }
     void export_results(const std::string& dir) override {
         step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
-                            spectrum_params_.patch_size, time(), ocean_params_.choppiness, params());
+                            ocean_params_.sea.patch_size, time(), ocean_params_.choppiness, params());
     }
 
     std::vector<std::pair<std::string, double>> bench_extra() override {
@@ -150,7 +143,6 @@ private:
     ocean::GridParams grid_params_{800, 400};  // several tiles: the sea reaches the horizon
     std::unique_ptr<step05::GpuOcean> gpu_;
     std::unique_ptr<step05::InitialSpectrum> spectrum_;
-    step05::SpectrumParams spectrum_params_;  // what spectrum_ was made from
     unsigned spectrum_built_for_ = 0;
     step05::SpectrumView spectrum_view_;
     ocean::GridMesh grid_;

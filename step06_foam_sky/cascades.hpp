@@ -7,6 +7,7 @@
 // the last band ends at the circle the last grid resolves, pi N / L_3.
 #pragma once
 
+#include "common/shader.hpp"
 #include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
 
@@ -74,5 +75,19 @@ inline std::array<step05::SpectrumParams, kCascades> cascade_spectra(const step0
     }
     return out;
 }
+
+// What every pass that reads the summed surface (the renderer, foam.comp, --export) needs of the
+// cascades besides their maps: each tile's side and which cascades are drawn (cascades.glsl).
+struct CascadeView {
+    std::array<float, kCascades> patch_sizes{};
+    std::array<bool, kCascades> enabled{true, true, true, true};
+
+    // u_patch_sizes and u_cascade_enabled of `program`.
+    void upload(const ocean::ShaderProgram& program) const {
+        program.set("u_patch_sizes", std::vector<float>(patch_sizes.begin(), patch_sizes.end()));
+        for (int c = 0; c < kCascades; ++c)
+            program.set("u_cascade_enabled[" + std::to_string(c) + "]", int(enabled[std::size_t(c)]));
+    }
+};
 
 }  // namespace step06

@@ -55,19 +55,14 @@ void FoamSimulation::update(const step05::GpuOcean& ocean, const CascadeView& ca
         p->set("u_texel_size" + index, float(now.texel_size));
         windows_[std::size_t(level)] = now;
     }
-    p->set("u_patch_sizes", std::vector<float>(cascades.patch_sizes.begin(), cascades.patch_sizes.end()));
-    for (int c = 0; c < 4; ++c)
-        p->set("u_cascade_enabled[" + std::to_string(c) + "]", int(cascades.enabled[std::size_t(c)]));
+    cascades.upload(*p);
     p->set("u_dt", float(dt));
     p->set("u_threshold", float(s.threshold));
     p->set("u_injection", float(s.injection));
     p->set("u_decay_rate", float(s.decay_rate));
     p->set("u_n", n_);
     p->set("u_warm_start", int(first));
-    p->set("u_displacement", 0);
-    p->set("u_slopes", 1);
-    glBindTextureUnit(0, ocean.displacement_texture());
-    glBindTextureUnit(1, ocean.slopes_texture());
+    ocean.bind_maps(*p);
     glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32F);
     glUseProgram(p->id());
     const GLuint groups = GLuint((n_ + 7) / 8);

@@ -16,6 +16,7 @@
 #include "common/gl.hpp"
 #include "common/params.hpp"
 #include "step05_fft/gpu_ocean.hpp"
+#include "step06_foam_sky/cascades.hpp"
 
 #include <glm/vec2.hpp>
 
@@ -74,12 +75,6 @@ FoamWindow foam_window(int level, int n, glm::dvec2 centre);
 // Where a level's window is centred: ahead of the camera by 30 % of its side along the view's
 // heading, so that the coarse levels cover the sea the camera looks at rather than behind it.
 glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_xz);
-
-// What the foam pass needs of the cascades (the same the renderer binds).
-struct CascadeView {
-    std::array<float, 4> patch_sizes{};
-    std::array<bool, 4> enabled{true, true, true, true};
-};
 
 // The GPU side: one r32f layer per clipmap level, updated by foam.comp from the summed surface.
 class FoamSimulation {

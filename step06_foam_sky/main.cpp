@@ -77,22 +77,18 @@ private:
     void update(double /*time*/, double dt) override {
         if (spectrum_built_for_ != ocean_params_.changes.value) {  // a spectrum parameter moved
             spectrum_built_for_ = ocean_params_.changes.value;
-            const step05::SpectrumParams& wanted = ocean_params_.spectrum();
-            shared_spectrum_ = wanted;
             spectra_.clear();
             std::vector<const step05::InitialSpectrum*> pointers;
-            for (const auto& p : step06::cascade_spectra(wanted)) {
-                spectra_.push_back(std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(p)));
-                pointers.push_back(spectra_.back().get());
-            }
-            gpu_->set_spectra(pointers);
-            foam_->resize(wanted.resolution);
             height_variance_ = 0;
             slope_variances_.clear();
-            for (const auto& p : step06::cascade_spectra(wanted)) {
+            for (const auto& p : step06::cascade_spectra(ocean_params_.spectrum())) {
+                spectra_.push_back(std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(p)));
+                pointers.push_back(spectra_.back().get());
                 height_variance_ += step05::resolved_variance(p);
                 slope_variances_.push_back(float(step05::resolved_slope_variance(p)));
             }
+            gpu_->set_spectra(pointers);
+            foam_->resize(ocean_params_.spectrum().resolution);
         }
         // A bound on how far any point moves, for the frustum culling: five standard deviations of
         // the height, and as much again times the choppiness sideways (|D~| = |h~| mode by mode).
@@ -110,7 +106,8 @@ private:
         }
         update_foam(dt);
         ocean::GpuScope timed(timers(), "sky");
-        sky_->render(look_.sky(time(), ocean_params_.spectrum().wind_direction));
+        sky_settings_ = look_.sky(time(), ocean_params_.spectrum().wind_direction);
+        sky_->render(sky_settings_);
     }
 
     void update_foam(double dt) {
@@ -119,31 +116,24 @@ private:
         foam_->update(*gpu_, cascade_view(), {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
     }
 
+    // The tiles of the simulated spectra (made in update()) and the cascade switches.
     step06::CascadeView cascade_view() const {
         step06::CascadeView view;
-        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_);
         for (int c = 0; c < step06::kCascades; ++c) {
-            view.patch_sizes[std::size_t(c)] = float(sizes[std::size_t(c)]);
+            view.patch_sizes[std::size_t(c)] = float(spectra_[std::size_t(c)]->patch_size);
             view.enabled[std::size_t(c)] = cascade_on_[c];
         }
         return view;
     }
 
+    // Units 0-2: the cascades' maps, 3: foam, 4: sky.
     void bind_cascades(const ocean::ShaderProgram& p) {
-        const step06::CascadeView view = cascade_view();
-        p.set("u_patch_sizes", std::vector<float>(view.patch_sizes.begin(), view.patch_sizes.end()));
-        for (int c = 0; c < step06::kCascades; ++c)
-            p.set("u_cascade_enabled[" + std::to_string(c) + "]", int(view.enabled[std::size_t(c)]));
-        p.set("u_displacement", 0);
-        p.set("u_slopes", 1);
-        p.set("u_sky", 3);
-        p.set("u_slope_moments", 4);
+        cascade_view().upload(p);
+        gpu_->bind_maps(p);
+        foam_->bind(p, 3);
+        p.set("u_sky", 4);
+        glBindTextureUnit(4, sky_->cubemap());
         p.set("u_cascade_slope_variance", slope_variances_);
-        glBindTextureUnit(0, gpu_->displacement_texture());
-        glBindTextureUnit(1, gpu_->slopes_texture());
-        foam_->bind(p, 2);
-        glBindTextureUnit(3, sky_->cubemap());
-        glBindTextureUnit(4, gpu_->slope_moments_texture());
     }
 
     void draw_sea() {
@@ -152,10 +142,9 @@ private:
             if (ocean::ShaderProgram* sky = program("sky", {"fullscreen.vert", "sky.frag"})) {
                 // The sun's disc is drawn here, not kept in the cubemap: the water's specular term
                 // is the sun's reflection, and a disc in the reflected sky would count it twice.
-                const step06::SkySettings settings = look_.sky(time(), ocean_params_.spectrum().wind_direction);
-                sky->set("u_to_sun", settings.to_sun);
-                sky->set("u_sun_radiance", settings.sun_radiance);
-                sky->set("u_sun_size", settings.sun_size);
+                sky->set("u_to_sun", sky_settings_.to_sun);
+                sky->set("u_sun_radiance", sky_settings_.sun_radiance);
+                sky->set("u_sun_size", sky_settings_.sun_size);
                 sky->set("u_draw_sun_disc", int(!sky_->uses_image()));
                 sky->set("u_inverse_view_projection", glm::inverse(view_projection));
                 sky->set("u_sky", 3);
@@ -197,10 +186,7 @@ private:
         p->set("u_range", debug_map_ <= 2 ? 1.0f : 0.5f);
         p->set("u_resolution", glm::vec2(framebuffer_size()));
         p->set("u_layer", debug_cascade_);
-        p->set("u_displacement", 0);
-        p->set("u_slopes", 1);
-        glBindTextureUnit(0, gpu_->displacement_texture());
-        glBindTextureUnit(1, gpu_->slopes_texture());
+        gpu_->bind_maps(*p);
         glUseProgram(p->id());
         draw_fullscreen_triangle();
     }
@@ -241,8 +227,8 @@ private:
 
     void ui() override {
         ImGui::Separator();
-        const auto sizes = step06::cascade_patch_sizes(shared_spectrum_);
-        const auto bands = step06::cascade_bands(sizes, shared_spectrum_.resolution);
+        const auto sizes = step06::cascade_patch_sizes(ocean_params_.spectrum());
+        const auto bands = step06::cascade_bands(sizes, ocean_params_.spectrum().resolution);
         for (int c = 0; c < step06::kCascades; ++c)
             ImGui::Text("cascade %d: tile %.1f m, waves %.2f m .. %.2f m", c, sizes[std::size_t(c)],
                         bands[std::size_t(c)].high > 0 ? 2 * step05::kPi / bands[std::size_t(c)].high : 0.0,
@@ -282,14 +268,14 @@ private:
     std::unique_ptr<step05::GpuOcean> gpu_;
     std::unique_ptr<step06::Sky> sky_;
     std::vector<std::unique_ptr<step05::InitialSpectrum>> spectra_;
-    step05::SpectrumParams shared_spectrum_;
     std::unique_ptr<step06::FoamSimulation> foam_;
     std::string sky_image_loaded_;
     step06::FoamSettings foam_settings_;
     unsigned spectrum_built_for_ = 0;
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
     double height_variance_ = 0;         // m^2, of the summed cascades
-    std::vector<float> slope_variances_;  // E[sx^2 + sz^2] of each cascade (the unresolved roughness)
+    std::vector<float> slope_variances_;
+    step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with  // E[sx^2 + sz^2] of each cascade (the unresolved roughness)
     int split_effect_ = 0;
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};

@@ -16,16 +16,11 @@ void export_surface(const std::string& dir, ocean::ProgramFactory& programs, con
     ocean::Texture displacement = ocean::make_texture(GL_TEXTURE_2D), slopes = ocean::make_texture(GL_TEXTURE_2D);
     glTextureStorage2D(displacement.id(), 1, GL_RGBA32F, n, n);
     glTextureStorage2D(slopes.id(), 1, GL_RGBA32F, n, n);
-    p->set("u_patch_sizes", std::vector<float>(cascades.patch_sizes.begin(), cascades.patch_sizes.end()));
-    for (int c = 0; c < 4; ++c)
-        p->set("u_cascade_enabled[" + std::to_string(c) + "]", int(cascades.enabled[std::size_t(c)]));
+    cascades.upload(*p);
     p->set("u_n", n);
     p->set("u_origin", window.origin);
     p->set("u_texel_size", float(window.texel_size));
-    p->set("u_displacement", 0);
-    p->set("u_slopes", 1);
-    glBindTextureUnit(0, ocean.displacement_texture());
-    glBindTextureUnit(1, ocean.slopes_texture());
+    ocean.bind_maps(*p);
     glBindImageTexture(0, displacement.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, slopes.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glUseProgram(p->id());

@@ -4,8 +4,9 @@
 // exp(-rate dt) and grows where J falls below the threshold, at a rate times dt.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "cascades.glsl"
+// FOAM_LEVELS and the clipmap's layout:
+#include "foam_map.glsl"
 
-const int FOAM_LEVELS = 3;
 layout(r32f, binding = 0) uniform image2DArray u_foam_image;
 
 uniform int u_n;                                // texels per side of a level (a power of two)
