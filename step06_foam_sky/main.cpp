@@ -24,6 +24,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -55,6 +56,9 @@ private:
         p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").in_group("geometry");
         p.add_bool("frustum_culling", &cull_, "discard patches outside the view").in_group("geometry");
         p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level").in_group("geometry");
+        p.add_float("anisotropy", &anisotropy_, 1, 16,
+                    "most texture samples along a pixel's long footprint (1: isotropic trilinear)")
+            .in_group("geometry");
         look_.declare(p);
         p.add_choice("view", &view_, {"shaded", "normals", "foam", "jacobian", "tessellation", "cascade_map"},
                      "the final picture, or one ingredient");
@@ -72,6 +76,11 @@ private:
         gpu_ = std::make_unique<step05::GpuOcean>(program_factory());
         sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
         foam_ = std::make_unique<step06::FoamSimulation>(program_factory());
+        slope_sampler_ = ocean::make_sampler();
+        glSamplerParameteri(slope_sampler_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glSamplerParameteri(slope_sampler_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glSamplerParameteri(slope_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glSamplerParameteri(slope_sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
 
     void update(double /*time*/, double dt) override {
@@ -171,11 +180,21 @@ private:
         ocean->set("u_cull", int(cull_));
         ocean->set("u_sky_max_lod", sky_->max_lod());
         ocean->set("u_wireframe", int(wireframe_));
+        // Only the fragment shader reads the slopes and their moments (units 1 and 2), and only it
+        // has screen derivatives: its fetches go through an anisotropic sampler, which averages
+        // up to `anisotropy` trilinear samples along a grazing pixel's long footprint. The
+        // textures' own state stays isotropic for the evaluation and compute shaders (llvmpipe
+        // applies anisotropy even to textureLod there, and the mesh cracked along patch edges).
+        if (ocean::max_texture_anisotropy() > 1.0f)
+            glSamplerParameterf(slope_sampler_.id(), GL_TEXTURE_MAX_ANISOTROPY,
+                                std::min(anisotropy_, ocean::max_texture_anisotropy()));
+        for (GLuint unit : {1u, 2u}) glBindSampler(unit, slope_sampler_.id());
         glEnable(GL_DEPTH_TEST);
         glUseProgram(ocean->id());
         if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
         patches_.draw();
         if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        for (GLuint unit : {1u, 2u}) glBindSampler(unit, 0);
         glDisable(GL_DEPTH_TEST);
     }
 
@@ -186,6 +205,9 @@ private:
         p->set("u_range", debug_map_ <= 2 ? 1.0f : 0.5f);
         p->set("u_resolution", glm::vec2(framebuffer_size()));
         p->set("u_layer", debug_cascade_);
+        // map_view.frag also declares step05's spectrum image (a sampler2D): left on unit 0 it
+        // would share the unit with the displacement array, which GL refuses at the draw.
+        p->set("u_spectrum_image", 3);
         gpu_->bind_maps(*p);
         glUseProgram(p->id());
         draw_fullscreen_triangle();
@@ -280,6 +302,8 @@ private:
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
+    float anisotropy_ = 16;
+    ocean::Sampler slope_sampler_;
 };
 
 }  // namespace
