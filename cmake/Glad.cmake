@@ -2,7 +2,7 @@
 # --reproducible makes it use the spec shipped with the package (no download: we are offline).
 set(OCEAN_GLAD_DIR "${CMAKE_BINARY_DIR}/glad")
 set(OCEAN_GLAD_EXTENSIONS
-  GL_KHR_debug GL_ARB_texture_filter_anisotropic GL_EXT_texture_filter_anisotropic
+  GL_KHR_debug
   EGL_EXT_platform_base EGL_EXT_platform_device EGL_EXT_device_base EGL_EXT_device_enumeration
   EGL_EXT_device_query EGL_MESA_platform_surfaceless EGL_KHR_create_context
   EGL_KHR_surfaceless_context EGL_KHR_no_config_context)

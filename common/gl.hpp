@@ -54,7 +54,6 @@ struct DeleteVertexArray { void operator()(GLuint id) const { glDeleteVertexArra
 struct DeleteTexture { void operator()(GLuint id) const { glDeleteTextures(1, &id); } };
 struct DeleteFramebuffer { void operator()(GLuint id) const { glDeleteFramebuffers(1, &id); } };
 struct DeleteRenderbuffer { void operator()(GLuint id) const { glDeleteRenderbuffers(1, &id); } };
-struct DeleteSampler { void operator()(GLuint id) const { glDeleteSamplers(1, &id); } };
 struct DeleteQuery { void operator()(GLuint id) const { glDeleteQueries(1, &id); } };
 struct DeleteShader { void operator()(GLuint id) const { glDeleteShader(id); } };
 struct DeleteProgram { void operator()(GLuint id) const { glDeleteProgram(id); } };
@@ -65,7 +64,6 @@ using VertexArray = GlHandle<detail::DeleteVertexArray>;
 using Texture = GlHandle<detail::DeleteTexture>;
 using Framebuffer = GlHandle<detail::DeleteFramebuffer>;
 using Renderbuffer = GlHandle<detail::DeleteRenderbuffer>;
-using Sampler = GlHandle<detail::DeleteSampler>;
 using Query = GlHandle<detail::DeleteQuery>;
 using Shader = GlHandle<detail::DeleteShader>;
 using Program = GlHandle<detail::DeleteProgram>;
@@ -76,16 +74,6 @@ inline VertexArray make_vertex_array() { GLuint id = 0; glCreateVertexArrays(1, 
 inline Texture make_texture(GLenum target) { GLuint id = 0; glCreateTextures(target, 1, &id); return Texture(id); }
 inline Framebuffer make_framebuffer() { GLuint id = 0; glCreateFramebuffers(1, &id); return Framebuffer(id); }
 inline Renderbuffer make_renderbuffer() { GLuint id = 0; glCreateRenderbuffers(1, &id); return Renderbuffer(id); }
-inline Sampler make_sampler() { GLuint id = 0; glCreateSamplers(1, &id); return Sampler(id); }
 inline Query make_query(GLenum target) { GLuint id = 0; glCreateQueries(target, 1, &id); return Query(id); }
-
-// The most anisotropic filtering the driver offers (GL 4.6 core, or the ARB/EXT extension on
-// 4.5), 1 where it offers none: a sampler then filters isotropically, as before.
-inline float max_texture_anisotropy() {
-    if (!GLAD_GL_ARB_texture_filter_anisotropic && !GLAD_GL_EXT_texture_filter_anisotropic) return 1.0f;
-    GLfloat most = 1.0f;
-    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &most);
-    return most;
-}
 
 }  // namespace ocean

@@ -56,8 +56,8 @@ private:
         p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").in_group("geometry");
         p.add_bool("frustum_culling", &cull_, "discard patches outside the view").in_group("geometry");
         p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level").in_group("geometry");
-        p.add_float("anisotropy", &anisotropy_, 1, 16,
-                    "most texture samples along a pixel's long footprint (1: isotropic trilinear)")
+        p.add_int("anisotropy", &anisotropy_, 1, 16,
+                  "most samples of each cascade along a pixel's long footprint (1: isotropic trilinear)")
             .in_group("geometry");
         look_.declare(p);
         p.add_choice("view", &view_, {"shaded", "normals", "foam", "jacobian", "tessellation", "cascade_map"},
@@ -76,11 +76,6 @@ private:
         gpu_ = std::make_unique<step05::GpuOcean>(program_factory());
         sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
         foam_ = std::make_unique<step06::FoamSimulation>(program_factory());
-        slope_sampler_ = ocean::make_sampler();
-        glSamplerParameteri(slope_sampler_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glSamplerParameteri(slope_sampler_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-        glSamplerParameteri(slope_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glSamplerParameteri(slope_sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
 
     void update(double /*time*/, double dt) override {
@@ -165,7 +160,8 @@ private:
         const int debug = view_ >= 1 && view_ <= 4 ? view_ : 0;
         ocean::ShaderProgram* ocean =
             program("ocean", {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"},
-                    {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug)});
+                    {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug),
+                     "ANISOTROPIC_TAPS " + std::to_string(anisotropy_)});
         ocean::GpuScope timed(timers(), "ocean");
         bind_cascades(*ocean);
         look_.upload_shading(*ocean);
@@ -180,21 +176,11 @@ private:
         ocean->set("u_cull", int(cull_));
         ocean->set("u_sky_max_lod", sky_->max_lod());
         ocean->set("u_wireframe", int(wireframe_));
-        // Only the fragment shader reads the slopes and their moments (units 1 and 2), and only it
-        // has screen derivatives: its fetches go through an anisotropic sampler, which averages
-        // up to `anisotropy` trilinear samples along a grazing pixel's long footprint. The
-        // textures' own state stays isotropic for the evaluation and compute shaders (llvmpipe
-        // applies anisotropy even to textureLod there, and the mesh cracked along patch edges).
-        if (ocean::max_texture_anisotropy() > 1.0f)
-            glSamplerParameterf(slope_sampler_.id(), GL_TEXTURE_MAX_ANISOTROPY,
-                                std::min(anisotropy_, ocean::max_texture_anisotropy()));
-        for (GLuint unit : {1u, 2u}) glBindSampler(unit, slope_sampler_.id());
         glEnable(GL_DEPTH_TEST);
         glUseProgram(ocean->id());
         if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
         patches_.draw();
         if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-        for (GLuint unit : {1u, 2u}) glBindSampler(unit, 0);
         glDisable(GL_DEPTH_TEST);
     }
 
@@ -302,8 +288,7 @@ private:
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
-    float anisotropy_ = 16;
-    ocean::Sampler slope_sampler_;
+    int anisotropy_ = 2;
 };
 
 }  // namespace

@@ -39,9 +39,8 @@ void main() {
         out_colour = vec4(level_colour(v_level) * 1.5, 1.0);  // through the tonemapper: keep it in range
         return;
     }
-    find_visible_cascades(v_rest_xz);
-    vec4 displacement = visible_displacement(v_rest_xz);
-    vec4 slopes = total_slopes(v_rest_xz);
+    SurfaceSample surface = sample_surface(v_rest_xz);
+    vec4 displacement = surface.displacement, slopes = surface.slopes;
     vec3 n = choppy_normal(displacement, slopes);
     vec3 to_eye = u_eye - v_world_position;
     float distance = length(to_eye);
@@ -63,7 +62,7 @@ void main() {
     // Waves too small for this pixel are not lost: their slopes become microfacets. A Beckmann
     // surface of roughness alpha has slope variance alpha^2 / 2 per axis, so the unresolved
     // variance summed over both axes adds to alpha^2 (GGX is given the same alpha).
-    float alpha = sqrt(u_roughness * u_roughness + unresolved_slope_variance);
+    float alpha = sqrt(u_roughness * u_roughness + surface.unresolved_slope_variance);
     alpha = mix(alpha, u_foam_roughness, foam);
     const float f0 = 0.02;
     float fresnel = fresnel_schlick(dot(n, v), f0);
