@@ -1,4 +1,5 @@
 #include "step06_foam_sky/foam.hpp"
+#include "step06_foam_sky/foam_pattern.hpp"
 
 #include "common/error.hpp"
 
@@ -69,6 +70,28 @@ void FoamSimulation::update(const step05::GpuOcean& ocean, const CascadeView& ca
     glDispatchCompute(groups, groups, GLuint(kFoamLevels));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     glGenerateTextureMipmap(texture_.id());  // distant foam averages instead of sparkling
+}
+
+FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {
+    const FoamPatternSettings settings;
+    const std::vector<std::uint8_t> bytes = to_r8(foam_pattern(settings));
+    pattern_ = ocean::make_texture(GL_TEXTURE_2D);
+    const int levels = 1 + int(std::floor(std::log2(double(settings.size))));
+    glTextureStorage2D(pattern_.id(), levels, GL_R8, settings.size, settings.size);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(pattern_.id(), 0, 0, 0, settings.size, settings.size, GL_RED, GL_UNSIGNED_BYTE, bytes.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glGenerateTextureMipmap(pattern_.id());
+    glTextureParameteri(pattern_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(pattern_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTextureParameteri(pattern_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(pattern_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit) const {
+    program.set("u_foam_pattern", unit);
+    program.set("u_foam_pattern_size", kPatternSize);
+    glBindTextureUnit(GLuint(unit), pattern_.id());
 }
 
 void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {

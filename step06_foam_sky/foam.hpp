@@ -79,7 +79,8 @@ glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_x
 // The GPU side: one r32f layer per clipmap level, updated by foam.comp from the summed surface.
 class FoamSimulation {
 public:
-    explicit FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {}
+    // Makes the bubble pattern texture (foam_pattern.hpp) once.
+    explicit FoamSimulation(ocean::ProgramFactory programs);
 
     // A new texture (all zero) when the resolution changes; the next update then starts from the
     // steady state (foam_steady_state).
@@ -90,6 +91,10 @@ public:
                 glm::dvec2 forward_xz, double dt, const FoamSettings& settings);
     // The windows and the texture, for the renderer (foam_map.glsl's uniforms) and --export.
     void bind(const ocean::ShaderProgram& program, int unit) const;
+    // The bubble pattern (u_foam_pattern, R8, mipmapped, repeating) and the metres one tile of it
+    // covers (u_foam_pattern_size).
+    void bind_pattern(const ocean::ShaderProgram& program, int unit) const;
+    static constexpr float kPatternSize = 9.0f;  // metres: about ten 1 m bubble cells a side
     const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
     GLuint texture() const { return texture_.id(); }
     int resolution() const { return n_; }
@@ -99,6 +104,7 @@ public:
 private:
     ocean::ProgramFactory programs_;
     ocean::Texture texture_;
+    ocean::Texture pattern_;
     int n_ = 0;
     bool warm_start_ = true;
     std::array<FoamWindow, kFoamLevels> windows_{};

@@ -130,11 +130,12 @@ private:
         return view;
     }
 
-    // Units 0-2: the cascades' maps, 3: foam, 4: sky.
+    // Units 0-2: the cascades' maps, 3: foam, 4: sky, 5: the foam's bubble pattern.
     void bind_cascades(const ocean::ShaderProgram& p) {
         cascade_view().upload(p);
         gpu_->bind_maps(p);
         foam_->bind(p, 3);
+        foam_->bind_pattern(p, 5);
         p.set("u_sky", 4);
         glBindTextureUnit(4, sky_->cubemap());
         p.set("u_cascade_slope_variance", slope_variances_);

@@ -100,7 +100,20 @@ float foam_at(vec2 p) {
     return foam;
 }
 
+uniform sampler2D u_foam_pattern;   // foam_pattern.hpp: 1 on the borders of bubble cells
+uniform float u_foam_pattern_size;  // metres one tile of it covers
+
+// foam_pattern.hpp's foam_cover: fresh foam (amount 1) covers everything; as it decays the cell
+// middles open first and the borders last, so a fading whitecap turns to lace, with a soft edge.
+const float FOAM_HOLES = 0.5, FOAM_EDGE = 0.3;
+float foam_cover(float amount, float pattern) {
+    return smoothstep(0.0, 1.0, (amount - (1.0 - pattern) * FOAM_HOLES) / FOAM_EDGE);
+}
+
+// The simulated amount laid out by the pattern, read at two scales (so the cells are not all one
+// size and the tile does not show) in world space, where the foam is.
 float total_foam(vec2 p) {
-    // Foam reads as a white patch with an edge, not as a grey haze: sharpen the coverage.
-    return smoothstep(0.05, 0.6, foam_at(p));
+    vec2 uv = p / u_foam_pattern_size;
+    float pattern = 0.6 * texture(u_foam_pattern, uv).r + 0.4 * texture(u_foam_pattern, uv * 2.71 + 0.37).r;
+    return foam_cover(foam_at(p), pattern);
 }

@@ -5,6 +5,7 @@
 #include "common/image.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
+#include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/patch_grid.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/tessellation.hpp"
@@ -147,6 +148,44 @@ TEST_F(Step06Gpu, FoamComesFromTheJacobianOfTheSummedCascades) {
     ASSERT_GT(folded, 20) << "the test needs some foam to compare";
     // 2e-3 of foam = 8e-4 of J: llvmpipe's bilinear weights have 8 fractional bits.
     EXPECT_LT(worst, 2e-3);
+}
+
+// The renderer's foam cover (GLSL) against foam_pattern.hpp's, texel by texel of the uploaded
+// pattern (8 bits: the CPU is given the same quantised value), for a fresh, a half-decayed and an
+// almost gone whitecap.
+TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
+    step06::FoamSimulation foam(factory());
+    ocean::ShaderProgram* program =
+        cache("foam_cover", {"common/shaders/fullscreen.vert", "tests/gpu/shaders/foam_cover.frag"}, {});
+    ASSERT_NE(program, nullptr);
+    const step06::FoamPatternSettings settings;
+    const int n = settings.size;
+    const std::vector<std::uint8_t> pattern = step06::to_r8(step06::foam_pattern(settings));
+    ocean::Texture target = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(target.id(), 1, GL_R32F, n, n);
+    ocean::Framebuffer fbo = ocean::make_framebuffer();
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+    ocean::VertexArray vao = ocean::make_vertex_array();
+    for (float amount : {1.0f, 0.45f, 0.15f}) {
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, n, n);
+        foam.bind_pattern(*program, 0);
+        program->set("u_amount", amount);
+        glUseProgram(program->id());
+        glBindVertexArray(vao.id());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        std::vector<float> gpu(std::size_t(n) * n);
+        glGetTextureImage(target.id(), 0, GL_RED, GL_FLOAT, GLsizei(gpu.size() * sizeof(float)), gpu.data());
+        double worst = 0, covered = 0;
+        for (std::size_t i = 0; i < gpu.size(); ++i) {
+            const double quantised = pattern[i] / 255.0;
+            worst = std::max(worst, std::abs(gpu[i] - step06::foam_cover(amount, quantised)));
+            covered += gpu[i];
+        }
+        EXPECT_LT(worst, 1e-5) << "amount " << amount;
+        std::printf("foam amount %.2f: mean cover %.3f, worst |GPU - CPU| %.2g\n", amount, covered / double(gpu.size()), worst);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {

@@ -4,6 +4,7 @@
 #include "step05_fft/spectrum.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
+#include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/tessellation.hpp"
 
 #include <gtest/gtest.h>
@@ -152,6 +153,56 @@ TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
     step06::FoamSettings no_decay = s;
     no_decay.decay_rate = 0;
     EXPECT_EQ(step06::foam_steady_state(0.7, no_decay), 1.0);
+}
+
+// The bubble pattern tiles without a seam: the step across the tile's edge is no larger than the
+// steps inside it (a non-periodic pattern would jump there), its values stay in [0, 1], and it is
+// lace: high on a minority of texels (the borders), low in the cells' middles.
+TEST(Step06FoamPattern, TilesSeamlesslyAndIsMostlyHoles) {
+    const step06::FoamPatternSettings settings;
+    const std::vector<float> p = step06::foam_pattern(settings);
+    const int n = settings.size;
+    ASSERT_EQ(p.size(), std::size_t(n) * n);
+    const auto at = [&](int x, int y) { return double(p[std::size_t((y + n) % n) * n + (x + n) % n]); };
+    double inside = 0, seam = 0, mean = 0, high = 0;
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            EXPECT_GE(at(x, y), 0.0);
+            EXPECT_LE(at(x, y), 1.0);
+            mean += at(x, y);
+            high += at(x, y) > 0.6;
+            if (x < n - 1) inside = std::max(inside, std::abs(at(x + 1, y) - at(x, y)));
+        }
+    for (int y = 0; y < n; ++y) seam = std::max({seam, std::abs(at(0, y) - at(n - 1, y)), std::abs(at(y, 0) - at(y, n - 1))});
+    mean /= double(n) * n;
+    high /= double(n) * n;
+    EXPECT_LE(seam, inside);
+    EXPECT_GT(mean, 0.2);
+    EXPECT_LT(mean, 0.6);
+    EXPECT_GT(high, 0.05);  // borders exist
+    EXPECT_LT(high, 0.4);   // but most of a cell is its middle
+    EXPECT_EQ(step06::foam_pattern(settings), p);  // the same seed, the same foam
+    EXPECT_THROW(step06::foam_pattern({2, 10, 7}), std::invalid_argument);
+}
+
+// How decaying foam looks: a fresh whitecap (amount 1) covers every texel whatever the pattern;
+// as the amount falls the cover never grows, the cells' middles open before their borders, and
+// no foam is no cover.
+TEST(Step06FoamPattern, DecayingFoamTurnsToLaceThenNothing) {
+    for (double pattern = 0; pattern <= 1.0; pattern += 0.125) {
+        EXPECT_DOUBLE_EQ(step06::foam_cover(1.0, pattern), 1.0);
+        EXPECT_DOUBLE_EQ(step06::foam_cover(0.0, pattern), 0.0);
+        double previous = 1.0;
+        for (double amount = 1.0; amount >= 0.0; amount -= 0.05) {
+            const double cover = step06::foam_cover(amount, pattern);
+            EXPECT_LE(cover, previous + 1e-12);
+            previous = cover;
+        }
+    }
+    for (double amount = 0.1; amount < 1.0; amount += 0.1)
+        EXPECT_GE(step06::foam_cover(amount, 0.9), step06::foam_cover(amount, 0.1));  // borders last
+    EXPECT_GT(step06::foam_cover(0.4, 0.9), 0.5);  // half-decayed: the borders still white...
+    EXPECT_LT(step06::foam_cover(0.4, 0.1), 0.1);  // ...the middles open
 }
 
 TEST(Step06Tessellation, LevelFallsWithDistance) {
