@@ -30,6 +30,14 @@ public:
                               "growth law E g^2/U^4 = 1.6e-7 g F/U^2"));
         spectrum(p.add_float("spread", &sea.spread, 0, 1, "fraction of the energy spread evenly over all directions"));
         spectrum(p.add_float("swell", &sea.swell, 0, 1, "narrows the spreading around the wind: long-crested swell"));
+        spectrum(p.add_float("swell_height", &sea.swell_height, 0, 15,
+                             "significant height of a swell added to the wind sea, metres (0: none)"));
+        spectrum(p.add_float("swell_period", &sea.swell_period, 4, 25, "the swell's peak period, seconds"));
+        spectrum(p.add_float("swell_direction", &sea.swell_direction, 0, 360,
+                             "direction the swell travels, degrees (0 = +x, 90 = +z)"));
+        spectrum(p.add_float("swell_spreading", &sea.swell_spreading, 1, 200,
+                             "s of the swell's cos^2s spreading: larger is longer-crested"))
+            .logarithmic();
         spectrum(p.add_float("depth", &sea.depth, 1, 10000, "water depth, metres (finite-depth dispersion)"))
             .logarithmic();
         spectrum(p.add_bool("tma", &sea.tma, "TMA: attenuate the spectrum in shallow water"));

@@ -131,15 +131,44 @@ double omnidirectional_k(const SpectrumParams& p, double k) {
     return density;
 }
 
+double swell_spectrum(double omega, double height, double period) {
+    if (height <= 0 || period <= 0 || omega <= 0) return 0;
+    const double peak = 2 * kPi / period;
+    // The integral of the unit-alpha shape depends on the peak only: computed once per period.
+    thread_local double last_peak = -1, last_integral = 0;
+    if (peak != last_peak) {
+        last_peak = peak;
+        last_integral = jonswap_variance_per_alpha(peak, kSwellGamma);
+    }
+    return height * height / 16.0 * jonswap_with_alpha(omega, 1.0, peak, kSwellGamma) / last_integral;
+}
+
+double swell_2d(const SpectrumParams& p, double kx, double kz) {
+    const double k = std::hypot(kx, kz);
+    if (k <= 0 || p.swell_height <= 0) return 0;
+    const double theta = std::remainder(std::atan2(kz, kx) - p.swell_direction * kPi / 180.0, 2 * kPi);
+    const double omega = dispersion(k, p.depth);
+    // cos^2s(theta / 2), normalised over [-pi, pi] as directional_spreading's.
+    const double s = p.swell_spreading;
+    const double log_norm = 2 * std::lgamma(s + 1) - std::lgamma(2 * s + 1) + (2 * s - 1) * std::log(2.0) - std::log(kPi);
+    const double d = std::exp(log_norm) * std::pow(std::abs(std::cos(0.5 * theta)), 2 * s);
+    double density = swell_spectrum(omega, p.swell_height, p.swell_period) * dispersion_derivative(k, p.depth);
+    if (p.tma) density *= tma_attenuation(omega, p.depth);
+    return density * d / k;
+}
+
 double spectrum_2d(const SpectrumParams& p, double kx, double kz) {
     const double k = std::hypot(kx, kz);
     if (k <= 0 || k < p.low_cutoff || k >= p.high_cutoff) return 0;
-    const double wind = p.wind_direction * kPi / 180.0;
-    double theta = std::atan2(kz, kx) - wind;
-    theta = std::remainder(theta, 2 * kPi);  // into [-pi, pi]
-    const double omega = dispersion(k, p.depth);
-    const double d = directional_spreading(omega, theta, peak_omega_of(p), p.wind_speed, p.spread, p.swell);
-    return p.amplitude_scale * p.amplitude_scale * omnidirectional_k(p, k) * d / k;
+    double wind_sea = 0;
+    if (p.wind_speed > 0) {
+        const double wind = p.wind_direction * kPi / 180.0;
+        const double theta = std::remainder(std::atan2(kz, kx) - wind, 2 * kPi);  // into [-pi, pi]
+        const double omega = dispersion(k, p.depth);
+        const double d = directional_spreading(omega, theta, peak_omega_of(p), p.wind_speed, p.spread, p.swell);
+        wind_sea = omnidirectional_k(p, k) * d / k;
+    }
+    return p.amplitude_scale * p.amplitude_scale * (wind_sea + swell_2d(p, kx, kz));
 }
 
 double wavenumber(int index, int n, double patch_size) {

@@ -37,6 +37,12 @@ struct SpectrumParams {
     JonswapEnergy energy = JonswapEnergy::Fitted;
     double spread = 0.2;           // fraction of the energy spread evenly over all directions
     double swell = 0;              // 0..1: narrows the spreading around the wind (long-crested swell)
+    // A swell from a distant storm, added to the wind sea (swell_spectrum below): its own height,
+    // peak period, direction and spreading. swell_height = 0: no swell.
+    double swell_height = 0;       // Hs of the swell alone, metres
+    double swell_period = 12;      // peak period, seconds
+    double swell_direction = 120;  // degrees, where the swell travels (0 = +x, 90 = +z)
+    double swell_spreading = 24;   // s of cos^2s((theta - direction) / 2): larger is longer-crested
     double depth = 500;            // metres (finite-depth dispersion; TMA attenuation when enabled)
     bool tma = false;              // TMA shallow-water attenuation of the spectrum
     double patch_size = 250;       // L, metres: the simulated tile repeats every L
@@ -85,13 +91,22 @@ double spreading_exponent(double omega, double peak_omega, double wind_speed, do
 double directional_spreading(double omega, double theta, double peak_omega, double wind_speed, double spread,
                              double swell);
 
+// The swell's S(omega): JONSWAP's shape around omega_s = 2 pi / swell_period with gamma =
+// kSwellGamma (swell that has travelled far is narrow), scaled so that its integral is
+// (swell_height / 4)^2: a swell is described by its height and period, not by a wind.
+constexpr double kSwellGamma = 7;
+double swell_spectrum(double omega, double height, double period);
+// Phi of the swell alone at (kx, kz), with its cos^2s spreading (no cut-offs, no amplitude_scale).
+double swell_2d(const SpectrumParams& p, double kx, double kz);
+
 // The spectrum's peak angular frequency: JONSWAP's omega_p; for Phillips, where its S(omega) =
 // F(k) dk/domega ~ omega^-5 exp(-(g/(U omega))^4) peaks: (4/5)^(1/4) g / U.
 double peak_omega_of(const SpectrumParams& p);
 
 // Energy density per unit k of the omnidirectional spectrum (m^2 per rad/m), for the model.
 double omnidirectional_k(const SpectrumParams& p, double k);
-// Phi(kx, kz), m^2 per (rad/m)^2, including cut-offs and amplitude_scale^2.
+// Phi(kx, kz), m^2 per (rad/m)^2: the wind sea plus the swell, including cut-offs and
+// amplitude_scale^2.
 double spectrum_2d(const SpectrumParams& p, double kx, double kz);
 
 // Wavenumber of grid index i (FFT layout: 0..N/2-1, then -N/2..-1), rad/m.

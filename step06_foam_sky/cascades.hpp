@@ -41,9 +41,14 @@ inline std::array<double, kCascades> cascade_patch_sizes(double largest) {
 // modes, not one or two (a storm's 410 m peak in a 500 m tile repeats as a regular swell). The
 // tile is patch_size, or longer when the peak needs it; the other tiles and the bands follow.
 constexpr double kPeakWavelengthsPerTile = 5;
+// A swell's peak counts as much as the wind sea's.
 inline double largest_tile(const step05::SpectrumParams& shared) {
     const double peak = step05::peak_omega_of(shared);
-    const double peak_wavelength = peak > 0 ? 2 * step05::kPi * step05::kGravity / (peak * peak) : 0;
+    double peak_wavelength = peak > 0 ? 2 * step05::kPi * step05::kGravity / (peak * peak) : 0;
+    if (shared.swell_height > 0) {
+        const double swell_peak = 2 * step05::kPi / shared.swell_period;
+        peak_wavelength = std::max(peak_wavelength, 2 * step05::kPi * step05::kGravity / (swell_peak * swell_peak));
+    }
     return std::max(shared.patch_size, kPeakWavelengthsPerTile * peak_wavelength);
 }
 inline std::array<double, kCascades> cascade_patch_sizes(const step05::SpectrumParams& shared) {

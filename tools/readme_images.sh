@@ -29,7 +29,7 @@ run step05_fft height.png --size 300x300 --set view=height
 run step05_fft jacobian.png --size 300x300 --set view=jacobian --set choppiness=2.5
 run step05_fft spectrum.png --size 300x300 --set view=spectrum
 run step06_foam_sky screenshot.png
-for preset in calm breezy stormy; do
+for preset in calm breezy stormy crossing; do
   run step06_foam_sky "$preset.png" --preset "$root/step06_foam_sky/presets/$preset.preset"
 done
 run step06_foam_sky foam.png --set view=foam --camera overview

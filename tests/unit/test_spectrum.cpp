@@ -318,6 +318,50 @@ TEST(Step05Energy, HeightsOfTheShippedPresets) {
     }
 }
 
+// A swell is given by its height and period: alone (no wind), the simulated sea's variance is
+// (Hs / 4)^2 on a grid that resolves its narrow peak (tile of 10 peak wavelengths), its energy
+// travels along swell_direction (the spectrum's mean direction, sum Phi k / |k|), and adding it to
+// a wind sea adds the variances (the two spectra are independent).
+TEST(Step05Swell, HeightDirectionAndSumAsStated) {
+    SpectrumParams p;
+    p.wind_speed = 0;
+    p.swell_height = 2.5;
+    p.swell_period = 11;
+    p.swell_direction = 250;
+    p.depth = 10000;
+    const double wavelength = kGravity * p.swell_period * p.swell_period / (2 * kPi);
+    p.patch_size = 10 * wavelength;
+    p.resolution = 256;
+    const double expected = p.swell_height * p.swell_height / 16;
+    const double spectrum = resolved_variance(p), measured = measured_height_variance(p, 8);
+    std::printf("swell Hs 2.5 m, 11 s: variance %.5f m^2 (grid sum), %.5f (8 seeds), (Hs/4)^2 = %.5f\n", spectrum,
+                measured, expected);
+    EXPECT_NEAR(spectrum / expected, 1.0, 0.02);  // the grid's dk resolves the gamma-7 peak within 2 %
+    EXPECT_NEAR(measured / expected, 1.0, 0.05);  // and eight seeds' luck (a narrow peak: few modes)
+    double cx = 0, cz = 0;
+    for (int j = 0; j < p.resolution; ++j)
+        for (int i = 0; i < p.resolution; ++i) {
+            const double kx = wavenumber(i, p.resolution, p.patch_size), kz = wavenumber(j, p.resolution, p.patch_size);
+            const double k = std::hypot(kx, kz);
+            if (k <= 0) continue;
+            cx += spectrum_2d(p, kx, kz) * kx / k;
+            cz += spectrum_2d(p, kx, kz) * kz / k;
+        }
+    const double direction = std::fmod(std::atan2(cz, cx) * 180 / kPi + 360, 360);
+    EXPECT_NEAR(direction, 250, 0.5);
+    SpectrumParams wind = p;
+    wind.wind_speed = 10;
+    wind.swell_height = 0;
+    SpectrumParams both = wind;
+    both.swell_height = p.swell_height;
+    EXPECT_NEAR(resolved_variance(both), resolved_variance(wind) + spectrum, 1e-9 * resolved_variance(both));
+    // Longer-crested with a larger s: less energy at 60 degrees off the swell's direction.
+    const double k = 2 * kPi / wavelength, off = (250 + 60) * kPi / 180;
+    SpectrumParams narrow = p;
+    narrow.swell_spreading = 80;
+    EXPECT_LT(spectrum_2d(narrow, k * std::cos(off), k * std::sin(off)), spectrum_2d(p, k * std::cos(off), k * std::sin(off)));
+}
+
 TEST(Step05Validate, RefusesImpossibleParameters) {
     SpectrumParams p;
     EXPECT_EQ(validate(p), "");

@@ -5,11 +5,13 @@
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
+#include "step06_foam_sky/look_params.hpp"
 #include "step06_foam_sky/tessellation.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 namespace {
 
@@ -203,6 +205,35 @@ TEST(Step06FoamPattern, DecayingFoamTurnsToLaceThenNothing) {
         EXPECT_GE(step06::foam_cover(amount, 0.9), step06::foam_cover(amount, 0.1));  // borders last
     EXPECT_GT(step06::foam_cover(0.4, 0.9), 0.5);  // half-decayed: the borders still white...
     EXPECT_LT(step06::foam_cover(0.4, 0.1), 0.1);  // ...the middles open
+}
+
+// A storm looks higher than a breeze because it is: each shipped preset, loaded as the program
+// loads it, and the significant height 4 sqrt(variance) of the sea step06 draws (the four
+// cascades' resolved modes). The gale's is at least twice the breeze's, the calm's the lowest.
+TEST(Step06Presets, AStormIsAtLeastTwiceAsHighAsABreeze) {
+    std::map<std::string, double> hs;
+    for (const char* name : {"calm", "breezy", "stormy", "crossing"}) {
+        step05::OceanParams ocean;
+        step06::use_default_sea(ocean);
+        step06::LookParams look;
+        step06::FoamSettings foam;
+        ocean::ParamRegistry registry;
+        ocean.declare(registry);
+        look.declare(registry);
+        step06::declare_foam_params(registry, foam);
+        const auto error = registry.load_preset(std::string(OCEAN_SOURCE_DIR) + "/step06_foam_sky/presets/" + name + ".preset");
+        ASSERT_FALSE(error) << *error;
+        double variance = 0;
+        for (const auto& p : step06::cascade_spectra(ocean.spectrum())) variance += step05::resolved_variance(p);
+        hs[name] = 4 * std::sqrt(variance);
+        std::printf("%-8s U %4.1f m/s, fetch %5.0f km, swell %.1f m: Hs of the drawn sea %.2f m, first tile %.0f m\n",
+                    name, ocean.sea.wind_speed, ocean.sea.fetch / 1000, ocean.sea.swell_height, hs[name],
+                    step06::largest_tile(ocean.spectrum()));
+    }
+    EXPECT_GE(hs["stormy"], 2 * hs["breezy"]);
+    EXPECT_LT(hs["calm"], hs["breezy"]);
+    // Crossing seas: the 3 m swell and the wind sea add (variances add): above the swell alone.
+    EXPECT_GT(hs["crossing"], 3.0);
 }
 
 TEST(Step06Tessellation, LevelFallsWithDistance) {
