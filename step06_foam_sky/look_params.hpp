@@ -48,6 +48,7 @@ public:
             {"zenith_colour", &LookParams::zenith_colour, "sky straight up (sRGB)", kSky},
             {"horizon_colour", &LookParams::horizon_colour, "sky at the horizon (sRGB)", kSky},
             {"scatter_colour", &LookParams::scatter_colour, "colour of light scattered in the water (sRGB)", kWater},
+            {"crest_colour", &LookParams::crest_colour, "colour of sunlight through thin crests, backlit (sRGB)", kWater},
             {"bubble_colour", &LookParams::bubble_colour, "colour of light scattered by bubbles (sRGB)", kWater},
             {"foam_colour", &LookParams::foam_colour, "foam albedo (sRGB)", kWater},
         };
@@ -68,7 +69,7 @@ public:
         p.add_choice("microfacet", &microfacet, microfacet, {"ggx", "beckmann"}, "specular microfacet distribution")
             .in_group(kWater);
         number("roughness");
-        for (const char* name : {"scatter_colour", "bubble_colour"}) colour(name);
+        for (const char* name : {"scatter_colour", "crest_colour", "bubble_colour"}) colour(name);
         for (const char* name : {"scatter_crest", "scatter_view", "scatter_lambert", "scatter_bubbles", "height_scale",
                                  "ambient"})
             number(name);
@@ -121,6 +122,7 @@ public:
         p.set("u_height_scale", height_scale);
         p.set("u_scatter_colour", step03::srgb_to_linear(scatter_colour));
         p.set("u_bubble_colour", step03::srgb_to_linear(bubble_colour));
+        p.set("u_crest_colour", step03::srgb_to_linear(crest_colour));
         p.set("u_foam_colour", step03::srgb_to_linear(foam_colour));
         p.set("u_k1", k1);
         p.set("u_k2", k2);
@@ -145,8 +147,8 @@ public:
     std::string sky_image;
     int microfacet = 0, tonemapper = 0;
     float roughness = 0.08f;
-    glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
-    float k1 = 1.2f, k2 = 0.35f, k3 = 0.25f, k4 = 0.3f, height_scale = 2, ambient = 0.6f, foam_roughness = 0.6f;
+    glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, crest_colour{0.15f, 0.75f, 0.6f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
+    float k1 = 5.0f, k2 = 0.35f, k3 = 0.25f, k4 = 0.3f, height_scale = 2, ambient = 0.6f, foam_roughness = 0.6f;
     float fog_density = 0.0012f, fog_falloff = 0.02f, bloom_threshold = 2.5f, bloom_strength = 0.06f, exposure = 0.9f;
 
 private:
