@@ -148,7 +148,7 @@ public:
     int microfacet = 0, tonemapper = 0;
     float roughness = 0.08f;
     glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, crest_colour{0.15f, 0.75f, 0.6f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
-    float k1 = 5.0f, k2 = 0.35f, k3 = 0.25f, k4 = 0.3f, height_scale = 2, ambient = 0.6f, foam_roughness = 0.6f;
+    float k1 = 3.0f, k2 = 0.35f, k3 = 0.25f, k4 = 0.3f, height_scale = 2, ambient = 0.6f, foam_roughness = 0.6f;
     float fog_density = 0.0012f, fog_falloff = 0.02f, bloom_threshold = 2.5f, bloom_strength = 0.06f, exposure = 0.9f;
 
 private:

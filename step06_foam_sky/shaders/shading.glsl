@@ -55,7 +55,7 @@ struct ScatterSettings {
 
 // height: metres above the mean level, scaled to about [0, 1] by the caller.
 vec3 scatter_term(vec3 n, vec3 v, vec3 l, float height, float alpha, float bubbles, ScatterSettings s, vec3 sun) {
-    float crest = s.k1 * max(height, 0.0) * pow(max(dot(l, -v), 0.0), 4.0) * pow(0.5 - 0.5 * dot(l, n), 3.0);
+    float crest = s.k1 * clamp(height, 0.0, 1.0) * pow(max(dot(l, -v), 0.0), 4.0) * pow(0.5 - 0.5 * dot(l, n), 3.0);
     float towards_viewer = s.k2 * pow(max(dot(v, n), 0.0), 2.0);
     vec3 scatter = (crest * s.crest_colour + towards_viewer * s.scatter_colour) * sun / (1.0 + smith_lambda(dot(n, l), alpha));
     scatter += s.k3 * max(dot(l, n), 0.0) * s.scatter_colour * sun + s.k4 * bubbles * s.bubble_colour * sun;

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# tools/gallery.sh [BUILD_DIR]: draws docs/gallery/: every step06 preset from the deck (a few
+# metres above the water) and from the overview (40 m up), a backlit view, and their README with
+# each picture's command beside it. Headless, 960x540, on a fixed clock reached by 0.25 s steps
+# (t = 10 s: the foam has grown and decayed as it would on screen). About two minutes on llvmpipe.
+# ./ocean gallery runs it after building.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build/release}
+exe="$build/step06_foam_sky/step06_foam_sky"
+out="$root/docs/gallery"
+mkdir -p "$out"
+clock="--headless --size 960x540 --frames 41 --time 0 --dt 0.25"
+readme="$out/README.md"
+cat > "$readme" <<'TEXT'
+# Gallery: step06 under each preset
+
+Drawn by `./ocean gallery` (tools/gallery.sh) from the code as it is: each picture's command is
+under it (run from the repository's root after `./ocean run step06_foam_sky --help` has built it).
+The clock runs 41 steps of 0.25 s from t = 0, so the foam has grown and decayed for 10 s.
+The presets are in `step06_foam_sky/presets/`; the heights they draw are in step06's README.
+
+TEXT
+shoot() {  # shoot IMAGE CAPTION [flags...]
+  local image=$1 caption=$2
+  shift 2
+  "$exe" $clock --screenshot "$out/$image" "$@" > /dev/null
+  local shown="build/release/step06_foam_sky/step06_foam_sky $clock --screenshot docs/gallery/$image $*"
+  printf '## %s\n\n![%s](%s)\n\n    %s\n\n' "$caption" "$caption" "$image" "${shown//$root\//}" >> "$readme"
+  echo "docs/gallery/$image"
+}
+for preset in calm breezy stormy crossing; do
+  file="$root/step06_foam_sky/presets/$preset.preset"
+  about=$(sed -n '1s/^# step06_foam_sky preset: //p' "$file")
+  shoot "$preset-deck.png" "$preset, from the deck: $about" --preset "$file" --camera deck
+  shoot "$preset-overview.png" "$preset, from 40 m up" --preset "$file" --camera overview
+done
+shoot backlit.png "Backlit: the sun low ahead, light through the crests beside the glitter path" \
+  --camera deck --set sun_elevation=5 --set sun_azimuth=305
