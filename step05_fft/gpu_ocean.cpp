@@ -35,7 +35,7 @@ void GpuOcean::allocate(int n, int cascades) {
         glNamedBufferStorage(b->id(), modes * 4 * 2 * GLsizeiptr(sizeof(float)), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     const int levels = 1 + int(std::floor(std::log2(double(n))));
-    for (ocean::Texture* t : {&displacement_, &slopes_, &slope_moments_}) {
+    for (ocean::Texture* t : {&displacement_, &slopes_}) {
         *t = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
         glTextureStorage3D(t->id(), levels, GL_RGBA32F, n, n, cascades);
         glTextureParameteri(t->id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -127,16 +127,12 @@ void GpuOcean::assemble(float choppiness) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, fields_.id());
     glBindImageTexture(0, displacement_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(1, slopes_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(2, slope_moments_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glUseProgram(p.id());
     glDispatchCompute(GLuint((n_ + 7) / 8), GLuint((n_ + 7) / 8), GLuint(cascade_count()));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     // Mipmaps let distant water average its waves instead of sparkling.
     glGenerateTextureMipmap(displacement_.id());
     glGenerateTextureMipmap(slopes_.id());
-    // The mean of s^2 over a mip texel, less the square of the mean slope, is the slope variance
-    // that texel averages away (LEAN mapping): step06 turns it into microfacet roughness.
-    glGenerateTextureMipmap(slope_moments_.id());
 }
 
 void GpuOcean::simulate(double time, Backend backend, float choppiness, ocean::GpuTimers* timers) {
@@ -224,10 +220,8 @@ std::vector<std::string> BackendTimes::lines() const {
 void GpuOcean::bind_maps(const ocean::ShaderProgram& program) const {
     program.set("u_displacement", 0);
     program.set("u_slopes", 1);
-    program.set("u_slope_moments", 2);
     glBindTextureUnit(0, displacement_.id());
     glBindTextureUnit(1, slopes_.id());
-    glBindTextureUnit(2, slope_moments_.id());
 }
 
 std::vector<float> GpuOcean::read_fields() const {

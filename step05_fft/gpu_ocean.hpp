@@ -49,10 +49,8 @@ public:
     GLuint fields_buffer() const { return fields_.id(); }
     GLuint displacement_texture() const { return displacement_.id(); }  // 2D array, a layer a cascade
     GLuint slopes_texture() const { return slopes_.id(); }
-    // (dh/dx^2, dh/dz^2, dh/dx dh/dz, 0) per texel, mipmapped: the second moments of the slope.
-    GLuint slope_moments_texture() const { return slope_moments_.id(); }
-    // Binds the three maps to texture units 0, 1, 2 and points `program`'s u_displacement,
-    // u_slopes and u_slope_moments at them (a program without one of them ignores it).
+    // Binds the two maps to texture units 0, 1 and points `program`'s u_displacement and
+    // u_slopes at them (a program without one of them ignores it).
     void bind_maps(const ocean::ShaderProgram& program) const;
     // The fields of every cascade as 4 packed complex values per texel (tests, export).
     std::vector<float> read_fields() const;
@@ -67,7 +65,7 @@ private:
     int n_ = 0;
     ocean::Buffer h0_, omega_;
     ocean::Buffer spectra_, fields_;
-    ocean::Texture displacement_, slopes_, slope_moments_;
+    ocean::Texture displacement_, slopes_;
     std::unique_ptr<FftwInverse2d> fftw_;  // the FFTW backend's plan
 };
 

@@ -245,6 +245,29 @@ double resolved_moment(const SpectrumParams& p, int power) {
     return sum;
 }
 
+std::vector<double> unresolved_slope_variance_by_level(const SpectrumParams& p) {
+    const int n = p.resolution;
+    const int levels = 1 + int(std::lround(std::log2(double(n))));
+    const double dk = 2 * kPi / p.patch_size, texel = p.patch_size / n;
+    std::vector<double> unresolved(std::size_t(levels), 0.0);
+    const auto response = [&](double k, int level) {
+        double h = 1;
+        for (int j = 0; j < level; ++j) h *= std::cos(k * texel * double(1 << j) / 2);
+        return h;
+    };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            if (!resolved_mode(p, i, j)) continue;
+            const double kx = wavenumber(i, n, p.patch_size), kz = wavenumber(j, n, p.patch_size);
+            const double variance = (kx * kx + kz * kz) * spectrum_2d(p, kx, kz) * dk * dk;
+            for (int level = 1; level < levels; ++level) {
+                const double kept = response(kx, level) * response(kz, level);
+                unresolved[std::size_t(level)] += variance * (1 - kept * kept);
+            }
+        }
+    return unresolved;
+}
+
 std::string validate(const SpectrumParams& p) {
     const int n = p.resolution;
     if (n < 64 || n > 512 || (n & (n - 1)) != 0)

@@ -133,6 +133,13 @@ double resolved_variance(const SpectrumParams& p);
 // sum over resolved modes of |k|^2 Phi(k) dk^2: the expected variance of the slope, summed over
 // both axes (E[(dh/dx)^2 + (dh/dz)^2]).
 double resolved_slope_variance(const SpectrumParams& p);
+// The slope variance each mip level of the slope maps averages away (Bruneton, Neyret and
+// Holzschuch 2010: what a pixel cannot resolve becomes roughness, computed from the spectrum).
+// Level l's texel is the mean of a 2^l x 2^l block of the map's texels, a filter whose response
+// to a wave of wavenumber k along an axis is H_l(k) = prod_{j<l} cos(k d 2^j / 2) (d = L / N):
+// so the expected slope variance left in level l is sum |k|^2 Phi H_l(kx)^2 H_l(kz)^2 dk^2, and
+// entry l is the rest. Entry 0 is 0; entry log2(N), the 1 x 1 level, is resolved_slope_variance.
+std::vector<double> unresolved_slope_variance_by_level(const SpectrumParams& p);
 // sum over resolved modes of |k|^power Phi(k) dk^2.
 double resolved_moment(const SpectrumParams& p, int power);
 

@@ -25,6 +25,9 @@ inline void use_default_sea(step05::OceanParams& params) {
     params.choppiness = 1.3f;
 }
 constexpr double kWavesPerTileAtBoundary = 6;
+// Mip levels of a 512 x 512 map (the largest resolution): the length of each cascade's row of
+// u_unresolved_slope_variance (MIP_LEVELS in cascades_visible.glsl).
+constexpr std::size_t kMaxMipLevels = 10;
 
 struct Band {
     double low, high;  // rad/m, low <= |k| < high

@@ -84,12 +84,17 @@ private:
             spectra_.clear();
             std::vector<const step05::InitialSpectrum*> pointers;
             height_variance_ = 0;
-            slope_variances_.clear();
+            unresolved_by_level_.assign(std::size_t(step06::kCascades * step06::kMaxMipLevels), 0.0f);
             for (const auto& p : step06::cascade_spectra(ocean_params_.spectrum())) {
                 spectra_.push_back(std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(p)));
                 pointers.push_back(spectra_.back().get());
                 height_variance_ += step05::resolved_variance(p);
-                slope_variances_.push_back(float(step05::resolved_slope_variance(p)));
+                // What each of this cascade's mip levels averages away, from its spectrum; past the
+                // last level (a pixel wider than the tile) all of it.
+                const std::vector<double> by_level = step05::unresolved_slope_variance_by_level(p);
+                const std::size_t base = (pointers.size() - 1) * step06::kMaxMipLevels;
+                for (std::size_t l = 0; l < step06::kMaxMipLevels; ++l)
+                    unresolved_by_level_[base + l] = float(by_level[std::min(l, by_level.size() - 1)]);
             }
             gpu_->set_spectra(pointers);
             foam_->resize(ocean_params_.spectrum().resolution);
@@ -138,7 +143,7 @@ private:
         foam_->bind_pattern(p, 5);
         p.set("u_sky", 4);
         glBindTextureUnit(4, sky_->cubemap());
-        p.set("u_cascade_slope_variance", slope_variances_);
+        p.set("u_unresolved_slope_variance", unresolved_by_level_);
     }
 
     void draw_sea() {
@@ -283,7 +288,7 @@ private:
     unsigned spectrum_built_for_ = 0;
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
     double height_variance_ = 0;         // m^2, of the summed cascades
-    std::vector<float> slope_variances_;
+    std::vector<float> unresolved_by_level_;  // kMaxMipLevels per cascade
     step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with  // E[sx^2 + sz^2] of each cascade (the unresolved roughness)
     int split_effect_ = 0;
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;

@@ -8,7 +8,6 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430, binding = 0) readonly buffer Fields { vec2 fields[]; };
 layout(rgba32f, binding = 0) writeonly uniform image2DArray u_displacement;
 layout(rgba32f, binding = 1) writeonly uniform image2DArray u_slopes;
-layout(rgba32f, binding = 2) writeonly uniform image2DArray u_slope_moments;  // (sx^2, sz^2, sx sz, 0)
 
 uniform float u_choppiness;
 
@@ -23,6 +22,4 @@ void main() {
     float l = u_choppiness;
     imageStore(u_displacement, id, vec4(l * height_dx.y, height_dx.x, l * dz_slope_x.x, l * dzz_dxz.y));
     imageStore(u_slopes, id, vec4(dz_slope_x.y, slope_z_dxx.x, l * slope_z_dxx.y, l * dzz_dxz.x));
-    vec2 s = vec2(dz_slope_x.y, slope_z_dxx.x);
-    imageStore(u_slope_moments, id, vec4(s.x * s.x, s.y * s.y, s.x * s.y, 0.0));
 }

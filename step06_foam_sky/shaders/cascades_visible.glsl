@@ -7,17 +7,26 @@
 #define ANISOTROPIC_TAPS 2  // most samples along a pixel's long footprint (1: isotropic trilinear)
 #endif
 
-uniform sampler2DArray u_slope_moments;         // (sx^2, sz^2, sx sz, 0), mipmapped (step05)
-uniform float u_cascade_slope_variance[CASCADES];  // E[sx^2 + sz^2] of each whole cascade
+// The slope variance each mip level of each cascade averages away, from the spectrum
+// (step05's unresolved_slope_variance_by_level; MIP_LEVELS a cascade, the last ones repeating
+// the whole cascade's variance).
+const int MIP_LEVELS = 10;
+uniform float u_unresolved_slope_variance[CASCADES * MIP_LEVELS];
+
+float unresolved_at(int c, float lod) {
+    float level = clamp(lod, 0.0, float(MIP_LEVELS - 1));
+    int below = int(floor(level)), above = min(below + 1, MIP_LEVELS - 1);
+    return mix(u_unresolved_slope_variance[c * MIP_LEVELS + below], u_unresolved_slope_variance[c * MIP_LEVELS + above],
+               level - float(below));
+}
 
 // What the pixel sees of the summed surface: set by sample_surface.
 struct SurfaceSample {
     vec4 displacement;  // (l Dx, h, l Dz, l dDx/dz)
     vec4 slopes;        // (dh/dx, dh/dz, l dDx/dx, l dDz/dz): derivatives of a sum are sums
-    // The slope variance the footprint averages away (LEAN mapping, Olano and Baker 2010;
-    // Bruneton, Neyret and Holzschuch 2010): for each cascade the filtered mean of s^2 less the
-    // square of the filtered mean slope, and all of the variance of the cascades the pixel cannot
-    // see at all. It becomes microfacet roughness.
+    // The slope variance the footprint averages away (Bruneton, Neyret and Holzschuch 2010): for
+    // each cascade what the mip level of the pixel's footprint leaves out, and all of the variance
+    // of the cascades the pixel cannot see at all. It becomes microfacet roughness.
     float unresolved_slope_variance;
 };
 
@@ -27,14 +36,12 @@ struct SurfaceSample {
 // view and leaves horizontal smears, the "combed" look. So the long axis is cut into up to
 // ANISOTROPIC_TAPS pieces, each fetched at the mip level of its own width, and the pieces are
 // averaged: what hardware anisotropic filtering does, written out because llvmpipe's is 25x
-// slower, and because the moments must be averaged over exactly the same samples as the slopes
-// (E[s^2] - E[s]^2 is only a variance if both means are over one footprint).
+// slower.
 SurfaceSample sample_surface(vec2 p) {
-    vec2 dx = dFdx(p), dy = dFdy(p);
+    vec2 dx = dFdxCoarse(p), dy = dFdyCoarse(p);
     float lx = length(dx), ly = length(dy);
     vec2 long_axis = lx > ly ? dx : dy;
     float long_length = max(lx, ly), short_length = min(lx, ly);
-    // Each tap averages long / taps, but never less than the short axis.
     float texels = float(textureSize(u_slopes, 0).x);
 
     SurfaceSample s;
@@ -46,35 +53,34 @@ SurfaceSample sample_surface(vec2 p) {
         // Pieces no shorter than the short axis, nor than a texel (below a texel the map is
         // magnified: one fetch is exact), so a long tile near the camera takes one fetch.
         float texel = u_patch_sizes[c] / texels;
-        int taps = clamp(int(ceil(long_length / max(short_length, texel) - 0.01)), 1, ANISOTROPIC_TAPS);
+        // Rounded, not ceiled: a footprint less than 1.5 times longer than wide takes one fetch
+        // (slightly over-blurred), which spares most of the near sea a second one.
+        int taps = clamp(int(long_length / max(short_length, texel) + 0.5), 1, ANISOTROPIC_TAPS);
         float footprint = max(short_length, long_length / float(taps));  // metres each tap averages
         // Where one tap covers more than half a cascade's tile, the cascade's mipmaps have averaged
         // it to its mean, which is zero (a periodic tile has no mean slope or displacement):
         // skipping it changes nothing but its variance, and saves its fetches (the small cascades,
         // over most of the distant sea).
         if (footprint >= 0.5 * u_patch_sizes[c]) {
-            s.unresolved_slope_variance += u_cascade_slope_variance[c];
+            s.unresolved_slope_variance += u_unresolved_slope_variance[c * MIP_LEVELS + MIP_LEVELS - 1];
             continue;
         }
-        // The slopes, which make the highlights, piece by piece: textureGrad with the pixel's own
-        // derivatives, the long one shortened to a piece (GL picks the level from the longer of
-        // the two: the piece's width). The displacement (it moves the normal only through its
-        // choppy term) and the second moments (a variance is a smooth statistic of the
-        // footprint) once each, over the whole footprint.
-        float to_uv = 1.0 / u_patch_sizes[c];
-        vec2 grad_x = dx * to_uv, grad_y = dy * to_uv;
-        if (lx > ly) grad_x /= float(taps); else grad_y /= float(taps);
+        // The slopes, which make the highlights, piece by piece: texture() with GL's own level
+        // (from the long axis) lowered by a bias to the piece's width. The displacement (it moves
+        // the normal only through its choppy term) once, over the whole footprint. texture(), not
+        // textureGrad: llvmpipe picks one level per 2 x 2 pixels for implicit derivatives and one
+        // per pixel for explicit ones, which made the pass 30 % slower. Everything that decides
+        // the loop comes from coarse (per 2 x 2) derivatives, so the 2 x 2 pixels agree on it.
+        float bias = log2(footprint / long_length);
         vec4 slopes = vec4(0.0);
         for (int i = 0; i < taps; ++i)
-            slopes += textureGrad(u_slopes, cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c),
-                                  grad_x, grad_y);
+            slopes += texture(u_slopes, cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c), bias);
         slopes /= float(taps);
-        vec3 uv = cascade_uv(p, c);
-        vec2 moments = textureGrad(u_slope_moments, uv, dx * to_uv, dy * to_uv).xy;
-        s.displacement += textureGrad(u_displacement, uv, dx * to_uv, dy * to_uv);
+        s.displacement += texture(u_displacement, cascade_uv(p, c));
         s.slopes += slopes;
-        s.unresolved_slope_variance +=
-            max(moments.x - slopes.x * slopes.x + moments.y - slopes.y * slopes.y, 0.0);
+        // The pixel's normal is the mean slope over its long x short footprint: what that averages
+        // away is about what a square of the same area does (the level of sqrt(long x short)).
+        s.unresolved_slope_variance += unresolved_at(c, cascade_lod(c, sqrt(long_length * max(short_length, texel))));
     }
     return s;
 }
@@ -100,7 +106,9 @@ float foam_at(vec2 p) {
     return foam;
 }
 
-uniform sampler2D u_foam_pattern;   // foam_pattern.hpp: 1 on the borders of bubble cells
+// Unit 5 by default (FoamSimulation::bind_pattern uses it too): a sampler2D left on unit 0 would
+// share it with the cascades' sampler2DArray, which GL refuses at the draw.
+layout(binding = 5) uniform sampler2D u_foam_pattern;  // foam_pattern.hpp: 1 on the borders of bubble cells
 uniform float u_foam_pattern_size;  // metres one tile of it covers
 
 // foam_pattern.hpp's foam_cover: fresh foam (amount 1) covers everything; as it decays the cell
@@ -113,7 +121,10 @@ float foam_cover(float amount, float pattern) {
 // The simulated amount laid out by the pattern, read at two scales (so the cells are not all one
 // size and the tile does not show) in world space, where the foam is.
 float total_foam(vec2 p) {
-    vec2 uv = p / u_foam_pattern_size;
-    float pattern = 0.6 * texture(u_foam_pattern, uv).r + 0.4 * texture(u_foam_pattern, uv * 2.71 + 0.37).r;
-    return foam_cover(foam_at(p), pattern);
+    vec2 uv = p / u_foam_pattern_size, duv_dx = dFdx(uv), duv_dy = dFdy(uv);
+    float amount = foam_at(p);
+    if (amount <= 0.0) return 0.0;  // most of the sea: no foam, no pattern to read
+    float pattern = 0.6 * textureGrad(u_foam_pattern, uv, duv_dx, duv_dy).r +
+                    0.4 * textureGrad(u_foam_pattern, uv * 2.71 + 0.37, duv_dx * 2.71, duv_dy * 2.71).r;
+    return foam_cover(amount, pattern);
 }

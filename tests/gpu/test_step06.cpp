@@ -166,6 +166,9 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     ocean::Framebuffer fbo = ocean::make_framebuffer();
     glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
     ocean::VertexArray vao = ocean::make_vertex_array();
+    GLint previous_framebuffer = 0, previous_viewport[4] = {};  // the test context's own, restored after
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
+    glGetIntegerv(GL_VIEWPORT, previous_viewport);
     for (float amount : {1.0f, 0.45f, 0.15f}) {
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, n, n);
@@ -185,7 +188,8 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
         EXPECT_LT(worst, 1e-5) << "amount " << amount;
         std::printf("foam amount %.2f: mean cover %.3f, worst |GPU - CPU| %.2g\n", amount, covered / double(gpu.size()), worst);
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
+    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
 }
 
 TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {
