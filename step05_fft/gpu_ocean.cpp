@@ -200,6 +200,22 @@ BackendTimes time_backends(GpuOcean& ocean, double time, int repeats) {
     return t;
 }
 
+BackendChoice choose_backend(GpuOcean& ocean, double time, float choppiness, int repeats) {
+    BackendChoice c;
+    c.fftw_ms = median_ms(repeats, [&] { ocean.simulate(time, Backend::Fftw, choppiness); });
+    c.gpu_fft_ms = median_ms(repeats, [&] { ocean.simulate(time, Backend::GpuFft, choppiness); });
+    c.faster = c.fftw_ms < c.gpu_fft_ms ? Backend::Fftw : Backend::GpuFft;
+    if (c.faster == Backend::Fftw) ocean.simulate(time, Backend::Fftw, choppiness);  // its maps, as it will make them
+    return c;
+}
+
+std::string BackendChoice::line() const {
+    char text[160];
+    std::snprintf(text, sizeof text, "GPU FFT %.1f ms, FFTW %.1f ms a frame: %s", gpu_fft_ms, fftw_ms,
+                  faster == Backend::Fftw ? "FFTW" : "GPU FFT");
+    return text;
+}
+
 std::vector<std::string> BackendTimes::lines() const {
     std::vector<std::string> out;
     out.push_back("N = " + std::to_string(n) + ", " + std::to_string(layers) + " complex maps, median of " +

@@ -83,4 +83,15 @@ struct BackendTimes {
 };
 BackendTimes time_backends(GpuOcean& ocean, double time, int repeats);
 
+// A whole simulate() (evolve, transform, unpack, and for FFTW the upload) timed with the GPU FFT
+// and with FFTW, median of `repeats` each, wall ms around glFinish; `faster` is the quicker one.
+// On llvmpipe the "GPU" is the CPU, and FFTW wins; on a real GPU the GPU FFT does. The maps are
+// left as the last run made them (time `time`).
+struct BackendChoice {
+    Backend faster = Backend::GpuFft;
+    double gpu_fft_ms = 0, fftw_ms = 0;
+    std::string line() const;  // "GPU FFT 77.1 ms, FFTW 45.3 ms a frame: FFTW"
+};
+BackendChoice choose_backend(GpuOcean& ocean, double time, float choppiness, int repeats);
+
 }  // namespace step05

@@ -56,6 +56,10 @@ private:
         p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").in_group("geometry");
         p.add_bool("frustum_culling", &cull_, "discard patches outside the view").in_group("geometry");
         p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level").in_group("geometry");
+        p.add_choice("fft_backend", &fft_backend_, {"auto", "gpu_fft", "fftw"},
+                     "the simulation's transforms: auto times both at start (and when the resolution "
+                     "changes) and keeps the faster")
+            .in_group("geometry");
         p.add_int("anisotropy", &anisotropy_, 1, 16,
                   "most samples of each cascade along a pixel's long footprint (1: isotropic trilinear)")
             .in_group("geometry");
@@ -111,12 +115,26 @@ private:
         // Once a frame, whatever the split view shows: the sea, its foam and the sky move on.
         {
             ocean::GpuScope timed(timers(), "simulation");
-            gpu_->simulate(time(), step05::Backend::GpuFft, ocean_params_.choppiness);
+            gpu_->simulate(time(), backend(), ocean_params_.choppiness);
         }
         update_foam(dt);
         ocean::GpuScope timed(timers(), "sky");
         sky_settings_ = look_.sky(time(), ocean_params_.spectrum().wind_direction);
         sky_->render(sky_settings_);
+    }
+
+    // fft_backend: the chosen one, or for auto the faster at this resolution (timed once, printed
+    // once: on llvmpipe FFTW wins, on a real GPU the GPU FFT).
+    step05::Backend backend() {
+        if (fft_backend_ == 1) return step05::Backend::GpuFft;
+        if (fft_backend_ == 2) return step05::Backend::Fftw;
+        if (timed_resolution_ != gpu_->resolution()) {
+            timed_resolution_ = gpu_->resolution();
+            const step05::BackendChoice choice = step05::choose_backend(*gpu_, time(), ocean_params_.choppiness, 3);
+            automatic_ = choice.faster;
+            std::cout << "fft_backend auto at N = " << timed_resolution_ << ": " << choice.line() << "\n";
+        }
+        return automatic_;
     }
 
     void update_foam(double dt) {
@@ -295,6 +313,9 @@ private:
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
     int anisotropy_ = 2;
+    int fft_backend_ = 0;  // auto
+    int timed_resolution_ = 0;
+    step05::Backend automatic_ = step05::Backend::GpuFft;
 };
 
 }  // namespace
