@@ -35,5 +35,5 @@ for preset in calm breezy stormy crossing; do
   shoot "$preset-deck.png" "$preset, from the deck: $about" --preset "$file" --camera deck
   shoot "$preset-overview.png" "$preset, from 40 m up" --preset "$file" --camera overview
 done
-shoot backlit.png "Backlit: the sun low ahead, light through the crests beside the glitter path" \
-  --camera deck --set sun_elevation=5 --set sun_azimuth=305
+shoot backlit.png "Backlit, 5 m above the water: the sun low ahead, light through the crests beside the glitter path" \
+  --camera low --set sun_elevation=10 --set sun_azimuth=315

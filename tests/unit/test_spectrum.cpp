@@ -324,11 +324,8 @@ TEST(Step05Energy, HeightsOfTheShippedPresets) {
 // a wind sea adds the variances (the two spectra are independent).
 TEST(Step05Swell, HeightDirectionAndSumAsStated) {
     SpectrumParams p;
-    p.wind_speed = 0;
-    p.swell_height = 2.5;
-    p.swell_period = 11;
-    p.swell_direction = 250;
-    p.depth = 10000;
+    p.wind_speed = 0;  // the swell alone, in deep water
+    p.swell_height = 2.5, p.swell_period = 11, p.swell_direction = 250, p.depth = 10000;
     const double wavelength = kGravity * p.swell_period * p.swell_period / (2 * kPi);
     p.patch_size = 10 * wavelength;
     p.resolution = 256;
