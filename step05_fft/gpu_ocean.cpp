@@ -200,20 +200,33 @@ BackendTimes time_backends(GpuOcean& ocean, double time, int repeats) {
     return t;
 }
 
-BackendChoice choose_backend(GpuOcean& ocean, double time, float choppiness, int repeats) {
-    BackendChoice c;
-    c.fftw_ms = median_ms(repeats, [&] { ocean.simulate(time, Backend::Fftw, choppiness); });
-    c.gpu_fft_ms = median_ms(repeats, [&] { ocean.simulate(time, Backend::GpuFft, choppiness); });
-    c.faster = c.fftw_ms < c.gpu_fft_ms ? Backend::Fftw : Backend::GpuFft;
-    if (c.faster == Backend::Fftw) ocean.simulate(time, Backend::Fftw, choppiness);  // its maps, as it will make them
-    return c;
+Backend AutoBackend::next(int resolution) {
+    if (resolution != resolution_) {  // a new size: a new trial
+        resolution_ = resolution;
+        decided_ = false;
+        gpu_fft_ms_.clear();
+        fftw_ms_.clear();
+    }
+    if (decided_) return chosen_;
+    current_ = fftw_ms_.size() <= gpu_fft_ms_.size() ? Backend::Fftw : Backend::GpuFft;
+    return current_;
 }
 
-std::string BackendChoice::line() const {
+std::optional<std::string> AutoBackend::record(double ms) {
+    if (decided_) return std::nullopt;
+    (current_ == Backend::Fftw ? fftw_ms_ : gpu_fft_ms_).push_back(ms);
+    if (int(gpu_fft_ms_.size()) < kTrialFrames || int(fftw_ms_.size()) < kTrialFrames) return std::nullopt;
+    const auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    const double gpu = median(gpu_fft_ms_), cpu = median(fftw_ms_);
+    chosen_ = cpu < gpu ? Backend::Fftw : Backend::GpuFft;
+    decided_ = true;
     char text[160];
-    std::snprintf(text, sizeof text, "GPU FFT %.1f ms, FFTW %.1f ms a frame: %s", gpu_fft_ms, fftw_ms,
-                  faster == Backend::Fftw ? "FFTW" : "GPU FFT");
-    return text;
+    std::snprintf(text, sizeof text, "GPU FFT %.1f ms, FFTW %.1f ms a frame (median of %d): %s", gpu, cpu, kTrialFrames,
+                  chosen_ == Backend::Fftw ? "FFTW" : "GPU FFT");
+    return std::string(text);
 }
 
 std::vector<std::string> BackendTimes::lines() const {

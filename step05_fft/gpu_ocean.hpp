@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <optional>
 #include <vector>
 
 namespace step05 {
@@ -83,15 +84,26 @@ struct BackendTimes {
 };
 BackendTimes time_backends(GpuOcean& ocean, double time, int repeats);
 
-// A whole simulate() (evolve, transform, unpack, and for FFTW the upload) timed with the GPU FFT
-// and with FFTW, median of `repeats` each, wall ms around glFinish; `faster` is the quicker one.
-// On llvmpipe the "GPU" is the CPU, and FFTW wins; on a real GPU the GPU FFT does. The maps are
-// left as the last run made them (time `time`).
-struct BackendChoice {
-    Backend faster = Backend::GpuFft;
-    double gpu_fft_ms = 0, fftw_ms = 0;
-    std::string line() const;  // "GPU FFT 77.1 ms, FFTW 45.3 ms a frame: FFTW"
+// The faster of the GPU FFT and FFTW, found on the frames themselves: while deciding, frames
+// alternate between the two and each whole simulate() (evolve, transform, unpack, and for FFTW the
+// upload) is timed, wall ms around glFinish; after kTrialFrames of each the lower median wins, for
+// as long as the resolution stays. No frame is spent only on timing, so a step starts as fast as
+// before. On llvmpipe the "GPU" is the CPU, and FFTW wins; on a real GPU the GPU FFT does.
+class AutoBackend {
+public:
+    static constexpr int kTrialFrames = 3;
+    // The backend for this frame at this resolution (a new resolution starts a new trial).
+    Backend next(int resolution);
+    bool timing() const { return !decided_; }
+    // This frame's simulate() took `ms`; returns the decision, once, when it is made:
+    // "GPU FFT 77.1 ms, FFTW 45.3 ms a frame (median of 3): FFTW".
+    std::optional<std::string> record(double ms);
+
+private:
+    int resolution_ = 0;
+    bool decided_ = false;
+    Backend current_ = Backend::GpuFft, chosen_ = Backend::GpuFft;
+    std::vector<double> gpu_fft_ms_, fftw_ms_;
 };
-BackendChoice choose_backend(GpuOcean& ocean, double time, float choppiness, int repeats);
 
 }  // namespace step05

@@ -25,6 +25,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -57,8 +58,8 @@ private:
         p.add_bool("frustum_culling", &cull_, "discard patches outside the view").in_group("geometry");
         p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level").in_group("geometry");
         p.add_choice("fft_backend", &fft_backend_, {"auto", "gpu_fft", "fftw"},
-                     "the simulation's transforms: auto times both at start (and when the resolution "
-                     "changes) and keeps the faster")
+                     "the simulation's transforms: auto times both on the first frames (again when the "
+                     "resolution changes) and keeps the faster")
             .in_group("geometry");
         p.add_int("anisotropy", &anisotropy_, 1, 16,
                   "most samples of each cascade along a pixel's long footprint (1: isotropic trilinear)")
@@ -113,28 +114,34 @@ private:
         }
         patches_.build(patch_count_, patch_size_);
         // Once a frame, whatever the split view shows: the sea, its foam and the sky move on.
-        {
-            ocean::GpuScope timed(timers(), "simulation");
-            gpu_->simulate(time(), backend(), ocean_params_.choppiness);
-        }
+        simulate();
         update_foam(dt);
         ocean::GpuScope timed(timers(), "sky");
         sky_settings_ = look_.sky(time(), ocean_params_.spectrum().wind_direction);
         sky_->render(sky_settings_);
     }
 
-    // fft_backend: the chosen one, or for auto the faster at this resolution (timed once, printed
-    // once: on llvmpipe FFTW wins, on a real GPU the GPU FFT).
-    step05::Backend backend() {
-        if (fft_backend_ == 1) return step05::Backend::GpuFft;
-        if (fft_backend_ == 2) return step05::Backend::Fftw;
-        if (timed_resolution_ != gpu_->resolution()) {
-            timed_resolution_ = gpu_->resolution();
-            const step05::BackendChoice choice = step05::choose_backend(*gpu_, time(), ocean_params_.choppiness, 3);
-            automatic_ = choice.faster;
-            std::cout << "fft_backend auto at N = " << timed_resolution_ << ": " << choice.line() << "\n";
+    // fft_backend: the chosen one, or for auto the faster at this resolution (found on the first
+    // frames, printed once: on llvmpipe FFTW wins, on a real GPU the GPU FFT).
+    void simulate() {
+        ocean::GpuScope timed(timers(), "simulation");
+        if (fft_backend_ != 0) {
+            gpu_->simulate(time(), fft_backend_ == 1 ? step05::Backend::GpuFft : step05::Backend::Fftw,
+                           ocean_params_.choppiness);
+            return;
         }
-        return automatic_;
+        const step05::Backend backend = auto_backend_.next(gpu_->resolution());
+        if (!auto_backend_.timing()) {
+            gpu_->simulate(time(), backend, ocean_params_.choppiness);
+            return;
+        }
+        glFinish();
+        const auto start = std::chrono::steady_clock::now();
+        gpu_->simulate(time(), backend, ocean_params_.choppiness);
+        glFinish();
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (auto decision = auto_backend_.record(ms))
+            std::cout << "fft_backend auto at N = " << gpu_->resolution() << ": " << *decision << "\n";
     }
 
     void update_foam(double dt) {
@@ -314,8 +321,7 @@ private:
     bool cull_ = true, wireframe_ = false;
     int anisotropy_ = 2;
     int fft_backend_ = 0;  // auto
-    int timed_resolution_ = 0;
-    step05::Backend automatic_ = step05::Backend::GpuFft;
+    step05::AutoBackend auto_backend_;
 };
 
 }  // namespace
