@@ -319,7 +319,7 @@ private:
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
-    int anisotropy_ = 2;
+    int anisotropy_ = 4;
     int fft_backend_ = 0;  // auto
     step05::AutoBackend auto_backend_;
 };

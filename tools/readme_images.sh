@@ -51,6 +51,6 @@ strip four --set anisotropy=4
 strip reference --set anisotropy=16 --size 2560x1440
 crop=0,0.3,0.625,0.6
 "$build/tools/image_panel" "$root/step06_foam_sky/streaks.png" 600x162 2 \
-  "before: one trilinear fetch|$scratch/isotropic.png|$crop" "2 pieces (the default)|$scratch/two.png|$crop" \
-  "4 pieces|$scratch/four.png|$crop" "reference: 16x supersampled|$scratch/reference.png|$crop"
+  "before: one trilinear fetch|$scratch/isotropic.png|$crop" "2 pieces|$scratch/two.png|$crop" \
+  "4 pieces (the default)|$scratch/four.png|$crop" "reference: 16x supersampled|$scratch/reference.png|$crop"
 echo step06_foam_sky/streaks.png

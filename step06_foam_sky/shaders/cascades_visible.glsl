@@ -4,7 +4,7 @@
 #include "foam_map.glsl"
 
 #ifndef ANISOTROPIC_TAPS
-#define ANISOTROPIC_TAPS 2  // most samples along a pixel's long footprint (1: isotropic trilinear)
+#define ANISOTROPIC_TAPS 4  // most samples along a pixel's long footprint (1: isotropic trilinear)
 #endif
 
 // The slope variance each mip level of each cascade averages away, from the spectrum
