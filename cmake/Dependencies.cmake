@@ -14,4 +14,7 @@ find_program(XVFB_RUN xvfb-run)                          # xvfb (windowed tests,
 # imgui.a holds the GLFW and OpenGL3 backends, which call into GLFW.
 add_library(ocean_imgui INTERFACE)
 target_link_libraries(ocean_imgui INTERFACE PkgConfig::IMGUI glfw ${CMAKE_DL_LIBS})
-pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET fftw3)    # libfftw3-dev: the CPU FFT (step05)
+pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET fftw3)    # libfftw3-dev: the CPU FFT (step05), double
+pkg_check_modules(FFTWF REQUIRED IMPORTED_TARGET fftw3f)  # the same package: single precision, and
+find_library(FFTWF_THREADS fftw3f_threads REQUIRED)      # its threads (the FFTW backend, the floor)
+find_package(Threads REQUIRED)

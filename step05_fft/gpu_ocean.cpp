@@ -43,7 +43,7 @@ void GpuOcean::allocate(int n, int cascades) {
         glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
-    fftw_ = std::make_unique<FftwInverse2d>(n);  // planned once per size, not once a frame
+    cpu_.reset();  // planned again, for the new size, when first used
     n_ = n;
 }
 
@@ -52,6 +52,7 @@ void GpuOcean::set_spectra(const std::vector<const InitialSpectrum*>& cascades) 
     const int n = cascades.front()->n;
     if (n != n_ || cascades.size() != cascades_.size()) allocate(n, int(cascades.size()));
     cascades_ = cascades;
+    if (cpu_) cpu_->set_spectra(cascades);
     std::vector<float> h0;
     std::vector<double> omega;
     for (const InitialSpectrum* s : cascades) {
@@ -107,17 +108,12 @@ void GpuOcean::transform_dft(GLuint source, GLuint target, int layers) {
 }
 
 void GpuOcean::upload_cpu_fields(double time) {
-    std::vector<float> packed(std::size_t(n_) * n_ * 4 * 2 * cascades_.size());
-    std::size_t at = 0;
-    for (const InitialSpectrum* s : cascades_) {
-        const OceanMaps maps = transform_fftw(packed_spectra(*s, time), *fftw_, s->n, s->patch_size);
-        for (const auto& pair : kPacking)
-            for (std::size_t i = 0; i < maps[pair[0]].size(); ++i) {
-                packed[at++] = float(maps[pair[0]][i]);
-                packed[at++] = float(maps[pair[1]][i]);
-            }
+    if (!cpu_) {
+        cpu_ = std::make_unique<CpuSimulation>(n_, cascade_count(), default_wisdom_file());
+        cpu_->set_spectra(cascades_);
     }
-    glNamedBufferSubData(fields_.id(), 0, GLsizeiptr(packed.size() * sizeof(float)), packed.data());
+    cpu_->run(time);
+    glNamedBufferSubData(fields_.id(), 0, GLsizeiptr(cpu_->float_count() * sizeof(float)), cpu_->fields());
 }
 
 void GpuOcean::assemble(float choppiness) {
@@ -190,12 +186,13 @@ BackendTimes time_backends(GpuOcean& ocean, double time, int repeats) {
     t.gpu_fft_ms = median_ms(repeats, [&] { ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers); });
     if (t.n <= kMaxDftSize)
         t.dft_ms = median_ms(repeats, [&] { ocean.transform_dft(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers); });
-    // FFTW: the same transforms (double precision, planned once), timed without the upload.
-    FftwInverse2d fftw(t.n);
-    std::vector<ComplexField> inputs(std::size_t(t.layers), ComplexField(std::size_t(t.n) * t.n, Complex(0.5, -0.25)));
-    t.fftw_ms = median_ms(repeats, [&] {
-        for (const auto& input : inputs) fftw.run(input);
-    });
+    // The floor: the same inverse transforms in single precision on all cores, planned with
+    // FFTW_MEASURE (remembered in the wisdom file, so only the first run of a size measures).
+    CpuSimulation floor(t.n, ocean.cascade_count(), default_wisdom_file());
+    t.threads = floor.threads();
+    t.fftw_ms = median_ms(repeats, [&] { floor.transform_only(); });
+    t.simulation_fftw_ms = median_ms(repeats, [&] { ocean.simulate(time, Backend::Fftw, 1.0f); });
+    t.simulation_gpu_fft_ms = median_ms(repeats, [&] { ocean.simulate(time, Backend::GpuFft, 1.0f); });
     ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers);  // leave the frame's result
     return t;
 }
@@ -235,14 +232,19 @@ std::vector<std::string> BackendTimes::lines() const {
                   std::to_string(repeats) + ", wall ms around glFinish:");
     out.push_back(n <= kMaxDftSize ? format_ms("DFT", dft_ms) : "DFT      (only for N <= 64)");
     out.push_back(format_ms("GPU FFT", gpu_fft_ms));
-    out.push_back(format_ms("FFTW", fftw_ms));
-    char ratio[160];
+    char line[200];
+    std::snprintf(line, sizeof line, "FFTW floor (fftwf, %d threads, FFTW_MEASURE) %10.3f ms", threads, fftw_ms);
+    out.push_back(line);
     if (n <= kMaxDftSize) {
-        std::snprintf(ratio, sizeof ratio, "DFT / GPU FFT = %.1f", dft_ms / gpu_fft_ms);
-        out.push_back(ratio);
+        std::snprintf(line, sizeof line, "DFT / GPU FFT = %.1f", dft_ms / gpu_fft_ms);
+        out.push_back(line);
     }
-    std::snprintf(ratio, sizeof ratio, "GPU FFT / FFTW = %.3f", gpu_fft_ms / fftw_ms);
-    out.push_back(ratio);
+    std::snprintf(line, sizeof line, "GPU FFT kernel = %.1f x the floor", gpu_fft_ms / fftw_ms);
+    out.push_back(line);
+    std::snprintf(line, sizeof line, "whole simulation (evolve, transforms, upload, unpack): FFTW backend %.2f ms = %.1f x the floor, "
+                  "GPU FFT backend %.2f ms = %.1f x", simulation_fftw_ms, simulation_fftw_ms / fftw_ms, simulation_gpu_fft_ms,
+                  simulation_gpu_fft_ms / fftw_ms);
+    out.push_back(line);
     return out;
 }
 
