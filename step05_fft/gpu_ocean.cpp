@@ -197,6 +197,20 @@ BackendTimes time_backends(GpuOcean& ocean, double time, int repeats) {
     return t;
 }
 
+std::optional<std::string> AutoBackend::simulate(GpuOcean& ocean, double time, float choppiness,
+                                                 ocean::GpuTimers* timers) {
+    const Backend backend = next(ocean.resolution());
+    if (!timing()) {
+        ocean.simulate(time, backend, choppiness, timers);
+        return std::nullopt;
+    }
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    ocean.simulate(time, backend, choppiness, timers);
+    glFinish();
+    return record(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+}
+
 Backend AutoBackend::next(int resolution) {
     if (resolution != resolution_) {  // a new size: a new trial
         resolution_ = resolution;

@@ -98,11 +98,14 @@ BackendTimes time_backends(GpuOcean& ocean, double time, int repeats);
 class AutoBackend {
 public:
     static constexpr int kTrialFrames = 3;
+    // One frame of `ocean` with the backend this frame gets (timed while deciding). Returns the
+    // decision, once, when it is made: "GPU FFT 77.1 ms, FFTW 45.3 ms a frame (median of 3): FFTW".
+    std::optional<std::string> simulate(GpuOcean& ocean, double time, float choppiness,
+                                        ocean::GpuTimers* timers = nullptr);
     // The backend for this frame at this resolution (a new resolution starts a new trial).
     Backend next(int resolution);
     bool timing() const { return !decided_; }
-    // This frame's simulate() took `ms`; returns the decision, once, when it is made:
-    // "GPU FFT 77.1 ms, FFTW 45.3 ms a frame (median of 3): FFTW".
+    // This frame's simulate() took `ms`; the decision when it is made (as simulate()).
     std::optional<std::string> record(double ms);
 
 private:

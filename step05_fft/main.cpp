@@ -33,8 +33,9 @@ public:
                "shared memory) gives heights, choppy displacements and slopes."}) {
         auto& p = params();
         ocean_params_.declare(p);
-        p.add_choice("backend", &backend_, {"dft", "gpu_fft", "fftw"},
-                     "inverse transform: naive DFT on the GPU (N <= 64), GPU FFT, or FFTW on the CPU");
+        p.add_choice("backend", &backend_, {"dft", "gpu_fft", "fftw", "auto"},
+                     "inverse transform: naive DFT on the GPU (N <= 64), GPU FFT, FFTW on the CPU, or auto "
+                     "(the faster of the last two, timed on the first frames)");
         p.add_choice("normals", &normals_, {"slopes", "finite_difference"},
                      "normals from the slope maps (i k h~) or from differences of the height map");
         p.add_choice("view", &view_,
@@ -79,7 +80,12 @@ private:
     }
 
     void render() override {
-        gpu_->simulate(time(), backend(), ocean_params_.choppiness, &timers());
+        if (backend_ == kAuto) {  // the faster of GPU FFT and FFTW, found on the first frames
+            if (auto decision = auto_backend_.simulate(*gpu_, time(), ocean_params_.choppiness, &timers()))
+                std::cout << "backend auto at N = " << gpu_->resolution() << ": " << *decision << "\n";
+        } else {
+            gpu_->simulate(time(), backend(), ocean_params_.choppiness, &timers());
+        }
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
         if (view_ > 0) {
@@ -147,7 +153,9 @@ private:
     step05::SpectrumView spectrum_view_;
     ocean::GridMesh grid_;
     std::vector<std::string> backend_times_;
-    int backend_ = int(Backend::GpuFft), normals_ = 0, view_ = 0;
+    static constexpr int kAuto = 3;  // the backend parameter's fourth choice
+    int backend_ = kAuto, normals_ = 0, view_ = 0;
+    step05::AutoBackend auto_backend_;
     float map_range_ = 0;
     float height_sigma_ = 0;  // metres: the square root of the spectrum's resolved variance
     bool wireframe_ = false, warned_dft_ = false;

@@ -25,7 +25,6 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -125,22 +124,10 @@ private:
     // frames, printed once: on llvmpipe FFTW wins, on a real GPU the GPU FFT).
     void simulate() {
         ocean::GpuScope timed(timers(), "simulation");
-        if (fft_backend_ != 0) {
+        if (fft_backend_ != 0)
             gpu_->simulate(time(), fft_backend_ == 1 ? step05::Backend::GpuFft : step05::Backend::Fftw,
                            ocean_params_.choppiness);
-            return;
-        }
-        const step05::Backend backend = auto_backend_.next(gpu_->resolution());
-        if (!auto_backend_.timing()) {
-            gpu_->simulate(time(), backend, ocean_params_.choppiness);
-            return;
-        }
-        glFinish();
-        const auto start = std::chrono::steady_clock::now();
-        gpu_->simulate(time(), backend, ocean_params_.choppiness);
-        glFinish();
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        if (auto decision = auto_backend_.record(ms))
+        else if (auto decision = auto_backend_.simulate(*gpu_, time(), ocean_params_.choppiness))
             std::cout << "fft_backend auto at N = " << gpu_->resolution() << ": " << *decision << "\n";
     }
 
