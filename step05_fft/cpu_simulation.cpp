@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <thread>
 
+#include <unistd.h>
+
 namespace step05 {
 
 int fftw_thread_count() {
@@ -42,7 +44,7 @@ CpuSimulation::CpuSimulation(int n, int cascades, std::string wisdom_file)
                                 FFTW_MEASURE);
     if (plan_ == nullptr) throw ocean::Error("FFTW could not plan the CPU simulation");
     if (!wisdom_file.empty()) {
-        const std::string temporary = wisdom_file + "." + std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id())) +
+        const std::string temporary = wisdom_file + "." + std::to_string(getpid()) + "." +
                                       std::to_string(reinterpret_cast<std::uintptr_t>(this));
         std::error_code ignored;
         if (fftwf_export_wisdom_to_filename(temporary.c_str()) != 0)
