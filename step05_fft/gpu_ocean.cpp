@@ -44,6 +44,7 @@ void GpuOcean::allocate(int n, int cascades) {
         glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
     cpu_.reset();  // planned again, for the new size, when first used
+    auto_ = {};    // which backend is faster depends on the size
     n_ = n;
 }
 
@@ -132,6 +133,10 @@ void GpuOcean::assemble(float choppiness) {
 }
 
 void GpuOcean::simulate(double time, Backend backend, float choppiness, ocean::GpuTimers* timers) {
+    if (backend == Backend::Auto) {
+        simulate_auto(time, choppiness, timers);
+        return;
+    }
     ocean::GpuTimers untimed;  // disabled: its scopes cost nothing
     ocean::GpuTimers& t = timers != nullptr ? *timers : untimed;
     const int layers = 4 * cascade_count();
@@ -197,47 +202,26 @@ BackendTimes time_backends(GpuOcean& ocean, double time, int repeats) {
     return t;
 }
 
-std::optional<std::string> AutoBackend::simulate(GpuOcean& ocean, double time, float choppiness,
-                                                 ocean::GpuTimers* timers) {
-    const Backend backend = next(ocean.resolution());
-    if (!timing()) {
-        ocean.simulate(time, backend, choppiness, timers);
-        return std::nullopt;
+void GpuOcean::simulate_auto(double time, float choppiness, ocean::GpuTimers* timers) {
+    if (auto_.decided) {
+        simulate(time, auto_.chosen, choppiness, timers);
+        return;
     }
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    ocean.simulate(time, backend, choppiness, timers);
-    glFinish();
-    return record(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-}
-
-Backend AutoBackend::next(int resolution) {
-    if (resolution != resolution_) {  // a new size: a new trial
-        resolution_ = resolution;
-        decided_ = false;
-        gpu_fft_ms_.clear();
-        fftw_ms_.clear();
-    }
-    if (decided_) return chosen_;
-    current_ = fftw_ms_.size() <= gpu_fft_ms_.size() ? Backend::Fftw : Backend::GpuFft;
-    return current_;
-}
-
-std::optional<std::string> AutoBackend::record(double ms) {
-    if (decided_) return std::nullopt;
-    (current_ == Backend::Fftw ? fftw_ms_ : gpu_fft_ms_).push_back(ms);
-    if (int(gpu_fft_ms_.size()) < kTrialFrames || int(fftw_ms_.size()) < kTrialFrames) return std::nullopt;
+    const Backend trial = auto_.fftw_ms.size() <= auto_.gpu_fft_ms.size() ? Backend::Fftw : Backend::GpuFft;
+    (trial == Backend::Fftw ? auto_.fftw_ms : auto_.gpu_fft_ms)
+        .push_back(median_ms(1, [&] { simulate(time, trial, choppiness, timers); }));
+    if (int(auto_.gpu_fft_ms.size()) < kAutoTrialFrames || int(auto_.fftw_ms.size()) < kAutoTrialFrames) return;
     const auto median = [](std::vector<double> v) {
         std::sort(v.begin(), v.end());
         return v[v.size() / 2];
     };
-    const double gpu = median(gpu_fft_ms_), cpu = median(fftw_ms_);
-    chosen_ = cpu < gpu ? Backend::Fftw : Backend::GpuFft;
-    decided_ = true;
-    char text[160];
-    std::snprintf(text, sizeof text, "GPU FFT %.1f ms, FFTW %.1f ms a frame (median of %d): %s", gpu, cpu, kTrialFrames,
-                  chosen_ == Backend::Fftw ? "FFTW" : "GPU FFT");
-    return std::string(text);
+    const double gpu = median(auto_.gpu_fft_ms), cpu = median(auto_.fftw_ms);
+    auto_.chosen = cpu < gpu ? Backend::Fftw : Backend::GpuFft;
+    auto_.decided = true;
+    char text[200];
+    std::snprintf(text, sizeof text, "at N = %d: GPU FFT %.1f ms, FFTW %.1f ms a frame (median of %d): %s", n_, gpu, cpu,
+                  kAutoTrialFrames, auto_.chosen == Backend::Fftw ? "FFTW" : "GPU FFT");
+    auto_decision_ = text;
 }
 
 std::vector<std::string> BackendTimes::lines() const {

@@ -12,13 +12,20 @@
 #include <cmath>
 #include <functional>
 #include <memory>
-#include <string>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace step05 {
 
-enum class Backend { Dft = 0, GpuFft = 1, Fftw = 2 };
+// Auto: the faster of GpuFft and Fftw, found on the frames themselves. While deciding, frames
+// alternate between the two and each whole simulate() (evolve, transform, unpack, and for FFTW the
+// upload) is timed, wall ms around glFinish; after kAutoTrialFrames of each the lower median wins,
+// until the resolution changes. No frame is spent only on timing, so a step starts as fast as
+// before. On llvmpipe the "GPU" is the CPU, and FFTW wins; on a real GPU the GPU FFT does.
+enum class Backend { Dft = 0, GpuFft = 1, Fftw = 2, Auto = 3 };
+constexpr int kAutoTrialFrames = 3;
 constexpr int kMaxDftSize = 64;  // the naive DFT is O(N^4)
 constexpr int kMaxCascades = 4;
 
@@ -33,7 +40,7 @@ public:
     void set_spectra(const std::vector<const InitialSpectrum*>& cascades);
 
     // One frame: evolve to `time`, inverse-transform with `backend`, unpack into the textures.
-    // The FFTW backend evolves and transforms on the CPU (in double) and uploads the fields.
+    // The FFTW backend evolves and transforms on the CPU (CpuSimulation) and uploads the fields.
     // With `timers`, each pass is timed on its own (evolve, fft, assemble); without, the caller
     // may time the whole (step06's "simulation").
     void simulate(double time, Backend backend, float choppiness, ocean::GpuTimers* timers = nullptr);
@@ -44,6 +51,10 @@ public:
     void transform_dft(GLuint source, GLuint target, int layers);  // N <= 64
     void upload_cpu_fields(double time);                           // the FFTW backend
     void assemble(float choppiness);
+
+    // Backend::Auto's choice when it has just been made, once, for the log: "at N = 256: GPU FFT
+    // 77.1 ms, FFTW 45.3 ms a frame (median of 3): FFTW"; nothing on every other call.
+    std::optional<std::string> take_auto_decision() { return std::exchange(auto_decision_, std::nullopt); }
 
     int resolution() const { return n_; }
     int cascade_count() const { return int(cascades_.size()); }
@@ -61,6 +72,7 @@ private:
     ocean::ShaderProgram& program(const std::string& file, const std::vector<std::string>& defines = {});
     void set_common_uniforms(const ocean::ShaderProgram& p) const;
     void allocate(int n, int cascades);
+    void simulate_auto(double time, float choppiness, ocean::GpuTimers* timers);
 
     ProgramFactory programs_;
     std::vector<const InitialSpectrum*> cascades_;
@@ -69,6 +81,12 @@ private:
     ocean::Buffer spectra_, fields_;
     ocean::Texture displacement_, slopes_;
     std::unique_ptr<CpuSimulation> cpu_;  // the FFTW backend, made when first used
+    struct AutoTrial {  // Backend::Auto at this resolution (allocate() starts a new one)
+        bool decided = false;
+        Backend chosen = Backend::GpuFft;
+        std::vector<double> gpu_fft_ms, fftw_ms;
+    } auto_;
+    std::optional<std::string> auto_decision_;
 };
 
 // The same transforms (4 complex N x N fields per cascade) timed with each backend, and the whole
@@ -89,30 +107,5 @@ struct BackendTimes {
     }
 };
 BackendTimes time_backends(GpuOcean& ocean, double time, int repeats);
-
-// The faster of the GPU FFT and FFTW, found on the frames themselves: while deciding, frames
-// alternate between the two and each whole simulate() (evolve, transform, unpack, and for FFTW the
-// upload) is timed, wall ms around glFinish; after kTrialFrames of each the lower median wins, for
-// as long as the resolution stays. No frame is spent only on timing, so a step starts as fast as
-// before. On llvmpipe the "GPU" is the CPU, and FFTW wins; on a real GPU the GPU FFT does.
-class AutoBackend {
-public:
-    static constexpr int kTrialFrames = 3;
-    // One frame of `ocean` with the backend this frame gets (timed while deciding). Returns the
-    // decision, once, when it is made: "GPU FFT 77.1 ms, FFTW 45.3 ms a frame (median of 3): FFTW".
-    std::optional<std::string> simulate(GpuOcean& ocean, double time, float choppiness,
-                                        ocean::GpuTimers* timers = nullptr);
-    // The backend for this frame at this resolution (a new resolution starts a new trial).
-    Backend next(int resolution);
-    bool timing() const { return !decided_; }
-    // This frame's simulate() took `ms`; the decision when it is made (as simulate()).
-    std::optional<std::string> record(double ms);
-
-private:
-    int resolution_ = 0;
-    bool decided_ = false;
-    Backend current_ = Backend::GpuFft, chosen_ = Backend::GpuFft;
-    std::vector<double> gpu_fft_ms_, fftw_ms_;
-};
 
 }  // namespace step05

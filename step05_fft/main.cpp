@@ -80,12 +80,8 @@ private:
     }
 
     void render() override {
-        if (backend_ == kAuto) {  // the faster of GPU FFT and FFTW, found on the first frames
-            if (auto decision = auto_backend_.simulate(*gpu_, time(), ocean_params_.choppiness, &timers()))
-                std::cout << "backend auto at N = " << gpu_->resolution() << ": " << *decision << "\n";
-        } else {
-            gpu_->simulate(time(), backend(), ocean_params_.choppiness, &timers());
-        }
+        gpu_->simulate(time(), backend(), ocean_params_.choppiness, &timers());
+        if (auto decision = gpu_->take_auto_decision()) std::cout << "backend auto " << *decision << "\n";
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
         if (view_ > 0) {
@@ -153,9 +149,7 @@ private:
     step05::SpectrumView spectrum_view_;
     ocean::GridMesh grid_;
     std::vector<std::string> backend_times_;
-    static constexpr int kAuto = 3;  // the backend parameter's fourth choice
-    int backend_ = kAuto, normals_ = 0, view_ = 0;
-    step05::AutoBackend auto_backend_;
+    int backend_ = int(Backend::Auto), normals_ = 0, view_ = 0;
     float map_range_ = 0;
     float height_sigma_ = 0;  // metres: the square root of the spectrum's resolved variance
     bool wireframe_ = false, warned_dft_ = false;

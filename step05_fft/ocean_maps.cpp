@@ -77,31 +77,12 @@ ComplexField inverse_fft_2d(const ComplexField& input, int n) {
     return output;
 }
 
-FftwInverse2d::FftwInverse2d(int n) : buffer_(std::size_t(n) * n) {
-    auto* data = reinterpret_cast<fftw_complex*>(buffer_.data());
-    plan_ = fftw_plan_dft_2d(n, n, data, data, FFTW_BACKWARD, FFTW_ESTIMATE);
-}
-
-FftwInverse2d::~FftwInverse2d() { fftw_destroy_plan(static_cast<fftw_plan>(plan_)); }
-
-const ComplexField& FftwInverse2d::run(const ComplexField& input) {
-    std::copy(input.begin(), input.end(), buffer_.begin());
-    fftw_execute(static_cast<fftw_plan>(plan_));
-    return buffer_;
-}
-
 OceanMaps transform_fftw(const std::array<ComplexField, 4>& spectra, int n, double patch_size) {
-    FftwInverse2d plan(n);
-    return transform_fftw(spectra, plan, n, patch_size);
-}
-
-OceanMaps transform_fftw(const std::array<ComplexField, 4>& spectra, FftwInverse2d& plan, int n,
-                         double patch_size) {
     OceanMaps maps;
     maps.n = n;
     maps.patch_size = patch_size;
     for (std::size_t t = 0; t < 4; ++t) {
-        const ComplexField& result = plan.run(spectra[t]);
+        const ComplexField result = inverse_fft_2d(spectra[t], n);
         auto& real_part = maps.fields[kPacking[t][0]];
         auto& imaginary_part = maps.fields[kPacking[t][1]];
         real_part.resize(result.size());

@@ -57,23 +57,8 @@ struct OceanMaps {
     double jacobian(std::size_t index, double choppiness) const;
 };
 
-// An FFTW plan made once and run many times (the backend and the benchmark).
-class FftwInverse2d {
-public:
-    explicit FftwInverse2d(int n);
-    ~FftwInverse2d();
-    FftwInverse2d(const FftwInverse2d&) = delete;
-    FftwInverse2d& operator=(const FftwInverse2d&) = delete;
-    const ComplexField& run(const ComplexField& input);  // the result stays valid until the next run
-
-private:
-    ComplexField buffer_;
-    void* plan_ = nullptr;  // fftw_plan, kept out of this header
-};
-
 // Inverse 2D transforms of the four packed spectra with FFTW (double), unpacked into 8 fields.
 OceanMaps transform_fftw(const std::array<ComplexField, 4>& spectra, int n, double patch_size);
-OceanMaps transform_fftw(const std::array<ComplexField, 4>& spectra, FftwInverse2d& plan, int n, double patch_size);
 // The whole reference: evolve to t, transform.
 OceanMaps simulate_cpu(const InitialSpectrum& s, double time);
 // The inverse 2D DFT of one complex field with FFTW (for tests on arbitrary input).

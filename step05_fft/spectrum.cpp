@@ -98,14 +98,17 @@ double spreading_exponent(double omega, double peak_omega, double wind_speed, do
     return hasselmann + 16.0 * std::tanh(peak_omega / omega) * swell * swell;
 }
 
-double directional_spreading(double omega, double theta, double peak_omega, double wind_speed, double spread,
-                             double swell) {
-    const double s = spreading_exponent(omega, peak_omega, wind_speed, swell);
+double cos2s_spreading(double theta, double s) {
     // Normalisation of cos^2s(theta/2) over [-pi, pi]: Gamma(s+1)^2 2^(2s-1) / (pi Gamma(2s+1)).
     const double log_norm = 2 * std::lgamma(s + 1) - std::lgamma(2 * s + 1) + (2 * s - 1) * std::log(2.0) -
                             std::log(kPi);
-    const double directional = std::exp(log_norm) * std::pow(std::abs(std::cos(0.5 * theta)), 2 * s);
-    return spread / (2 * kPi) + (1 - spread) * directional;
+    return std::exp(log_norm) * std::pow(std::abs(std::cos(0.5 * theta)), 2 * s);
+}
+
+double directional_spreading(double omega, double theta, double peak_omega, double wind_speed, double spread,
+                             double swell) {
+    const double s = spreading_exponent(omega, peak_omega, wind_speed, swell);
+    return spread / (2 * kPi) + (1 - spread) * cos2s_spreading(theta, s);
 }
 
 
@@ -148,10 +151,7 @@ double swell_2d(const SpectrumParams& p, double kx, double kz) {
     if (k <= 0 || p.swell_height <= 0) return 0;
     const double theta = std::remainder(std::atan2(kz, kx) - p.swell_direction * kPi / 180.0, 2 * kPi);
     const double omega = dispersion(k, p.depth);
-    // cos^2s(theta / 2), normalised over [-pi, pi] as directional_spreading's.
-    const double s = p.swell_spreading;
-    const double log_norm = 2 * std::lgamma(s + 1) - std::lgamma(2 * s + 1) + (2 * s - 1) * std::log(2.0) - std::log(kPi);
-    const double d = std::exp(log_norm) * std::pow(std::abs(std::cos(0.5 * theta)), 2 * s);
+    const double d = cos2s_spreading(theta, p.swell_spreading);
     double density = swell_spectrum(omega, p.swell_height, p.swell_period) * dispersion_derivative(k, p.depth);
     if (p.tma) density *= tma_attenuation(omega, p.depth);
     return density * d / k;

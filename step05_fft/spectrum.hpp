@@ -87,6 +87,9 @@ double tma_attenuation(double omega, double depth);
 //   s = 6.97 (omega/omega_p)^4.06                                  below the peak,
 //   s = 9.77 (omega/omega_p)^(-2.33 - 1.45 (U omega_p / g - 1.17))  above it (Hasselmann et al. 1980).
 double spreading_exponent(double omega, double peak_omega, double wind_speed, double swell);
+// N(s) cos^2s(theta / 2), normalised to integrate to 1 over [-pi, pi] (the wind sea's lobe and
+// the swell's).
+double cos2s_spreading(double theta, double s);
 // D(omega, theta) with theta measured from the wind: integrates to 1 over [-pi, pi].
 double directional_spreading(double omega, double theta, double peak_omega, double wind_speed, double spread,
                              double swell);

@@ -46,12 +46,9 @@ inline std::array<double, kCascades> cascade_patch_sizes(double largest) {
 constexpr double kPeakWavelengthsPerTile = 5;
 // A swell's peak counts as much as the wind sea's.
 inline double largest_tile(const step05::SpectrumParams& shared) {
-    const double peak = step05::peak_omega_of(shared);
-    double peak_wavelength = peak > 0 ? 2 * step05::kPi * step05::kGravity / (peak * peak) : 0;
-    if (shared.swell_height > 0) {
-        const double swell_peak = 2 * step05::kPi / shared.swell_period;
-        peak_wavelength = std::max(peak_wavelength, 2 * step05::kPi * step05::kGravity / (swell_peak * swell_peak));
-    }
+    const auto wavelength = [](double omega) { return omega > 0 ? 2 * step05::kPi * step05::kGravity / (omega * omega) : 0; };
+    double peak_wavelength = wavelength(step05::peak_omega_of(shared));
+    if (shared.swell_height > 0) peak_wavelength = std::max(peak_wavelength, wavelength(2 * step05::kPi / shared.swell_period));
     return std::max(shared.patch_size, kPeakWavelengthsPerTile * peak_wavelength);
 }
 inline std::array<double, kCascades> cascade_patch_sizes(const step05::SpectrumParams& shared) {

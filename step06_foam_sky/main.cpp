@@ -123,12 +123,11 @@ private:
     // fft_backend: the chosen one, or for auto the faster at this resolution (found on the first
     // frames, printed once: on llvmpipe FFTW wins, on a real GPU the GPU FFT).
     void simulate() {
+        static constexpr step05::Backend kChoices[] = {step05::Backend::Auto, step05::Backend::GpuFft,
+                                                       step05::Backend::Fftw};  // fft_backend's order
         ocean::GpuScope timed(timers(), "simulation");
-        if (fft_backend_ != 0)
-            gpu_->simulate(time(), fft_backend_ == 1 ? step05::Backend::GpuFft : step05::Backend::Fftw,
-                           ocean_params_.choppiness);
-        else if (auto decision = auto_backend_.simulate(*gpu_, time(), ocean_params_.choppiness))
-            std::cout << "fft_backend auto at N = " << gpu_->resolution() << ": " << *decision << "\n";
+        gpu_->simulate(time(), kChoices[fft_backend_], ocean_params_.choppiness);
+        if (auto decision = gpu_->take_auto_decision()) std::cout << "fft_backend auto " << *decision << "\n";
     }
 
     void update_foam(double dt) {
@@ -301,14 +300,13 @@ private:
     float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
     double height_variance_ = 0;         // m^2, of the summed cascades
     std::vector<float> unresolved_by_level_;  // kMaxMipLevels per cascade
-    step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with  // E[sx^2 + sz^2] of each cascade (the unresolved roughness)
+    step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with
     int split_effect_ = 0;
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
     int anisotropy_ = 4;
     int fft_backend_ = 0;  // auto
-    step05::AutoBackend auto_backend_;
 };
 
 }  // namespace

@@ -35,7 +35,7 @@ struct SurfaceSample {
 // (the mip level that averages the whole length), which also blurs away every wave across the
 // view and leaves horizontal smears, the "combed" look. So the long axis is cut into up to
 // ANISOTROPIC_TAPS pieces, each fetched at the mip level of its own width, and the pieces are
-// averaged: what hardware anisotropic filtering does, written out because llvmpipe's is 25x
+// averaged: what hardware anisotropic filtering does, written out because llvmpipe's is 26x
 // slower.
 SurfaceSample sample_surface(vec2 p) {
     vec2 dx = dFdxCoarse(p), dy = dFdyCoarse(p);

@@ -6,6 +6,7 @@
 #include "tests/gpu/program_cache.hpp"
 
 #include <cmath>
+#include <memory>
 #include <random>
 
 namespace {
@@ -15,6 +16,17 @@ using namespace step05;
 struct FftTest : ocean_test::GlTest {
     ocean_test::ProgramCache cache;
     ocean::ProgramFactory factory() { return cache.factory(); }
+    // The default sea at resolution n, and a GpuOcean holding it (the spectrum must outlive it).
+    static InitialSpectrum sea(int n) {
+        SpectrumParams p;
+        p.resolution = n;
+        return initial_spectrum(p);
+    }
+    std::unique_ptr<GpuOcean> ocean_of(const InitialSpectrum& s) {
+        auto ocean = std::make_unique<GpuOcean>(factory());
+        ocean->set_spectra({&s});
+        return ocean;
+    }
 };
 
 double relative_error(const std::vector<float>& gpu, std::size_t offset, std::size_t stride,
@@ -100,12 +112,37 @@ TEST_F(FftTest, BackendsMatchTheCpuReference) {
     }
 }
 
+// Backend::Auto decides after kAutoTrialFrames frames of each backend, says so once, and every
+// frame, deciding or not, holds the sea the CPU reference holds at that time; a new resolution
+// starts a new trial.
+TEST_F(FftTest, AutoBackendDecidesOnceAndEveryFrameIsTheSea) {
+    const InitialSpectrum s = sea(64);
+    const auto owned = ocean_of(s);
+    GpuOcean& ocean = *owned;
+    int decisions = 0;
+    for (int frame = 0; frame < 2 * kAutoTrialFrames + 2; ++frame) {
+        const double t = 0.5 * frame;
+        ocean.simulate(t, Backend::Auto, 1.0f);
+        if (auto decision = ocean.take_auto_decision()) {
+            ++decisions;
+            EXPECT_EQ(frame, 2 * kAutoTrialFrames - 1) << *decision;
+            EXPECT_NE(decision->find("at N = 64"), std::string::npos) << *decision;
+        }
+        const OceanMaps reference = simulate_cpu(s, t);
+        const auto fields = ocean.read_fields();
+        EXPECT_LT(relative_error(fields, 0, 2, reference[Height]), 1e-4) << "frame " << frame;
+    }
+    EXPECT_EQ(decisions, 1);
+    const InitialSpectrum larger = sea(128);
+    ocean.set_spectra({&larger});
+    for (int frame = 0; frame < 2 * kAutoTrialFrames; ++frame) ocean.simulate(0.5 * frame, Backend::Auto, 1.0f);
+    EXPECT_TRUE(ocean.take_auto_decision().has_value());  // decided again, for the new size
+}
+
 TEST_F(FftTest, AssembledTexturesHoldTheChoppyMaps) {
-    SpectrumParams p;
-    p.resolution = 64;
-    const InitialSpectrum s = initial_spectrum(p);
-    GpuOcean ocean(factory());
-    ocean.set_spectra({&s});
+    const InitialSpectrum s = sea(64);
+    const auto owned = ocean_of(s);
+    GpuOcean& ocean = *owned;
     const float choppiness = 1.3f;
     ocean.simulate(4.0, Backend::GpuFft, choppiness);
     std::vector<float> displacement(64 * 64 * 4), slopes(64 * 64 * 4);
