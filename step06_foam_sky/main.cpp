@@ -230,9 +230,11 @@ private:
         const bool bloom = look_.show("bloom") && view_ == 0;
         if (bloom) {
             ocean::GpuScope timed(timers(), "bloom");
+            ocean::ShaderProgram* first = program("bloom_first", {"fullscreen.vert", "bloom_down.frag"}, {"FIRST_LEVEL 1"});
             ocean::ShaderProgram* down = program("bloom_down", {"fullscreen.vert", "bloom_down.frag"});
             ocean::ShaderProgram* up = program("bloom_up", {"fullscreen.vert", "bloom_up.frag"});
-            if (down != nullptr && up != nullptr) post_.bloom(*down, *up, look_.bloom_threshold, fullscreen_vao());
+            if (first != nullptr && down != nullptr && up != nullptr)
+                post_.bloom(*first, *down, *up, look_.bloom_threshold, fullscreen_vao());
         }
         ocean::GpuScope timed(timers(), "tonemap");
         bind_target();

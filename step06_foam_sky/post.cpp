@@ -19,12 +19,15 @@ void PostProcess::resize(glm::ivec2 size) {
     glNamedFramebufferTexture(scene_target_.id(), GL_COLOR_ATTACHMENT0, scene_.id(), 0);
     glNamedFramebufferTexture(scene_target_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
 
-    // Bloom level 0 is half the screen; each next level half the previous (at least 1 pixel). A
-    // tiny window has fewer levels: a texture cannot have more than log2(side) + 1.
-    const glm::ivec2 half = glm::max(size / 2, glm::ivec2(1));
-    const int levels = std::min(kBloomLevels, 1 + int(std::floor(std::log2(double(std::max(half.x, half.y))))));
+    // Bloom level 0 is a quarter of the screen each way; each next level half the previous (at
+    // least 1 pixel). A glow is blurry by nature: a half-size first level cost 16 ms of llvmpipe's
+    // frame (its 13 taps read the whole screen) and added only the tightest 2-pixel halo, which
+    // the scene itself already shows. A tiny window has fewer levels: a texture cannot have more
+    // than log2(side) + 1.
+    const glm::ivec2 quarter = glm::max(size / 4, glm::ivec2(1));
+    const int levels = std::min(kBloomLevels, 1 + int(std::floor(std::log2(double(std::max(quarter.x, quarter.y))))));
     bloom_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(bloom_.id(), levels, GL_RGBA16F, half.x, half.y);
+    glTextureStorage2D(bloom_.id(), levels, GL_RGBA16F, quarter.x, quarter.y);
     bloom_views_.clear();
     bloom_targets_.clear();
     bloom_sizes_.clear();
@@ -39,7 +42,7 @@ void PostProcess::resize(glm::ivec2 size) {
         ocean::Framebuffer target = ocean::make_framebuffer();
         glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, bloom_.id(), level);
         bloom_targets_.push_back(std::move(target));
-        bloom_sizes_.push_back(glm::max(half / (1 << level), glm::ivec2(1)));
+        bloom_sizes_.push_back(glm::max(quarter / (1 << level), glm::ivec2(1)));
     }
 }
 
@@ -48,18 +51,17 @@ void PostProcess::bind_scene() const {
     glViewport(0, 0, size_.x, size_.y);
 }
 
-void PostProcess::bloom(const ocean::ShaderProgram& down, const ocean::ShaderProgram& up, float threshold,
-                        GLuint fullscreen_vao) const {
+void PostProcess::bloom(const ocean::ShaderProgram& first, const ocean::ShaderProgram& down,
+                        const ocean::ShaderProgram& up, float threshold, GLuint fullscreen_vao) const {
     glBindVertexArray(fullscreen_vao);
-    glUseProgram(down.id());
-    down.set("u_source", 0);
-    down.set("u_threshold", threshold);
     for (std::size_t level = 0; level < bloom_targets_.size(); ++level) {
-        const bool first = level == 0;
-        const glm::ivec2 source_size = first ? size_ : bloom_sizes_[level - 1];
-        down.set("u_first", int(first));
-        down.set("u_source_texel", 1.0f / glm::vec2(source_size));
-        glBindTextureUnit(0, first ? scene_.id() : bloom_views_[level - 1].id());
+        const bool from_scene = level == 0;
+        const ocean::ShaderProgram& p = from_scene ? first : down;
+        glUseProgram(p.id());
+        p.set("u_source", 0);
+        if (from_scene) p.set("u_threshold", threshold);
+        p.set("u_source_texel", 1.0f / glm::vec2(from_scene ? size_ : bloom_sizes_[level - 1]));
+        glBindTextureUnit(0, from_scene ? scene_.id() : bloom_views_[level - 1].id());
         glBindFramebuffer(GL_FRAMEBUFFER, bloom_targets_[level].id());
         glViewport(0, 0, bloom_sizes_[level].x, bloom_sizes_[level].y);
         glDrawArrays(GL_TRIANGLES, 0, 3);

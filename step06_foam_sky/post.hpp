@@ -1,5 +1,5 @@
 // Chapter 5.5's image passes: the scene is lit in linear HDR (an RGBA16F target), then bloom (a
-// chain of half-size levels down, a tent filter back up) and a filmic tonemapper bring it to the
+// quarter-size level, a chain of half-size levels below it, a tent filter back up) and a filmic tonemapper bring it to the
 // screen in sRGB.
 #pragma once
 
@@ -12,7 +12,7 @@
 
 namespace step06 {
 
-constexpr int kBloomLevels = 6;
+constexpr int kBloomLevels = 5;  // 1/4 of the screen down to 1/64: the same widest glow as before
 
 class PostProcess {
 public:
@@ -21,9 +21,10 @@ public:
     GLuint scene_texture() const { return scene_.id(); }
     GLuint bloom_texture() const { return bloom_views_.empty() ? 0 : bloom_views_[0].id(); }
 
-    // Fills the bloom chain from the scene. `down` and `up`: bloom_down.frag and bloom_up.frag.
-    void bloom(const ocean::ShaderProgram& down, const ocean::ShaderProgram& up, float threshold,
-               GLuint fullscreen_vao) const;
+    // Fills the bloom chain from the scene. `first` and `down`: bloom_down.frag with FIRST_LEVEL 1
+    // and 0; `up`: bloom_up.frag.
+    void bloom(const ocean::ShaderProgram& first, const ocean::ShaderProgram& down, const ocean::ShaderProgram& up,
+               float threshold, GLuint fullscreen_vao) const;
 
 private:
     glm::ivec2 size_{0};
