@@ -1,5 +1,6 @@
 // For fragment shaders (they use screen-space derivatives): the cascades summed as this pixel
 // sees them, filtered over the pixel's footprint on the sea.
+#extension GL_ARB_shader_group_vote : enable  // sample_surface: one loop length for neighbours (below)
 #include "cascades.glsl"
 #include "foam_map.glsl"
 
@@ -56,6 +57,17 @@ SurfaceSample sample_surface(vec2 p) {
         // Rounded, not ceiled: a footprint less than 1.5 times longer than wide takes one fetch
         // (slightly over-blurred), which spares most of the near sea a second one.
         int taps = clamp(int(long_length / max(short_length, texel) + 0.5), 1, ANISOTROPIC_TAPS);
+#ifdef GL_ARB_shader_group_vote
+        // Neighbouring pixels run in lockstep (a GPU's warp, llvmpipe's 8-wide vectors): a loop
+        // whose length differs between them runs as long as the longest, its other pixels masked
+        // off, and the masking itself costs (llvmpipe: 95 ms for the pass against 83). So the
+        // group agrees on its longest: a pixel given more pieces than it needs cuts its footprint
+        // finer, which filters it no worse.
+        int wanted = taps;
+        taps = 1;
+        for (int more = 2; more <= ANISOTROPIC_TAPS; ++more)
+            if (anyInvocationARB(wanted >= more)) taps = more;
+#endif
         float footprint = max(short_length, long_length / float(taps));  // metres each tap averages
         // Where one tap covers more than half a cascade's tile, the cascade's mipmaps have averaged
         // it to its mean, which is zero (a periodic tile has no mean slope or displacement):
@@ -86,21 +98,18 @@ SurfaceSample sample_surface(vec2 p) {
 }
 
 // Foam at rest position p (fragment shaders): the finest level that holds p, blended into the
-// next one over the outer tenth of its window, none beyond the largest window. From the finest
-// level out, a level is read only if p is in it and the finer ones left it some weight: most of the
-// sea needs one fetch, the distant sea none.
+// next one over the outer tenth of its window, none beyond the largest window. Every level is
+// read, in uniform control flow (so texture() may take its level from the pixel's neighbours):
+// skipping the levels a pixel does not need saved nothing where neighbouring pixels run together
+// (llvmpipe runs masked-off branches anyway), and its textureGrad, one level per pixel, cost
+// llvmpipe's ocean pass 18 ms of its 130 for the foam.
 float foam_at(vec2 p) {
-    // Derivatives in uniform control flow; the fetches below are in branches, so they take them
-    // explicitly (textureGrad).
-    vec2 dp_dx = dFdx(p), dp_dy = dFdy(p);
     float foam = 0.0, left = 1.0;  // left: the weight the finer levels did not take
-    for (int level = 0; level < FOAM_LEVELS && left > 0.0; ++level) {
+    for (int level = 0; level < FOAM_LEVELS; ++level) {
         vec2 offset = abs(p - u_foam_centre[level]);
         float inside = 0.5 * u_foam_extent[level] - max(offset.x, offset.y);  // metres from the edge
         float weight = clamp(inside / (0.1 * u_foam_extent[level]), 0.0, 1.0);
-        if (weight <= 0.0) continue;
-        float to_uv = 1.0 / u_foam_extent[level];
-        foam += left * weight * textureGrad(u_foam, vec3(p * to_uv, float(level)), dp_dx * to_uv, dp_dy * to_uv).r;
+        foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level))).r;
         left *= 1.0 - weight;
     }
     return foam;
@@ -120,11 +129,9 @@ float foam_cover(float amount, float pattern) {
 
 // The simulated amount laid out by the pattern, read at two scales (so the cells are not all one
 // size and the tile does not show) in world space, where the foam is.
+// No foam (amount 0) covers nothing whatever the pattern, so no branch is needed around it.
 float total_foam(vec2 p) {
-    vec2 uv = p / u_foam_pattern_size, duv_dx = dFdx(uv), duv_dy = dFdy(uv);
-    float amount = foam_at(p);
-    if (amount <= 0.0) return 0.0;  // most of the sea: no foam, no pattern to read
-    float pattern = 0.6 * textureGrad(u_foam_pattern, uv, duv_dx, duv_dy).r +
-                    0.4 * textureGrad(u_foam_pattern, uv * 2.71 + 0.37, duv_dx * 2.71, duv_dy * 2.71).r;
-    return foam_cover(amount, pattern);
+    vec2 uv = p / u_foam_pattern_size;
+    float pattern = 0.6 * texture(u_foam_pattern, uv).r + 0.4 * texture(u_foam_pattern, uv * 2.71 + 0.37).r;
+    return foam_cover(foam_at(p), pattern);
 }
