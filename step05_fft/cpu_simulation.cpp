@@ -4,10 +4,12 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <thread>
+#include <unordered_map>
 
 #include <unistd.h>
 
@@ -63,6 +65,8 @@ void CpuSimulation::set_spectra(const std::vector<const InitialSpectrum*>& casca
     if (int(cascades.size()) * 4 != layers_) throw ocean::Error("CPU simulation: cascade count changed");
     modes_.clear();
     modes_.reserve(std::size_t(layers_ / 4) * n_ * n_);
+    omegas_.clear();
+    std::unordered_map<double, std::uint32_t> phase_of;  // exact omegas: symmetric k give equal ones
     for (const InitialSpectrum* s : cascades) {
         if (s->n != n_) throw ocean::Error("CPU simulation: resolution changed");
         for (int j = 0; j < n_; ++j)
@@ -74,7 +78,9 @@ void CpuSimulation::set_spectra(const std::vector<const InitialSpectrum*>& casca
                 Mode m;
                 m.h0 = std::complex<float>(s->h0[index]);
                 m.h0_minus_conj = std::complex<float>(std::conj(s->h0[minus]));
-                m.omega = s->omega[index];
+                const auto [entry, added] = phase_of.try_emplace(s->omega[index], std::uint32_t(omegas_.size()));
+                if (added) omegas_.push_back(s->omega[index]);
+                m.phase = entry->second;
                 m.ux = k > 0 ? float(kx / k) : 0.0f;
                 m.uz = k > 0 ? float(kz / k) : 0.0f;
                 m.kx = float(kx);
@@ -83,11 +89,23 @@ void CpuSimulation::set_spectra(const std::vector<const InitialSpectrum*>& casca
                 modes_.push_back(m);
             }
     }
+    phases_.assign(omegas_.size(), 1.0f);
 }
 
-void CpuSimulation::evolve_range(double time, std::size_t begin, std::size_t end) {
+template <class Work>
+void CpuSimulation::in_parallel(int parts, const Work& work) const {
+    const int workers = std::min(threads_, parts);
+    std::vector<std::thread> helpers;
+    for (int w = 1; w < workers; ++w)
+        helpers.emplace_back([&work, parts, workers, w] {
+            for (int part = w; part < parts; part += workers) work(part);
+        });
+    for (int part = 0; part < parts; part += workers) work(part);
+    for (std::thread& helper : helpers) helper.join();
+}
+
+void CpuSimulation::evolve_range(std::size_t begin, std::size_t end) {
     const std::size_t area = std::size_t(n_) * n_;
-    const double turns_per_radian = 1.0 / (2 * kPi);
     for (std::size_t index = begin; index < end; ++index) {
         const Mode& q = modes_[index];
         const std::size_t c = index / area, m = index - c * area;
@@ -95,11 +113,7 @@ void CpuSimulation::evolve_range(double time, std::size_t begin, std::size_t end
         std::complex<float>* f1 = f0 + area;                         // Dz + i dh/dx
         std::complex<float>* f2 = f1 + area;                         // dh/dz + i dDx/dx
         std::complex<float>* f3 = f2 + area;                         // dDz/dz + i dDx/dz
-        // The phase reduced in double (omega t grows without bound: days of clock), the rest in
-        // float, as evolve.comp. Whole turns removed by floor: cheaper than fmod, same result.
-        const double radians = q.omega * time;
-        const float p = float(radians - 2 * kPi * std::floor(radians * turns_per_radian));
-        const float cs = std::cos(p), sn = std::sin(p);
+        const float cs = phases_[q.phase].real(), sn = phases_[q.phase].imag();
         // h = h0 e^{-i phase} + conj(h0(-k)) e^{+i phase}: crests along +k.
         const float hr = q.h0.real() * cs + q.h0.imag() * sn + q.h0_minus_conj.real() * cs - q.h0_minus_conj.imag() * sn;
         const float hi = q.h0.imag() * cs - q.h0.real() * sn + q.h0_minus_conj.imag() * cs + q.h0_minus_conj.real() * sn;
@@ -118,14 +132,65 @@ void CpuSimulation::evolve_range(double time, std::size_t begin, std::size_t end
 }
 
 void CpuSimulation::run(double time) {
-    // Every mode is independent: the modes are split evenly between the cores, as FFTW's threads.
-    const std::size_t count = modes_.size(), workers = std::size_t(threads_);
-    std::vector<std::thread> helpers;
-    for (std::size_t w = 1; w < workers; ++w)
-        helpers.emplace_back([this, time, count, workers, w] { evolve_range(time, count * w / workers, count * (w + 1) / workers); });
-    evolve_range(time, 0, count / workers);
-    for (std::thread& helper : helpers) helper.join();
+    // Every mode is independent: the work is split evenly between the cores, as FFTW's threads.
+    const int parts = threads_;
+    const double turns_per_radian = 1.0 / (2 * kPi);
+    in_parallel(parts, [&](int part) {
+        const std::size_t count = omegas_.size();
+        for (std::size_t i = count * std::size_t(part) / std::size_t(parts); i < count * std::size_t(part + 1) / std::size_t(parts); ++i) {
+            // The phase reduced in double (omega t grows without bound: days of clock), the rest
+            // in float, as evolve.comp. Whole turns removed by floor: cheaper than fmod, same result.
+            const double radians = omegas_[i] * time;
+            const float p = float(radians - 2 * kPi * std::floor(radians * turns_per_radian));
+            phases_[i] = {std::cos(p), std::sin(p)};
+        }
+    });
+    in_parallel(parts, [&](int part) {
+        const std::size_t count = modes_.size();
+        evolve_range(count * std::size_t(part) / std::size_t(parts), count * std::size_t(part + 1) / std::size_t(parts));
+    });
     fftwf_execute(static_cast<fftwf_plan>(plan_));
+}
+
+void CpuSimulation::assemble_layer(int cascade, float l) {
+    const std::size_t area = std::size_t(n_) * n_;
+    const std::complex<float>* f0 = data_ + std::size_t(cascade * 4) * area;  // (h, Dx)
+    const std::complex<float>* f1 = f0 + area;                               // (Dz, dh/dx)
+    const std::complex<float>* f2 = f1 + area;                               // (dh/dz, dDx/dx)
+    const std::complex<float>* f3 = f2 + area;                               // (dDz/dz, dDx/dz)
+    float* displacement = levels_[0].displacement.data() + std::size_t(cascade) * area * 4;
+    float* slopes = levels_[0].slopes.data() + std::size_t(cascade) * area * 4;
+    for (std::size_t m = 0; m < area; ++m) {
+        const float d[4] = {l * f0[m].imag(), f0[m].real(), l * f1[m].real(), l * f3[m].imag()};
+        const float s[4] = {f1[m].imag(), f2[m].real(), l * f2[m].imag(), l * f3[m].real()};
+        std::copy(d, d + 4, displacement + 4 * m);
+        std::copy(s, s + 4, slopes + 4 * m);
+    }
+    for (std::size_t level = 1; level < levels_.size(); ++level) {
+        const MipLevel& above = levels_[level - 1];
+        MipLevel& below = levels_[level];
+        const std::size_t from = std::size_t(above.size), to = std::size_t(below.size);
+        for (std::vector<float> MipLevel::*map : {&MipLevel::displacement, &MipLevel::slopes}) {
+            const float* a = (above.*map).data() + std::size_t(cascade) * from * from * 4;
+            float* b = (below.*map).data() + std::size_t(cascade) * to * to * 4;
+            for (std::size_t j = 0; j < to; ++j)
+                for (std::size_t i = 0; i < to; ++i)
+                    for (std::size_t channel = 0; channel < 4; ++channel) {
+                        const std::size_t top = ((2 * j) * from + 2 * i) * 4 + channel, bottom = top + from * 4;
+                        b[(j * to + i) * 4 + channel] = 0.25f * (a[top] + a[top + 4] + a[bottom] + a[bottom + 4]);
+                    }
+        }
+    }
+}
+
+void CpuSimulation::assemble(float choppiness) {
+    const int cascades = layers_ / 4;
+    if (levels_.empty())
+        for (int size = n_; size >= 1; size /= 2) {
+            const std::size_t floats = std::size_t(cascades) * std::size_t(size) * std::size_t(size) * 4;
+            levels_.push_back({size, std::vector<float>(floats), std::vector<float>(floats)});
+        }
+    in_parallel(cascades, [&](int cascade) { assemble_layer(cascade, choppiness); });
 }
 
 void CpuSimulation::transform_only() { fftwf_execute(static_cast<fftwf_plan>(plan_)); }

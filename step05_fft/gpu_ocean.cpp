@@ -108,13 +108,30 @@ void GpuOcean::transform_dft(GLuint source, GLuint target, int layers) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-void GpuOcean::upload_cpu_fields(double time) {
+CpuSimulation& GpuOcean::cpu() {
     if (!cpu_) {
         cpu_ = std::make_unique<CpuSimulation>(n_, cascade_count(), default_wisdom_file());
         cpu_->set_spectra(cascades_);
     }
-    cpu_->run(time);
+    return *cpu_;
+}
+
+void GpuOcean::upload_cpu_fields(double time) {
+    cpu().run(time);
     glNamedBufferSubData(fields_.id(), 0, GLsizeiptr(cpu_->float_count() * sizeof(float)), cpu_->fields());
+}
+
+void GpuOcean::upload_cpu_maps(double time, float choppiness) {
+    cpu().run(time);
+    cpu_->assemble(choppiness);
+    const auto& levels = cpu_->levels();
+    for (std::size_t level = 0; level < levels.size(); ++level) {
+        const int size = levels[level].size;
+        glTextureSubImage3D(displacement_.id(), GLint(level), 0, 0, 0, size, size, cascade_count(), GL_RGBA, GL_FLOAT,
+                            levels[level].displacement.data());
+        glTextureSubImage3D(slopes_.id(), GLint(level), 0, 0, 0, size, size, cascade_count(), GL_RGBA, GL_FLOAT,
+                            levels[level].slopes.data());
+    }
 }
 
 void GpuOcean::assemble(float choppiness) {
@@ -141,13 +158,15 @@ void GpuOcean::simulate(double time, Backend backend, float choppiness, ocean::G
     ocean::GpuTimers& t = timers != nullptr ? *timers : untimed;
     const int layers = 4 * cascade_count();
     if (backend == Backend::Fftw) {
-        ocean::GpuScope scope(t, "fftw+upload");
-        upload_cpu_fields(time);
-    } else {
-        {
-            ocean::GpuScope scope(t, "evolve");
-            evolve(time);
-        }
+        ocean::GpuScope scope(t, "fftw+assemble+upload");
+        upload_cpu_maps(time, choppiness);
+        return;
+    }
+    {
+        ocean::GpuScope scope(t, "evolve");
+        evolve(time);
+    }
+    {
         ocean::GpuScope scope(t, backend == Backend::Dft ? "dft" : "fft");
         if (backend == Backend::Dft)
             transform_dft(spectra_.id(), fields_.id(), layers);
@@ -251,6 +270,14 @@ void GpuOcean::bind_maps(const ocean::ShaderProgram& program) const {
     program.set("u_slopes", 1);
     glBindTextureUnit(0, displacement_.id());
     glBindTextureUnit(1, slopes_.id());
+}
+
+std::vector<float> GpuOcean::read_map(bool slopes, int level) const {
+    const int size = std::max(1, n_ >> level);
+    std::vector<float> out(std::size_t(size) * std::size_t(size) * 4 * cascades_.size());
+    glGetTextureImage(slopes ? slopes_.id() : displacement_.id(), level, GL_RGBA, GL_FLOAT,
+                      GLsizei(out.size() * sizeof(float)), out.data());
+    return out;
 }
 
 std::vector<float> GpuOcean::read_fields() const {

@@ -40,7 +40,8 @@ public:
     void set_spectra(const std::vector<const InitialSpectrum*>& cascades);
 
     // One frame: evolve to `time`, inverse-transform with `backend`, unpack into the textures.
-    // The FFTW backend evolves and transforms on the CPU (CpuSimulation) and uploads the fields.
+    // The FFTW backend does all of it on the CPU (CpuSimulation), mipmaps included, and uploads
+    // the finished textures.
     // With `timers`, each pass is timed on its own (evolve, fft, assemble); without, the caller
     // may time the whole (step06's "simulation").
     void simulate(double time, Backend backend, float choppiness, ocean::GpuTimers* timers = nullptr);
@@ -49,8 +50,9 @@ public:
     void evolve(double time);
     void transform_fft(GLuint source, GLuint target, int layers);  // 2D inverse FFT, in place allowed
     void transform_dft(GLuint source, GLuint target, int layers);  // N <= 64
-    void upload_cpu_fields(double time);                           // the FFTW backend
+    void upload_cpu_fields(double time);                   // FFTW: the fields buffer, as the GPU FFT leaves it
     void assemble(float choppiness);
+    void upload_cpu_maps(double time, float choppiness);  // FFTW: the textures, as assemble leaves them
 
     // Backend::Auto's choice when it has just been made, once, for the log: "at N = 256: GPU FFT
     // 77.1 ms, FFTW 45.3 ms a frame (median of 3): FFTW"; nothing on every other call.
@@ -67,12 +69,15 @@ public:
     void bind_maps(const ocean::ShaderProgram& program) const;
     // The fields of every cascade as 4 packed complex values per texel (tests, export).
     std::vector<float> read_fields() const;
+    // One mip level of the displacement (or slopes) texture, every cascade: layer major, RGBA (tests).
+    std::vector<float> read_map(bool slopes, int level) const;
 
 private:
     ocean::ShaderProgram& program(const std::string& file, const std::vector<std::string>& defines = {});
     void set_common_uniforms(const ocean::ShaderProgram& p) const;
     void allocate(int n, int cascades);
     void simulate_auto(double time, float choppiness, ocean::GpuTimers* timers);
+    CpuSimulation& cpu();  // made (and planned) when first used
 
     ProgramFactory programs_;
     std::vector<const InitialSpectrum*> cascades_;

@@ -128,9 +128,9 @@ TEST_F(FftTest, AutoBackendDecidesOnceAndEveryFrameIsTheSea) {
             EXPECT_EQ(frame, 2 * kAutoTrialFrames - 1) << *decision;
             EXPECT_NE(decision->find("at N = 64"), std::string::npos) << *decision;
         }
+        // What simulate() leaves for the renderer: the height is the displacement map's green.
         const OceanMaps reference = simulate_cpu(s, t);
-        const auto fields = ocean.read_fields();
-        EXPECT_LT(relative_error(fields, 0, 2, reference[Height]), 1e-4) << "frame " << frame;
+        EXPECT_LT(relative_error(ocean.read_map(false, 0), 1, 4, reference[Height]), 1e-4) << "frame " << frame;
     }
     EXPECT_EQ(decisions, 1);
     const InitialSpectrum larger = sea(128);
@@ -139,30 +139,51 @@ TEST_F(FftTest, AutoBackendDecidesOnceAndEveryFrameIsTheSea) {
     EXPECT_TRUE(ocean.take_auto_decision().has_value());  // decided again, for the new size
 }
 
+// Both backends' textures (the GPU's assemble.comp; the CPU's CpuSimulation::assemble) hold the
+// reference's maps, with the choppiness applied where it belongs.
 TEST_F(FftTest, AssembledTexturesHoldTheChoppyMaps) {
     const InitialSpectrum s = sea(64);
-    const auto owned = ocean_of(s);
-    GpuOcean& ocean = *owned;
-    const float choppiness = 1.3f;
-    ocean.simulate(4.0, Backend::GpuFft, choppiness);
-    std::vector<float> displacement(64 * 64 * 4), slopes(64 * 64 * 4);
-    glGetTextureImage(ocean.displacement_texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(displacement.size() * 4),
-                      displacement.data());
-    glGetTextureImage(ocean.slopes_texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(slopes.size() * 4), slopes.data());
     const OceanMaps reference = simulate_cpu(s, 4.0);
-    double scale = 0, worst = 0;
-    for (std::size_t i = 0; i < 64 * 64; ++i) {
-        const double expected[8] = {choppiness * reference[DisplacementX][i], reference[Height][i],
-                                    choppiness * reference[DisplacementZ][i], choppiness * reference[DDxDz][i],
-                                    reference[SlopeX][i], reference[SlopeZ][i],
-                                    choppiness * reference[DDxDx][i], choppiness * reference[DDzDz][i]};
-        for (int c = 0; c < 8; ++c) {
-            const float got = c < 4 ? displacement[i * 4 + std::size_t(c)] : slopes[i * 4 + std::size_t(c - 4)];
-            worst = std::max(worst, std::abs(got - expected[c]));
-            scale = std::max(scale, std::abs(expected[c]));
+    const float choppiness = 1.3f;
+    for (Backend backend : {Backend::GpuFft, Backend::Fftw}) {
+        const auto ocean = ocean_of(s);
+        ocean->simulate(4.0, backend, choppiness);
+        const std::vector<float> displacement = ocean->read_map(false, 0), slopes = ocean->read_map(true, 0);
+        double scale = 0, worst = 0;
+        for (std::size_t i = 0; i < 64 * 64; ++i) {
+            const double expected[8] = {choppiness * reference[DisplacementX][i], reference[Height][i],
+                                        choppiness * reference[DisplacementZ][i], choppiness * reference[DDxDz][i],
+                                        reference[SlopeX][i], reference[SlopeZ][i],
+                                        choppiness * reference[DDxDx][i], choppiness * reference[DDzDz][i]};
+            for (int c = 0; c < 8; ++c) {
+                const float got = c < 4 ? displacement[i * 4 + std::size_t(c)] : slopes[i * 4 + std::size_t(c - 4)];
+                worst = std::max(worst, std::abs(got - expected[c]));
+                scale = std::max(scale, std::abs(expected[c]));
+            }
+        }
+        EXPECT_LT(worst / scale, 1e-4) << (backend == Backend::Fftw ? "FFTW" : "GPU FFT");
+    }
+}
+
+// The FFTW backend filters its own mipmaps on the CPU; GL's glGenerateMipmap (the GPU FFT
+// backend's) is the outside reference: every level of both maps the same, to float rounding
+// (relative to the map's largest value at level 0: the last level is the mean, near zero).
+TEST_F(FftTest, CpuMipmapsAreGlsMipmaps) {
+    const InitialSpectrum s = sea(128);
+    const auto gpu = ocean_of(s), cpu = ocean_of(s);
+    gpu->simulate(3.0, Backend::GpuFft, 1.3f);
+    cpu->simulate(3.0, Backend::Fftw, 1.3f);
+    for (bool slopes : {false, true}) {
+        double scale = 0;
+        for (float v : gpu->read_map(slopes, 0)) scale = std::max(scale, double(std::abs(v)));
+        for (int level = 0; (128 >> level) >= 1; ++level) {
+            const auto expected = gpu->read_map(slopes, level), got = cpu->read_map(slopes, level);
+            double worst = 0;
+            for (std::size_t i = 0; i < expected.size(); ++i)
+                worst = std::max(worst, double(std::abs(got[i] - expected[i])));
+            EXPECT_LT(worst / scale, 1e-5) << (slopes ? "slopes" : "displacement") << " level " << level;
         }
     }
-    EXPECT_LT(worst / scale, 1e-4);
 }
 
 }  // namespace
