@@ -29,7 +29,7 @@ std::vector<std::uint8_t> to_r8(const std::vector<float>& pattern);
 // How much of a texel foam covers, from the simulated foam amount (0..1, fresh crests reach 1)
 // and the pattern there (0..1). Fresh foam covers everything; as it decays the cell middles (low
 // pattern) open first and the borders last, so a fading whitecap turns to lace, not to grey.
-// The edge is soft: coverage rises over `kFoamEdge` of (amount - hole). ocean.frag's foam_cover
+// The edge is soft: coverage rises over `kFoamEdge` of (amount - hole). cascades_visible.glsl's foam_cover
 // is the same function.
 constexpr double kFoamHoles = 0.5;  // how much of the amount the cell middles need before foam covers them
 constexpr double kFoamEdge = 0.3;

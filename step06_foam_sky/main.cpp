@@ -13,6 +13,7 @@
 #include "step05_fft/ocean_params.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
+#include "step06_foam_sky/gbuffer.hpp"
 #include "step06_foam_sky/look_params.hpp"
 #include "step06_foam_sky/patch_grid.hpp"
 #include "step06_foam_sky/post.hpp"
@@ -146,7 +147,7 @@ private:
         return view;
     }
 
-    // Units 0-2: the cascades' maps, 3: foam, 4: sky, 5: the foam's bubble pattern.
+    // Units 0-2: the cascades' maps, 3: foam, 4: sky, 5: the foam's bubble pattern (6, 7: the G-buffer).
     void bind_cascades(const ocean::ShaderProgram& p) {
         cascade_view().upload(p);
         gpu_->bind_maps(p);
@@ -174,30 +175,70 @@ private:
                 draw_fullscreen_triangle();
             }
         }
-        const int debug = view_ >= 1 && view_ <= 4 ? view_ : 0;
-        ocean::ShaderProgram* ocean =
-            program("ocean", {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"},
-                    {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug),
-                     "ANISOTROPIC_TAPS " + std::to_string(anisotropy_)});
         ocean::GpuScope timed(timers(), "ocean");
-        bind_cascades(*ocean);
-        look_.upload_shading(*ocean);
+        if (wireframe_) {
+            draw_mesh("ocean_wireframe", {"WIREFRAME 1"}, view_projection);
+            return;
+        }
+        // Deferred (gbuffer.hpp): the mesh records where each pixel meets the sea, then each of
+        // those pixels is shaded once.
+        gbuffer_.resize(framebuffer_size(), post_.depth_texture());
+        gbuffer_.bind();
+        draw_mesh("ocean", {}, view_projection);
+        post_.bind_scene();
+        shade_sea();
+    }
+
+    // The tessellated patches around the camera (depth tested and written): ocean.frag records
+    // the G-buffer, or with WIREFRAME 1 draws the edges.
+    void draw_mesh(const std::string& name, const std::vector<std::string>& defines, const glm::mat4& view_projection) {
+        ocean::ShaderProgram* mesh = program(name, {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"}, defines);
+        if (mesh == nullptr) return;
+        cascade_view().upload(*mesh);
+        gpu_->bind_maps(*mesh);
         const glm::vec3 eye = camera().eye();
-        ocean->set("u_view_projection", view_projection);
-        ocean->set("u_eye", eye);
-        ocean->set("u_grid_offset", glm::floor(glm::vec2(eye.x, eye.z) / patch_size_) * patch_size_);
-        ocean->set("u_patch_size", patch_size_);
-        ocean->set("u_tess_scale", tess_scale_);
-        ocean->set("u_frustum", step06::frustum_planes(view_projection));
-        ocean->set("u_max_displacement", max_displacement_);
-        ocean->set("u_cull", int(cull_));
-        ocean->set("u_sky_max_lod", sky_->max_lod());
-        ocean->set("u_wireframe", int(wireframe_));
+        mesh->set("u_view_projection", view_projection);
+        mesh->set("u_eye", eye);
+        mesh->set("u_grid_offset", glm::floor(glm::vec2(eye.x, eye.z) / patch_size_) * patch_size_);
+        mesh->set("u_patch_size", patch_size_);
+        mesh->set("u_tess_scale", tess_scale_);
+        mesh->set("u_frustum", step06::frustum_planes(view_projection));
+        mesh->set("u_max_displacement", max_displacement_);
+        mesh->set("u_cull", int(cull_));
         glEnable(GL_DEPTH_TEST);
-        glUseProgram(ocean->id());
+        glUseProgram(mesh->id());
         if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
         patches_.draw();
         if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        glDisable(GL_DEPTH_TEST);
+    }
+
+    // ocean_shade.frag over the whole screen, run only where the mesh wrote depth: the triangle is put
+    // at the far plane (depth range 1..1) and passes where the stored depth is nearer.
+    void shade_sea() {
+        const int debug = view_ >= 1 && view_ <= 4 ? view_ : 0;
+        ocean::ShaderProgram* shade =
+            program("ocean_shade", {"fullscreen.vert", "ocean_shade.frag"},
+                    {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug),
+                     "ANISOTROPIC_TAPS " + std::to_string(anisotropy_)});
+        if (shade == nullptr) return;
+        bind_cascades(*shade);
+        look_.upload_shading(*shade);
+        shade->set("u_eye", camera().eye());
+        shade->set("u_sky_max_lod", sky_->max_lod());
+        shade->set("u_gbuffer_world", 6);
+        shade->set("u_gbuffer_rest", 7);
+        glBindTextureUnit(6, gbuffer_.world_texture());
+        glBindTextureUnit(7, gbuffer_.rest_texture());
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_GREATER);
+        glDepthMask(GL_FALSE);
+        glDepthRange(1.0, 1.0);
+        glUseProgram(shade->id());
+        draw_fullscreen_triangle();
+        glDepthRange(0.0, 1.0);
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_LESS);
         glDisable(GL_DEPTH_TEST);
     }
 
@@ -292,6 +333,7 @@ private:
     step06::LookParams look_;
     step06::PatchGrid patches_;
     step06::PostProcess post_;
+    step06::GBuffer gbuffer_;
     std::unique_ptr<step05::GpuOcean> gpu_;
     std::unique_ptr<step06::Sky> sky_;
     std::vector<std::unique_ptr<step05::InitialSpectrum>> spectra_;

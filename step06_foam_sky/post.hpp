@@ -19,6 +19,7 @@ public:
     void resize(glm::ivec2 size);  // (re)makes the targets when the window size changes
     void bind_scene() const;       // the HDR target, with its depth buffer
     GLuint scene_texture() const { return scene_.id(); }
+    GLuint depth_texture() const { return depth_.id(); }
     GLuint bloom_texture() const { return bloom_views_.empty() ? 0 : bloom_views_[0].id(); }
 
     // Fills the bloom chain from the scene. `first` and `down`: bloom_down.frag with FIRST_LEVEL 1

@@ -1,5 +1,9 @@
 // For fragment shaders (they use screen-space derivatives): the cascades summed as this pixel
-// sees them, filtered over the pixel's footprint on the sea.
+// sees them, filtered over the pixel's footprint on the sea. The footprint is given (the
+// deferred shading pass reads it from the G-buffer, gbuffer.hpp): GL's own level for texture()
+// comes from the differences across a 2 x 2 quad, meaningless where the quad straddles a crest
+// and the water behind it, so every fetch here takes the bias that turns GL's level into the one
+// the footprint asks for.
 #extension GL_ARB_shader_group_vote : enable  // sample_surface: one loop length for neighbours (below)
 #include "cascades.glsl"
 #include "foam_map.glsl"
@@ -21,6 +25,14 @@ float unresolved_at(int c, float lod) {
                level - float(below));
 }
 
+// A pixel's footprint on the sea: the screen derivatives of the rest position (metres per pixel).
+struct SurfaceFootprint {
+    vec2 dx, dy;
+};
+
+// The longer side of the footprint GL assumes for texture(): from the quad's differences of p.
+float implicit_long_side(vec2 p) { return max(max(length(dFdxCoarse(p)), length(dFdyCoarse(p))), 1e-20); }
+
 // What the pixel sees of the summed surface: set by sample_surface.
 struct SurfaceSample {
     vec4 displacement;  // (l Dx, h, l Dz, l dDx/dz)
@@ -38,9 +50,10 @@ struct SurfaceSample {
 // ANISOTROPIC_TAPS pieces, each fetched at the mip level of its own width, and the pieces are
 // averaged: what hardware anisotropic filtering does, written out because llvmpipe's is 26x
 // slower.
-SurfaceSample sample_surface(vec2 p) {
-    vec2 dx = dFdxCoarse(p), dy = dFdyCoarse(p);
+SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
+    vec2 dx = f.dx, dy = f.dy;
     float lx = length(dx), ly = length(dy);
+    float implicit_long = implicit_long_side(p);
     vec2 long_axis = lx > ly ? dx : dy;
     float long_length = max(lx, ly), short_length = min(lx, ly);
     float texels = float(textureSize(u_slopes, 0).x);
@@ -78,17 +91,17 @@ SurfaceSample sample_surface(vec2 p) {
             continue;
         }
         // The slopes, which make the highlights, piece by piece: texture() with GL's own level
-        // (from the long axis) lowered by a bias to the piece's width. The displacement (it moves
+        // moved by a bias to the piece's width. The displacement (it moves
         // the normal only through its choppy term) once, over the whole footprint. texture(), not
         // textureGrad: llvmpipe picks one level per 2 x 2 pixels for implicit derivatives and one
         // per pixel for explicit ones, which made the pass 30 % slower. Everything that decides
         // the loop comes from coarse (per 2 x 2) derivatives, so the 2 x 2 pixels agree on it.
-        float bias = log2(footprint / long_length);
+        float bias = log2(footprint / implicit_long);
         vec4 slopes = vec4(0.0);
         for (int i = 0; i < taps; ++i)
             slopes += texture(u_slopes, cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c), bias);
         slopes /= float(taps);
-        s.displacement += texture(u_displacement, cascade_uv(p, c));
+        s.displacement += texture(u_displacement, cascade_uv(p, c), log2(long_length / implicit_long));
         s.slopes += slopes;
         // The pixel's normal is the mean slope over its long x short footprint: what that averages
         // away is about what a square of the same area does (the level of sqrt(long x short)).
@@ -103,13 +116,13 @@ SurfaceSample sample_surface(vec2 p) {
 // skipping the levels a pixel does not need saved nothing where neighbouring pixels run together
 // (llvmpipe runs masked-off branches anyway), and its textureGrad, one level per pixel, cost
 // llvmpipe's ocean pass 18 ms of its 130 for the foam.
-float foam_at(vec2 p) {
+float foam_at(vec2 p, float bias) {
     float foam = 0.0, left = 1.0;  // left: the weight the finer levels did not take
     for (int level = 0; level < FOAM_LEVELS; ++level) {
         vec2 offset = abs(p - u_foam_centre[level]);
         float inside = 0.5 * u_foam_extent[level] - max(offset.x, offset.y);  // metres from the edge
         float weight = clamp(inside / (0.1 * u_foam_extent[level]), 0.0, 1.0);
-        foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level))).r;
+        foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level)), bias).r;
         left *= 1.0 - weight;
     }
     return foam;
@@ -130,8 +143,10 @@ float foam_cover(float amount, float pattern) {
 // The simulated amount laid out by the pattern, read at two scales (so the cells are not all one
 // size and the tile does not show) in world space, where the foam is.
 // No foam (amount 0) covers nothing whatever the pattern, so no branch is needed around it.
-float total_foam(vec2 p) {
+float total_foam(vec2 p, SurfaceFootprint f) {
+    // Every map here is p times a scale, so one bias corrects GL's level for all of them.
+    float bias = log2(max(length(f.dx), length(f.dy)) / implicit_long_side(p));
     vec2 uv = p / u_foam_pattern_size;
-    float pattern = 0.6 * texture(u_foam_pattern, uv).r + 0.4 * texture(u_foam_pattern, uv * 2.71 + 0.37).r;
-    return foam_cover(foam_at(p), pattern);
+    float pattern = 0.6 * texture(u_foam_pattern, uv, bias).r + 0.4 * texture(u_foam_pattern, uv * 2.71 + 0.37, bias).r;
+    return foam_cover(foam_at(p, bias), pattern);
 }

@@ -1,86 +1,28 @@
 #version 450 core
-// Everything at a point of the sea: normal from the summed slopes, foam, scatter, microfacet
-// specular, the sky's reflection weighted by Fresnel, and height fog. Output: linear HDR.
-#include "cascades_visible.glsl"
-#include "shading.glsl"
-#include "fog.glsl"
+// Deferred shading, first pass (gbuffer.hpp): what each pixel sees of the sea, nothing more; the
+// shading is ocean_shade.frag's. The derivatives of the rest position are taken here, on the
+// triangle: in the shading pass a 2 x 2 quad may straddle a crest and the water behind it, and
+// its differences would be meaningless.
+#include "level_colour.glsl"
 
-#ifndef DEBUG_VIEW
-#define DEBUG_VIEW 0  // 0 shaded; 1 normals; 2 foam; 3 Jacobian; 4 tessellation level
+#ifndef WIREFRAME
+#define WIREFRAME 0  // 1: drawn as lines straight into the scene, coloured by tessellation level
 #endif
 
 in vec3 v_world_position;
 in vec2 v_rest_xz;
 in float v_level;
-out vec4 out_colour;
 
-uniform vec3 u_eye;
-uniform vec3 u_to_sun;
-uniform vec3 u_sun_radiance;
-uniform vec3 u_ambient;
-uniform samplerCube u_sky;
-uniform float u_sky_max_lod;
-uniform float u_roughness;  // of the resolved surface; the unresolved waves add their slope variance
-uniform float u_height_scale;          // metres that count as a full crest for the scatter term
-uniform vec3 u_scatter_colour, u_bubble_colour, u_foam_colour, u_crest_colour;
-uniform float u_k1, u_k2, u_k3, u_k4;
-uniform float u_foam_roughness;
-uniform bool u_wireframe;
-// Toggles, so every term can be seen alone or left out.
-uniform bool u_show_ambient, u_show_scatter, u_show_specular, u_show_reflection, u_show_foam, u_show_fog;
-
-vec3 level_colour(float level) {  // 1 blue, 8 green, 64 red
-    float t = clamp(log2(level) / 6.0, 0.0, 1.0);
-    return t < 0.5 ? mix(vec3(0.1, 0.2, 1.0), vec3(0.1, 0.9, 0.2), t * 2.0) : mix(vec3(0.1, 0.9, 0.2), vec3(1.0, 0.1, 0.1), (t - 0.5) * 2.0);
-}
+layout(location = 0) out vec4 g_world;  // the surface point, the tessellation level
+layout(location = 1) out uvec4 g_rest;  // rest position, d/dx and d/dy of it
 
 void main() {
-    if (u_wireframe) {
-        out_colour = vec4(level_colour(v_level) * 1.5, 1.0);  // through the tonemapper: keep it in range
-        return;
-    }
-    SurfaceSample surface = sample_surface(v_rest_xz);
-    vec4 displacement = surface.displacement, slopes = surface.slopes;
-    vec3 n = choppy_normal(displacement, slopes);
-    vec3 to_eye = u_eye - v_world_position;
-    float distance = length(to_eye);
-    vec3 v = to_eye / distance;
-    if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));  // a normal facing away: bend it back
-    float foam = u_show_foam ? total_foam(v_rest_xz) : 0.0;
-
-#if DEBUG_VIEW == 1
-    out_colour = vec4(0.5 * n + 0.5, 1.0); return;
-#elif DEBUG_VIEW == 2
-    out_colour = vec4(vec3(foam), 1.0); return;
-#elif DEBUG_VIEW == 3
-    float j = jacobian(displacement, slopes);
-    out_colour = vec4(j < 0.0 ? vec3(1.0, 0.0, 0.0) : vec3(clamp(j, 0.0, 2.0) * 0.5), 1.0); return;
-#elif DEBUG_VIEW == 4
-    out_colour = vec4(level_colour(v_level), 1.0); return;
+#if WIREFRAME
+    g_world = vec4(level_colour(v_level) * 1.5, 1.0);  // a colour, through the tonemapper: kept in range
+    return;
 #endif
-
-    // Waves too small for this pixel are not lost: their slopes become microfacets. A Beckmann
-    // surface of roughness alpha has slope variance alpha^2 / 2 per axis, so the unresolved
-    // variance summed over both axes adds to alpha^2 (GGX is given the same alpha).
-    float alpha = sqrt(u_roughness * u_roughness + surface.unresolved_slope_variance);
-    alpha = mix(alpha, u_foam_roughness, foam);
-    const float f0 = 0.02;
-    float fresnel = fresnel_schlick(dot(n, v), f0);
-
-    vec3 r = reflect(-v, n);
-    r.y = abs(r.y);  // a reflection pointing into the sea sees the sky it mirrors
-    vec3 sky = textureLod(u_sky, r, alpha * u_sky_max_lod).rgb;
-
-    ScatterSettings s = ScatterSettings(u_k1, u_k2, u_k3, u_k4, u_scatter_colour, u_bubble_colour, u_crest_colour);
-    float height = v_world_position.y / u_height_scale;
-    vec3 water = vec3(0.0);
-    if (u_show_ambient) water += (1.0 - fresnel) * u_ambient * u_scatter_colour;
-    if (u_show_scatter) water += (1.0 - fresnel) * scatter_term(n, v, u_to_sun, height, alpha, foam, s, u_sun_radiance);
-    if (u_show_reflection) water += fresnel * sky;
-    if (u_show_specular) water += specular_term(n, v, u_to_sun, alpha, f0, u_sun_radiance);
-    // Foam is rough and white: it scatters sun and sky back almost diffusely.
-    vec3 foam_light = u_foam_colour * (u_ambient + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
-    vec3 colour = mix(water, foam_light, foam);
-    if (u_show_fog) colour = apply_fog(colour, u_eye, v_world_position, textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), u_sky_max_lod * 0.5).rgb);
-    out_colour = vec4(colour, 1.0);
+    g_world = vec4(v_world_position, v_level);
+    // Coarse (one per 2 x 2 quad), as the filtering expects: every decision that follows from
+    // them is then the same for the four pixels of a quad.
+    g_rest = uvec4(floatBitsToUint(v_rest_xz), packHalf2x16(dFdxCoarse(v_rest_xz)), packHalf2x16(dFdyCoarse(v_rest_xz)));
 }

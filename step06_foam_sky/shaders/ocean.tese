@@ -21,7 +21,7 @@ void main() {
     // Vertices at distance d are about patch / level = d / tess_scale apart: waves shorter than two
     // spacings would be sampled at random phases from vertex to vertex (aliasing), so each cascade
     // is read at the mip level that averages them away; their slopes still reach the pixels
-    // (ocean.frag reads them per pixel, and what a pixel cannot resolve becomes roughness). The
+    // (ocean_shade.frag reads them per pixel, and what a pixel cannot resolve becomes roughness). The
     // spacing is a function of the position alone, so two patches sharing an edge displace its
     // vertices alike and no crack opens.
     float spacing = length(vec3(v_rest_xz.x, 0.0, v_rest_xz.y) - u_eye) / u_tess_scale;

@@ -1,0 +1,85 @@
+#version 450 core
+// Deferred shading, second pass (gbuffer.hpp): a full-screen triangle, run only where the mesh
+// (ocean.frag) wrote depth, shades each pixel of the sea once. Everything at a point of the sea: normal from
+// the summed slopes, foam, scatter, microfacet specular, the sky's reflection weighted by
+// Fresnel, and height fog. Output: linear HDR.
+#include "cascades_visible.glsl"
+#include "shading.glsl"
+#include "fog.glsl"
+#include "level_colour.glsl"
+
+#ifndef DEBUG_VIEW
+#define DEBUG_VIEW 0  // 0 shaded; 1 normals; 2 foam; 3 Jacobian; 4 tessellation level
+#endif
+
+out vec4 out_colour;
+
+uniform sampler2D u_gbuffer_world;   // (surface point, tessellation level)
+uniform usampler2D u_gbuffer_rest;   // (rest position, its d/dx and d/dy as half pairs)
+uniform vec3 u_eye;
+uniform vec3 u_to_sun;
+uniform vec3 u_sun_radiance;
+uniform vec3 u_ambient;
+uniform samplerCube u_sky;
+uniform float u_sky_max_lod;
+uniform float u_roughness;  // of the resolved surface; the unresolved waves add their slope variance
+uniform float u_height_scale;          // metres that count as a full crest for the scatter term
+uniform vec3 u_scatter_colour, u_bubble_colour, u_foam_colour, u_crest_colour;
+uniform float u_k1, u_k2, u_k3, u_k4;
+uniform float u_foam_roughness;
+// Toggles, so every term can be seen alone or left out.
+uniform bool u_show_ambient, u_show_scatter, u_show_specular, u_show_reflection, u_show_foam, u_show_fog;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 world = texelFetch(u_gbuffer_world, pixel, 0);
+    uvec4 packed_rest = texelFetch(u_gbuffer_rest, pixel, 0);
+    vec3 surface_point = world.xyz;
+    float level = world.w;
+    vec2 rest_xz = uintBitsToFloat(packed_rest.xy);
+    SurfaceFootprint footprint = SurfaceFootprint(unpackHalf2x16(packed_rest.z), unpackHalf2x16(packed_rest.w));
+    SurfaceSample surface = sample_surface(rest_xz, footprint);
+    vec4 displacement = surface.displacement, slopes = surface.slopes;
+    vec3 n = choppy_normal(displacement, slopes);
+    vec3 to_eye = u_eye - surface_point;
+    float distance = length(to_eye);
+    vec3 v = to_eye / distance;
+    if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));  // a normal facing away: bend it back
+    float foam = u_show_foam ? total_foam(rest_xz, footprint) : 0.0;
+
+#if DEBUG_VIEW == 1
+    out_colour = vec4(0.5 * n + 0.5, 1.0); return;
+#elif DEBUG_VIEW == 2
+    out_colour = vec4(vec3(foam), 1.0); return;
+#elif DEBUG_VIEW == 3
+    float j = jacobian(displacement, slopes);
+    out_colour = vec4(j < 0.0 ? vec3(1.0, 0.0, 0.0) : vec3(clamp(j, 0.0, 2.0) * 0.5), 1.0); return;
+#elif DEBUG_VIEW == 4
+    out_colour = vec4(level_colour(level), 1.0); return;
+#endif
+
+    // Waves too small for this pixel are not lost: their slopes become microfacets. A Beckmann
+    // surface of roughness alpha has slope variance alpha^2 / 2 per axis, so the unresolved
+    // variance summed over both axes adds to alpha^2 (GGX is given the same alpha).
+    float alpha = sqrt(u_roughness * u_roughness + surface.unresolved_slope_variance);
+    alpha = mix(alpha, u_foam_roughness, foam);
+    const float f0 = 0.02;
+    float fresnel = fresnel_schlick(dot(n, v), f0);
+
+    vec3 r = reflect(-v, n);
+    r.y = abs(r.y);  // a reflection pointing into the sea sees the sky it mirrors
+    vec3 sky = textureLod(u_sky, r, alpha * u_sky_max_lod).rgb;
+
+    ScatterSettings s = ScatterSettings(u_k1, u_k2, u_k3, u_k4, u_scatter_colour, u_bubble_colour, u_crest_colour);
+    float height = surface_point.y / u_height_scale;
+    vec3 water = vec3(0.0);
+    if (u_show_ambient) water += (1.0 - fresnel) * u_ambient * u_scatter_colour;
+    if (u_show_scatter) water += (1.0 - fresnel) * scatter_term(n, v, u_to_sun, height, alpha, foam, s, u_sun_radiance);
+    if (u_show_reflection) water += fresnel * sky;
+    if (u_show_specular) water += specular_term(n, v, u_to_sun, alpha, f0, u_sun_radiance);
+    // Foam is rough and white: it scatters sun and sky back almost diffusely.
+    vec3 foam_light = u_foam_colour * (u_ambient + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
+    vec3 colour = mix(water, foam_light, foam);
+    if (u_show_fog) colour = apply_fog(colour, u_eye, surface_point, textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), u_sky_max_lod * 0.5).rgb);
+    out_colour = vec4(colour, 1.0);
+}
