@@ -108,13 +108,17 @@ void App::use_camera(const CameraView& view) {
     camera_enabled_ = true;
 }
 
-void App::draw_grid(const ShaderProgram& program, const GridMesh& grid, bool wireframe) {
-    program.set("u_view_projection", camera_.projection(aspect()) * camera_.view());
+void App::draw_grid(const ShaderProgram& program, const GridMesh& grid, bool wireframe, float cull_margin) {
+    const glm::mat4 view_projection = camera_.projection(aspect()) * camera_.view();
+    program.set("u_view_projection", view_projection);
     program.set("u_eye", camera_.eye());
     GpuScope timed(timers_, "ocean");
     glEnable(GL_DEPTH_TEST);
     glUseProgram(program.id());
-    grid.draw(wireframe);
+    if (cull_margin >= 0)
+        grid.draw_visible(view_projection, cull_margin, wireframe);
+    else
+        grid.draw(wireframe);
     glDisable(GL_DEPTH_TEST);
 }
 

@@ -116,7 +116,9 @@ protected:
     GLuint fullscreen_vao() const { return empty_vao_.id(); }  // for passes that draw it themselves
     // Draws `grid` with `program` from the camera (u_view_projection, u_eye set), depth-tested,
     // timed as the "ocean" pass: the last lines of every grid-based step's render().
-    void draw_grid(const ShaderProgram& program, const GridMesh& grid, bool wireframe);
+    // With `cull_margin` >= 0 (metres: the most any vertex moves from rest), only the grid's
+    // chunks that may be in view are drawn.
+    void draw_grid(const ShaderProgram& program, const GridMesh& grid, bool wireframe, float cull_margin = -1);
 
 private:
     int run_loop(const Options& options);

@@ -1,5 +1,9 @@
 #include "common/grid.hpp"
 
+#include "common/frustum.hpp"
+
+#include <algorithm>
+
 namespace ocean {
 
 std::vector<glm::vec2> grid_positions(glm::vec2 size, int x_quads, int z_quads) {
@@ -12,22 +16,46 @@ std::vector<glm::vec2> grid_positions(glm::vec2 size, int x_quads, int z_quads) 
     return positions;
 }
 
-std::vector<unsigned> grid_triangle_indices(int x_quads, int z_quads) {
-    std::vector<unsigned> indices;
-    indices.reserve(std::size_t(x_quads) * std::size_t(z_quads) * 6);
+GridTriangles grid_triangles(glm::vec2 size, int x_quads, int z_quads) {
+    GridTriangles t;
+    t.indices.reserve(std::size_t(x_quads) * std::size_t(z_quads) * 6);
     const unsigned row = unsigned(x_quads + 1);
-    for (unsigned j = 0; j < unsigned(z_quads); ++j)
-        for (unsigned i = 0; i < unsigned(x_quads); ++i) {
-            const unsigned a = j * row + i, b = a + 1, c = a + row, d = c + 1;
-            // z grows towards the viewer, so (a, c, b) turns counter-clockwise seen from above.
-            indices.insert(indices.end(), {a, c, b, b, c, d});
+    const glm::vec2 quad = size / glm::vec2(float(x_quads), float(z_quads)), origin = -0.5f * size;
+    for (int cz = 0; cz < z_quads; cz += kChunkQuads)
+        for (int cx = 0; cx < x_quads; cx += kChunkQuads) {
+            GridChunk chunk;
+            chunk.first = t.indices.size();
+            const int x_end = std::min(cx + kChunkQuads, x_quads), z_end = std::min(cz + kChunkQuads, z_quads);
+            for (unsigned j = unsigned(cz); j < unsigned(z_end); ++j)
+                for (unsigned i = unsigned(cx); i < unsigned(x_end); ++i) {
+                    const unsigned a = j * row + i, b = a + 1, c = a + row, d = c + 1;
+                    // z grows towards the viewer, so (a, c, b) turns counter-clockwise seen from above.
+                    t.indices.insert(t.indices.end(), {a, c, b, b, c, d});
+                }
+            chunk.count = t.indices.size() - chunk.first;
+            chunk.lo = origin + quad * glm::vec2(float(cx), float(cz));
+            chunk.hi = origin + quad * glm::vec2(float(x_end), float(z_end));
+            t.chunks.push_back(chunk);
         }
-    return indices;
+    return t;
+}
+
+std::vector<std::size_t> visible_chunks(const std::vector<GridChunk>& chunks, const glm::mat4& view_projection,
+                                        float margin) {
+    const std::vector<glm::vec4> planes = frustum_planes(view_projection);
+    std::vector<std::size_t> visible;
+    for (std::size_t c = 0; c < chunks.size(); ++c) {
+        const glm::vec3 lo(chunks[c].lo.x - margin, -margin, chunks[c].lo.y - margin);
+        const glm::vec3 hi(chunks[c].hi.x + margin, margin, chunks[c].hi.y + margin);
+        if (!box_outside_frustum(planes, lo, hi)) visible.push_back(c);
+    }
+    return visible;
 }
 
 void GridMesh::build(glm::vec2 size, int x_quads, int z_quads) {
     const auto positions = grid_positions(size, x_quads, z_quads);
-    const auto indices = grid_triangle_indices(x_quads, z_quads);
+    GridTriangles triangles = grid_triangles(size, x_quads, z_quads);
+    const std::vector<unsigned>& indices = triangles.indices;
     vertices_ = make_buffer();
     glNamedBufferStorage(vertices_.id(), GLsizeiptr(positions.size() * sizeof(glm::vec2)),
                          positions.data(), 0);
@@ -41,6 +69,7 @@ void GridMesh::build(glm::vec2 size, int x_quads, int z_quads) {
     glVertexArrayAttribBinding(vao_.id(), 0, 0);
     vertex_count_ = int(positions.size());
     index_count_ = GLsizei(indices.size());
+    chunks_ = std::move(triangles.chunks);
 }
 
 void GridMesh::draw(bool wireframe) const {
@@ -48,6 +77,21 @@ void GridMesh::draw(bool wireframe) const {
     if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
     if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+}
+
+std::size_t GridMesh::draw_visible(const glm::mat4& view_projection, float margin, bool wireframe) const {
+    const std::vector<std::size_t> visible = visible_chunks(chunks_, view_projection, margin);
+    std::vector<GLsizei> counts;
+    std::vector<const void*> offsets;
+    for (std::size_t c : visible) {
+        counts.push_back(GLsizei(chunks_[c].count));
+        offsets.push_back(reinterpret_cast<const void*>(chunks_[c].first * sizeof(unsigned)));
+    }
+    glBindVertexArray(vao_.id());
+    if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(visible.size()));
+    if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    return visible.size();
 }
 
 }  // namespace ocean

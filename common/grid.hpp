@@ -5,6 +5,7 @@
 #include "common/gl.hpp"
 #include "common/params.hpp"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
 #include <array>
@@ -14,15 +15,34 @@ namespace ocean {
 
 // Rest positions, row by row along x; size in metres, counts in quads.
 std::vector<glm::vec2> grid_positions(glm::vec2 size, int x_quads, int z_quads);
-// Two counter-clockwise (seen from +y) triangles a quad.
-std::vector<unsigned> grid_triangle_indices(int x_quads, int z_quads);
+
+// The triangles come in square chunks of up to kChunkQuads x kChunkQuads quads, so that the
+// chunks outside the view can be left out of the draw: a plane reaching the horizon is mostly
+// behind and beside the camera, and a software rasteriser pays for every vertex it transforms.
+constexpr int kChunkQuads = 32;
+struct GridChunk {
+    std::size_t first = 0, count = 0;  // its indices
+    glm::vec2 lo{0}, hi{0};            // rest positions it spans (x, z), metres
+};
+struct GridTriangles {
+    std::vector<unsigned> indices;  // two counter-clockwise (seen from +y) triangles a quad, chunk by chunk
+    std::vector<GridChunk> chunks;
+};
+GridTriangles grid_triangles(glm::vec2 size, int x_quads, int z_quads);
+// The chunks of which some part may be seen: each chunk's box, lifted from rest by up to
+// `margin` metres in every direction (the waves' largest displacement), against the frustum.
+std::vector<std::size_t> visible_chunks(const std::vector<GridChunk>& chunks, const glm::mat4& view_projection,
+                                        float margin);
 
 class GridMesh {
 public:
     void build(glm::vec2 size, int x_quads, int z_quads);
     // GL_TRIANGLES (attribute 0 is vec2 (x, z)), or only their edges when `wireframe`.
     void draw(bool wireframe = false) const;
+    // Only the chunks visible_chunks keeps; returns how many were drawn.
+    std::size_t draw_visible(const glm::mat4& view_projection, float margin, bool wireframe = false) const;
     int vertex_count() const { return vertex_count_; }
+    std::size_t chunk_count() const { return chunks_.size(); }
     GLuint vertex_buffer() const { return vertices_.id(); }
     GLuint vertex_array() const { return vao_.id(); }
 
@@ -31,6 +51,7 @@ private:
     Buffer vertices_, indices_;
     int vertex_count_ = 0;
     GLsizei index_count_ = 0;
+    std::vector<GridChunk> chunks_;
 };
 
 // The grid's size and resolution as parameters (plane_size, x_quads, z_quads), for the steps that

@@ -47,6 +47,7 @@ public:
         light_.declare(p);
         grid_params_.declare(p);
         p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
+        p.add_bool("frustum_culling", &cull_, "draw only the grid's chunks that may be in view").in_group("grid");
         use_camera(ocean::camera_view("deck"));  // an open sea, seen from a ship's deck (12 m up)
     }
 
@@ -80,7 +81,15 @@ private:
     }
 
     void render() override {
-        gpu_->simulate(time(), backend(), ocean_params_.choppiness, &timers());
+        const Backend chosen = backend();
+        if (chosen == Backend::Auto) {
+            // While auto decides, frames alternate the backends, whose passes differ: one figure
+            // for the whole simulation, as step06 keeps.
+            ocean::GpuScope timed(timers(), "simulation");
+            gpu_->simulate(time(), chosen, ocean_params_.choppiness);
+        } else {
+            gpu_->simulate(time(), chosen, ocean_params_.choppiness, &timers());  // each pass timed
+        }
         if (auto decision = gpu_->take_auto_decision()) std::cout << "backend auto " << *decision << "\n";
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
@@ -95,7 +104,11 @@ private:
         ocean->set("u_wireframe", int(wireframe_));
         ocean->set("u_background", step03::srgb_to_linear(clear));
         gpu_->bind_maps(*ocean);
-        draw_grid(*ocean, grid_, wireframe_);
+        // Only the grid's chunks that may be in view (the plane reaches the horizon all round, the
+        // view sees a wedge of it): five standard deviations of the height, and as much again
+        // times the choppiness sideways, bound how far a vertex moves (as step06's culling).
+        const float largest_displacement = 5.0f * height_sigma_ * (1.0f + ocean_params_.choppiness) + 1.0f;
+        draw_grid(*ocean, grid_, wireframe_, cull_ ? largest_displacement : -1.0f);
     }
 
     void draw_map_view() {
@@ -148,6 +161,7 @@ private:
     unsigned spectrum_built_for_ = 0;
     step05::SpectrumView spectrum_view_;
     ocean::GridMesh grid_;
+    bool cull_ = true;
     std::vector<std::string> backend_times_;
     int backend_ = int(Backend::Auto), normals_ = 0, view_ = 0;
     float map_range_ = 0;

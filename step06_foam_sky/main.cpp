@@ -7,6 +7,7 @@
 // cubemap with sun and drifting clouds; height fog, bloom and a filmic tonemapper, in HDR.
 // Controls: as step02 (drag, wheel, C for the fly camera); every term and pass in the panel.
 #include "common/app.hpp"
+#include "common/frustum.hpp"
 #include "common/text.hpp"
 #include "step05_fft/export.hpp"
 #include "step05_fft/gpu_ocean.hpp"
@@ -202,7 +203,7 @@ private:
         mesh->set("u_grid_offset", glm::floor(glm::vec2(eye.x, eye.z) / patch_size_) * patch_size_);
         mesh->set("u_patch_size", patch_size_);
         mesh->set("u_tess_scale", tess_scale_);
-        mesh->set("u_frustum", step06::frustum_planes(view_projection));
+        mesh->set("u_frustum", ocean::frustum_planes(view_projection));
         mesh->set("u_max_displacement", max_displacement_);
         mesh->set("u_cull", int(cull_));
         glEnable(GL_DEPTH_TEST);

@@ -48,8 +48,4 @@ private:
     float size_ = 0;
 };
 
-// The six planes of the view frustum from a view-projection matrix (Gribb and Hartmann), as
-// (normal, d) with normals pointing inwards and normalised, for ocean.tesc's culling.
-std::vector<glm::vec4> frustum_planes(const glm::mat4& view_projection);
-
 }  // namespace step06

@@ -2,6 +2,7 @@
 // the CPU reference) and kept in world space when the camera moves, tessellation (primitive
 // counts against the CPU level, culling behind the camera), and the sky cubemap (the sun's
 // texel, an image sky, missing and corrupt files).
+#include "common/frustum.hpp"
 #include "common/image.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
@@ -246,7 +247,7 @@ struct Tessellated : Step06Gpu {
         program->set("u_grid_offset", glm::vec2(0));
         program->set("u_patch_size", 16.0f);
         program->set("u_tess_scale", tess_scale);
-        program->set("u_frustum", step06::frustum_planes(vp));
+        program->set("u_frustum", ocean::frustum_planes(vp));
         program->set("u_max_displacement", 1.0f);
         program->set("u_cull", 1);
         program->set("u_patch_sizes", std::vector<float>{500, 137, 41, 12});
