@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# compare_bench.sh compare|bench REPO BUILD_DIR OUT_DIR [SHEET_CHECK]: runs ./ocean compare or
-# ./ocean bench on what ctest built (small sizes), then checks what they wrote: a contact sheet
-# with one non-blank tile per step; a bench CSV with a numeric row per step (and the FFT
-# backends for step05 and step06).
+# compare_bench.sh compare|bench|sweep REPO BUILD_DIR OUT_DIR [SHEET_CHECK]: runs ./ocean compare,
+# ./ocean bench or ./ocean bench --sweep on what ctest built (small sizes), then checks what they
+# wrote: a contact sheet with one non-blank tile per step; a bench CSV with a numeric row per step
+# (and the FFT backends for step05 and step06); a sweep CSV with a row per simulating step,
+# resolution and window.
 set -u
 what=$1 repo=$2 build=$3 out=$4 check=${5:-}
 cd "$repo" || exit 1
@@ -28,5 +29,27 @@ case "$what" in
         if (!bad) print "bench.csv: " rows " rows, one per step, all numeric"
         exit bad
       }' "$out/bench.csv" ;;
-  *) echo "compare_bench.sh: compare or bench"; exit 2 ;;
+  sweep)
+    # Two resolutions and two windows, small: each simulating step (a resolution parameter) 4 runs.
+    ./ocean bench --sweep --size 160x90 --frames 3 --resolutions "64 128" --windows "160x90 320x180" --out "$out" ||
+      { echo "FAIL: ./ocean bench --sweep"; exit 1; }
+    [ -s "$out/sweep.png" ] || { echo "FAIL: no sweep.png"; exit 1; }
+    simulating=0
+    for exe in "$build"/step[0-9][0-9]_*/step[0-9][0-9]_*; do
+      [ -x "$exe" ] && "$exe" --list-params | awk '$1 == "resolution" { found = 1 } END { exit !found }' && simulating=$((simulating + 1))
+    done
+    awk -F, -v runs=$((simulating * 4)) '
+      NR == 1 { if ($0 != "step,size,resolution,fps,total_ms,passes,simulation_ms") { print "FAIL: header " $0; bad = 1 }; next }
+      {
+        rows++
+        if (NF != 7 || $1 !~ /^step[0-9][0-9]_/ || $3 !~ /^(64|128|256)$/ || !($4 > 0) || !($5 > 0) || $6 !~ /=[0-9.]+/ || !($7 > 0)) { print "FAIL: row " $0; bad = 1 }
+        seen[$2 " " $3]++
+      }
+      END {
+        if (rows != runs || runs == 0) { print "FAIL: " rows " rows for " runs " runs"; bad = 1 }
+        if (!("160x90 64" in seen) || !("160x90 128" in seen) || !("320x180 256" in seen)) { print "FAIL: a resolution or a window is missing"; bad = 1 }
+        if (!bad) print "sweep.csv: " rows " rows, every resolution and window, all numeric"
+        exit bad
+      }' "$out/sweep.csv" ;;
+  *) echo "compare_bench.sh: compare, bench or sweep"; exit 2 ;;
 esac
