@@ -43,6 +43,16 @@ void GpuOcean::allocate(int n, int cascades) {
         glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
+    // fft.comp's twiddle factors e^{+2 pi i m / N}, m < N, computed here in double (sin and cos
+    // per butterfly in float cost the shader more and are less accurate).
+    std::vector<float> twiddles;
+    for (int m = 0; m < n; ++m) {
+        const double angle = 2 * kPi * m / n;
+        twiddles.push_back(float(std::cos(angle)));
+        twiddles.push_back(float(std::sin(angle)));
+    }
+    twiddles_ = ocean::make_buffer();
+    glNamedBufferStorage(twiddles_.id(), GLsizeiptr(twiddles.size() * sizeof(float)), twiddles.data(), 0);
     cpu_.reset();  // planned again, for the new size, when first used
     auto_ = {};    // which backend is faster depends on the size
     n_ = n;
@@ -86,6 +96,7 @@ void GpuOcean::transform_fft(GLuint source, GLuint target, int layers) {
     auto& p = program("fft.comp", {"FFT_SIZE " + std::to_string(n_)});
     set_common_uniforms(p);
     glUseProgram(p.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, twiddles_.id());
     for (int axis = 0; axis < 2; ++axis) {  // rows (x) from source to target, then columns in place
         p.set("u_axis", axis);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, axis == 0 ? source : target);

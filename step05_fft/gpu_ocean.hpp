@@ -84,6 +84,7 @@ private:
     int n_ = 0;
     ocean::Buffer h0_, omega_;
     ocean::Buffer spectra_, fields_;
+    ocean::Buffer twiddles_;  // e^{+2 pi i m / N} for fft.comp
     ocean::Texture displacement_, slopes_;
     std::unique_ptr<CpuSimulation> cpu_;  // the FFTW backend, made when first used
     struct AutoTrial {  // Backend::Auto at this resolution (allocate() starts a new one)

@@ -1,51 +1,72 @@
 #version 450 core
 // Chapter 4.4: the inverse FFT along one axis of every line of every field of every cascade, in
-// one dispatch: workgroup (line, layer) loads its N values into shared memory, runs all log2 N
-// radix-2 Stockham stages there, and writes the line back. Two dispatches (x, then z) make the
-// 2D transform. Stockham reorders as it goes, so no bit-reversal pass is needed:
-//     stage p = 1, 2, 4 ... N/2, thread t < N/2, k = t mod p:
-//     u0 = x[t], u1 = x[t + N/2] e^{+i pi k / p},  y[2t - k] = u0 + u1,  y[2t - k + p] = u0 - u1
-// The result is sum_m X[m] e^{+2 pi i m n / N}, unnormalised, like FFTW_BACKWARD.
+// one dispatch: workgroup (line, layer) loads its N values into shared memory, runs all stages
+// there, and writes the line back. Two dispatches (x, then z) make the 2D transform. Stockham
+// reorders as it goes, so no bit-reversal pass is needed. The stages are radix 4 (half as many
+// as radix 2, so half the barriers and half the trips through shared memory), with one radix-2
+// stage last when log2 N is odd (N = 128, 512). A stage of radix r with stride p (p = 1, r, r^2 ...):
+//     thread t < N / r, k = t mod p, a_j = x[t + j N / r] w^(j k), w = e^{+2 pi i / (r p)}
+//     y[(t - k) r + k + q p] = sum_j a_j e^{+2 pi i j q / r},  q = 0 .. r - 1
+// (radix 2 is the butterfly u0 + u1, u0 - u1; radix 4 needs no multiplication beyond the
+// twiddles, e^{+2 pi i j q / 4} being 1, i, -1, -i). The twiddles come from a table of
+// e^{+2 pi i m / N} computed once in double on the CPU (GpuOcean::twiddles_), not from sin and
+// cos per butterfly. The result is sum_m X[m] e^{+2 pi i m n / N}, unnormalised, like
+// FFTW_BACKWARD.
 #ifndef FFT_SIZE
 #define FFT_SIZE 256  // N: a compile-time variant per resolution (it sets the workgroup size)
 #endif
-layout(local_size_x = FFT_SIZE / 2) in;
+const int QUARTER = FFT_SIZE / 4;
+layout(local_size_x = QUARTER) in;
 #include "ocean_layout.glsl"
 
 layout(std430, binding = 0) buffer Source { vec2 source[]; };
 layout(std430, binding = 1) buffer Target { vec2 target[]; };  // may be the source buffer
+layout(std430, binding = 2) readonly buffer Twiddles { vec2 twiddle[]; };  // e^{+2 pi i m / N}
 
 uniform int u_axis;  // 0: along x (rows), 1: along z (columns)
 
 shared vec2 lines[2][FFT_SIZE];
-
-const float PI = 3.14159265358979;
 
 int element(int layer, int line, int e) {
     int base = layer * FFT_SIZE * FFT_SIZE;
     return u_axis == 0 ? base + line * FFT_SIZE + e : base + e * FFT_SIZE + line;
 }
 
+vec2 times_i(vec2 a) { return vec2(-a.y, a.x); }
+
 void main() {
     int line = int(gl_WorkGroupID.x), layer = int(gl_WorkGroupID.y);  // layer = cascade * 4 + field
     int t = int(gl_LocalInvocationID.x);
-    const int half_size = FFT_SIZE / 2;
-    lines[0][t] = source[element(layer, line, t)];
-    lines[0][t + half_size] = source[element(layer, line, t + half_size)];
+    for (int j = 0; j < 4; ++j) lines[0][t + j * QUARTER] = source[element(layer, line, t + j * QUARTER)];
     barrier();
 
-    int from = 0;
-    for (int p = 1; p < FFT_SIZE; p <<= 1) {
+    int from = 0, p = 1;
+    for (; 4 * p <= FFT_SIZE; p *= 4) {  // radix-4 stages
         int k = t & (p - 1);
-        float angle = PI * float(k) / float(p);
-        vec2 u0 = lines[from][t];
-        vec2 u1 = complex_multiply(lines[from][t + half_size], vec2(cos(angle), sin(angle)));
-        int out_index = (t << 1) - k;
-        lines[1 - from][out_index] = u0 + u1;
-        lines[1 - from][out_index + p] = u0 - u1;
+        int step = k * (FFT_SIZE / (4 * p));  // w^(j k) = twiddle[j * step]
+        vec2 a0 = lines[from][t];
+        vec2 a1 = complex_multiply(lines[from][t + QUARTER], twiddle[step]);
+        vec2 a2 = complex_multiply(lines[from][t + 2 * QUARTER], twiddle[2 * step]);
+        vec2 a3 = complex_multiply(lines[from][t + 3 * QUARTER], twiddle[3 * step]);
+        int out_index = (t - k) * 4 + k;
+        lines[1 - from][out_index] = a0 + a1 + a2 + a3;
+        lines[1 - from][out_index + p] = a0 + times_i(a1) - a2 - times_i(a3);
+        lines[1 - from][out_index + 2 * p] = a0 - a1 + a2 - a3;
+        lines[1 - from][out_index + 3 * p] = a0 - times_i(a1) - a2 + times_i(a3);
         from = 1 - from;
         barrier();
     }
-    target[element(layer, line, t)] = lines[from][t];
-    target[element(layer, line, t + half_size)] = lines[from][t + half_size];
+    if (p < FFT_SIZE) {  // one radix-2 stage (p = N / 2): each thread does two butterflies
+        for (int half_t = t; half_t < FFT_SIZE / 2; half_t += QUARTER) {
+            int k = half_t & (p - 1);
+            vec2 u0 = lines[from][half_t];
+            vec2 u1 = complex_multiply(lines[from][half_t + FFT_SIZE / 2], twiddle[k * (FFT_SIZE / (2 * p))]);
+            int out_index = (half_t - k) * 2 + k;
+            lines[1 - from][out_index] = u0 + u1;
+            lines[1 - from][out_index + p] = u0 - u1;
+        }
+        from = 1 - from;
+        barrier();
+    }
+    for (int j = 0; j < 4; ++j) target[element(layer, line, t + j * QUARTER)] = lines[from][t + j * QUARTER];
 }
