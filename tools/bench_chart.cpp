@@ -55,7 +55,9 @@ int main(int argc, char** argv) {
 
     double largest = 1;
     for (const auto& r : rows) largest = std::max(largest, r.total);
-    const int left = 190, bar_width = 600, bar = 26, gap = 14, top = 60;
+    int left = 190;  // room for the longest label (./ocean bench --sweep's are "step06 1920x1080")
+    for (const auto& r : rows) left = std::max(left, 16 + ocean_tools::Canvas::text_width(r.step) + 12);
+    const int bar_width = 600, bar = 26, gap = 14, top = 60;
     const int height = top + int(rows.size()) * (bar + gap) + 40 + 24 * int((legend.size() + 3) / 4);
     ocean_tools::Canvas canvas(left + bar_width + 260, height, {24, 27, 32});
     canvas.text(16, 16, "wall ms a frame, by pass (and frames per second)", {235, 238, 242}, 2);

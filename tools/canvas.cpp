@@ -25,7 +25,9 @@ void Canvas::fill_rect(int x, int y, int w, int h, Colour colour) {
 }
 
 void Canvas::text(int x, int y, const std::string& text, Colour colour, int scale) {
-    std::vector<char> buffer(text.size() * 300 + 64);
+    // stb_easy_font writes 64 bytes a quad and needs up to ~12 quads for a digit ("0", "8"): at the
+    // ~300 bytes a character its header calls typical, labels full of digits were cut short.
+    std::vector<char> buffer(text.size() * 1024 + 64);
     std::string copy = text;
     const int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size()));
     // 4 vertices a quad, each x, y, z (floats) and a colour (4 bytes): 16 bytes.
