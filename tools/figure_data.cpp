@@ -1,0 +1,314 @@
+// figure_data OUT_DIR: the numbers behind the teaching figures (./ocean figures), computed by the
+// chapters' own code, so a figure cannot drift from what the steps do. For each figure NAME it
+// writes NAME.dat (columns of numbers) and NAME.gp (the gnuplot script that draws NAME.png from
+// them). ./ocean figures runs gnuplot on the scripts.
+#include "step03_lighting/normals.hpp"
+#include "step04_fbm/fbm.hpp"
+#include "step05_fft/ocean_maps.hpp"
+#include "step05_fft/spectrum.hpp"
+#include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/shading.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using step03::Vec3;
+constexpr double kPi = ocean::kPi;
+
+// The look every figure shares: a white page, a light grid, the repository's blues.
+const char* kStyle = R"gp(set terminal pngcairo size 900,540 font "DejaVu Sans,12" linewidth 1.5
+set grid lc rgb "#dddddd"
+set key top right box opaque
+set border lc rgb "#444444"
+set style line 1 lc rgb "#1f5fa8" lw 2
+set style line 2 lc rgb "#d9822b" lw 2
+set style line 3 lc rgb "#3a9a5b" lw 2
+set style line 4 lc rgb "#a33b8f" lw 2
+set style line 5 lc rgb "#777777" lw 1.5 dt 2
+)gp";
+
+struct Figure {
+    std::string name;
+    std::ofstream data, script;
+    Figure(const fs::path& dir, const std::string& figure_name)
+        : name(figure_name), data(dir / (figure_name + ".dat")), script(dir / (figure_name + ".gp")) {
+        script << kStyle << "set output '" << name << ".png'\n";
+    }
+};
+
+// step04's two wave shapes over two periods, and step05's choppy displacement of one mode at three
+// steepnesses (lambda k A = 0.5, 0.9 and 1.3: past 1 the crest folds over itself).
+std::vector<double> one_mode_profile(double steepness, std::vector<double>* x_out, std::vector<double>* jacobian,
+                                     std::vector<double>* rest_x = nullptr);
+
+void wave_profiles(const fs::path& dir) {
+    Figure f(dir, "wave_profiles");
+    f.data << "# theta  sine  exp(sin-1)-mean\n";
+    for (int i = 0; i <= 400; ++i) {
+        const double theta = -2 * kPi + 4 * kPi * i / 400.0;
+        f.data << theta / kPi << ' ' << step04::wave_shape(step04::Shape::Sine, theta).value << ' '
+               << step04::wave_shape(step04::Shape::ExpSine, theta).value << '\n';
+    }
+    f.data << "\n\n# x  height, for lambda k A = 0.5, 0.9, 1.3 (one mode of step05's simulation)\n";
+    std::vector<std::vector<double>> xs(3), hs(3);
+    const double steepness[3] = {0.5, 0.9, 1.3};
+    for (int s = 0; s < 3; ++s) hs[std::size_t(s)] = one_mode_profile(steepness[s], &xs[std::size_t(s)], nullptr);
+    for (std::size_t i = 0; i < hs[0].size(); ++i)
+        f.data << xs[0][i] << ' ' << hs[0][i] << ' ' << xs[1][i] << ' ' << hs[1][i] << ' ' << xs[2][i] << ' ' << hs[2][i] << '\n';
+    f.script << R"gp(set terminal pngcairo size 900,760 font "DejaVu Sans,12" linewidth 1.5
+set output 'wave_profiles.png'
+set key top center horizontal
+set yrange [-1.2:1.9]
+set multiplot layout 2,1 title "Wave profiles: what each chapter adds to the crest"
+set title "step01-04: a sine, and exp(sin θ − 1) (step04, minus its mean 0.466): sharp crests, flat troughs"
+set xlabel "phase θ / π"
+set ylabel "height / amplitude"
+plot 'wave_profiles.dat' index 0 using 1:2 with lines ls 1 title "sin θ", \
+     '' index 0 using 1:3 with lines ls 2 title "exp(sin θ − 1) − 0.466"
+set title "step05: one FFT mode moved sideways by λD (Gerstner's trochoid), steepness λkA"
+set xlabel "x (metres, wavelength 16 m)"
+set xrange [-16:16]
+set ylabel "height (m)"
+plot 'wave_profiles.dat' index 1 using 1:2 with lines ls 1 title "λkA = 0.5", \
+     '' index 1 using 3:4 with lines ls 2 title "λkA = 0.9 (nearly a cusp)", \
+     '' index 1 using 5:6 with lines ls 4 title "λkA = 1.3 (folds: J < 0)"
+unset multiplot
+)gp";
+}
+
+// One travelling mode of wavelength 16 m on a 64 m tile, amplitude 1 m, through step05's CPU
+// reference (spectrum slot, time evolution, inverse FFT): the rendered x = x0 + lambda Dx, the
+// height, and J = 1 + lambda dDx/dx along the row z = 0.
+std::vector<double> one_mode_profile(double steepness, std::vector<double>* x_out, std::vector<double>* jacobian,
+                                     std::vector<double>* rest_x) {
+    step05::InitialSpectrum s;
+    s.n = 256;  // a vertex every 25 cm
+    s.patch_size = 64;
+    s.h0.assign(std::size_t(s.n) * s.n, 0.0);
+    s.omega.assign(s.h0.size(), 0.0);
+    s.density.assign(s.h0.size(), 0.0);
+    const int i = 4;  // k = 2 pi 4 / 64 m: a 16 m wave along +x
+    const double k = step05::wavenumber(i, s.n, s.patch_size), amplitude = 1.0;
+    s.h0[std::size_t(i)] = amplitude / 2;  // the evolution adds its conjugate: a cosine of amplitude 1
+    s.omega[std::size_t(i)] = step05::dispersion(k, 1000);
+    const step05::OceanMaps maps = step05::simulate_cpu(s, 0.0);
+    const double lambda = steepness / (k * amplitude);
+    std::vector<double> heights;
+    for (int x = 0; x <= s.n; ++x) {
+        const std::size_t at = std::size_t(x % s.n);
+        const double rest = x * s.patch_size / s.n - 32;
+        x_out->push_back(rest + lambda * maps[step05::DisplacementX][at]);
+        if (rest_x != nullptr) rest_x->push_back(rest);
+        heights.push_back(maps[step05::Height][at]);
+        if (jacobian != nullptr) jacobian->push_back(1 + lambda * maps[step05::DDxDx][at]);
+    }
+    return heights;
+}
+
+// The fold itself: where lambda k A > 1 the surface crosses over itself, and J < 0 marks it.
+void jacobian_fold(const fs::path& dir) {
+    Figure f(dir, "jacobian_fold");
+    std::vector<double> x, j, rest;
+    const std::vector<double> h = one_mode_profile(1.3, &x, &j, &rest);
+    f.data << "# rest x  rendered x  height  J (lambda k A = 1.3)\n";
+    for (std::size_t i = 0; i < h.size(); ++i) f.data << rest[i] << ' ' << x[i] << ' ' << h[i] << ' ' << j[i] << '\n';
+    f.script << R"gp(set terminal pngcairo size 900,760 font "DejaVu Sans,12" linewidth 1.5
+set output 'jacobian_fold.png'
+set key top center horizontal
+set multiplot layout 2,1 title "A fold, and the Jacobian that finds it (one mode, λkA = 1.3)"
+set title "the rendered surface (x0 + λDx, h): the crest has crossed over itself"
+set xlabel "rendered x (m)"
+set ylabel "height (m)"
+set xrange [-20:20]
+set yrange [-1.2:1.9]
+plot 'jacobian_fold.dat' using 2:3 with linespoints ls 4 pt 7 ps 0.4 title "surface (points: grid vertices, 25 cm apart at rest)"
+set title "J = 1 + λ dDx/dx at each vertex: below 0 where the vertices' order reverses (step06 puts foam there)"
+set xlabel "rest x (m)"
+set ylabel "J"
+set yrange [-0.5:3.2]
+plot 'jacobian_fold.dat' using 1:4 with lines ls 1 title "J", 0 with lines ls 5 title "J = 0"
+unset multiplot
+)gp";
+}
+
+// S(omega) for a 14 m/s wind over 100 km: JONSWAP, Pierson-Moskowitz (JONSWAP with gamma = 1),
+// and Phillips turned into S(omega) by dk/domega; the peak and step05's grid cut-offs.
+// The sea the spectrum figures show: step06's default wind (14 m/s over 100 km), 256 modes on a
+// 500 m tile.
+step05::SpectrumParams figure_sea() {
+    step05::SpectrumParams p;
+    p.wind_speed = 14;
+    p.fetch = 100000;
+    p.resolution = 256;
+    p.patch_size = 500;
+    return p;
+}
+
+void spectra(const fs::path& dir) {
+    Figure f(dir, "spectra");
+    const step05::SpectrumParams p = figure_sea();
+    const double peak = step05::jonswap_peak_omega(p.wind_speed, p.fetch);
+    f.data << "# omega  JONSWAP  Pierson-Moskowitz  Phillips\n";
+    for (int i = 1; i <= 600; ++i) {
+        const double omega = 3.0 * i / 600.0;
+        const double k = omega * omega / step05::kGravity, dk_domega = 2 * omega / step05::kGravity;
+        f.data << omega << ' ' << step05::jonswap(omega, p.wind_speed, p.fetch, 3.3) << ' '
+               << step05::jonswap(omega, p.wind_speed, p.fetch, 1.0) << ' '
+               << step05::phillips_k(k, p.wind_speed) * dk_domega << '\n';
+    }
+    const double k_min = 2 * kPi / p.patch_size, k_max = kPi * p.resolution / p.patch_size;
+    const double omega_min = step05::dispersion(k_min, p.depth), omega_max = step05::dispersion(k_max, p.depth);
+    f.script << "set title \"Wave spectra S(ω), wind 14 m/s, fetch 100 km (step05's spectrum.cpp)\"\n"
+             << "set xlabel \"ω (rad/s)\"\nset ylabel \"S(ω) (m² s / rad)\"\nset xrange [0:3]\n"
+             << "set arrow from " << peak << ", graph 0 to " << peak << ", graph 1 nohead ls 5\n"
+             << "set label \"ω_p = " << std::round(peak * 1000) / 1000 << "\" at " << peak - 0.03 << ", graph 0.95 right\n"
+             << "set key at graph 0.98, graph 0.72\n"
+             << "set arrow from " << omega_min << ", graph 0 to " << omega_min << ", graph 1 nohead ls 5 lc rgb '#aa3333'\n"
+             << "set label \"one 500 m tile's longest wave\" at " << omega_min + 0.03 << ", graph 0.55 tc rgb '#aa3333'\n"
+             << "set label \"its shortest (N = 256): ω = " << std::round(omega_max * 100) / 100 << ", off the plot\" at 1.6, graph 0.30 tc rgb '#aa3333'\n"
+             << R"gp(plot 'spectra.dat' using 1:2 with lines ls 1 title "JONSWAP (γ = 3.3): a fetch-limited sea", \
+     '' using 1:3 with lines ls 2 title "Pierson–Moskowitz (γ = 1): fully developed", \
+     '' using 1:4 with lines ls 3 title "Phillips (Tessendorf)"
+)gp";
+}
+
+// step06's four cascades over the spectrum they share: each tile carries one band of wavenumbers.
+void cascade_bands(const fs::path& dir) {
+    Figure f(dir, "cascade_bands");
+    const step05::SpectrumParams p = figure_sea();
+    const auto sizes = step06::cascade_patch_sizes(p);
+    const auto bands = step06::cascade_bands(sizes, p.resolution);
+    f.data << "# k  k F(k) (the energy per log k)\n";
+    for (int i = 0; i <= 800; ++i) {
+        const double k = std::pow(10.0, -3 + 5.0 * i / 800.0);
+        f.data << k << ' ' << k * step05::omnidirectional_k(p, k) << '\n';
+    }
+    const char* colours[] = {"#1f5fa8", "#d9822b", "#3a9a5b", "#a33b8f"};
+    f.script << "set title \"step06: four cascades share one spectrum, each tile carries one band (cascades.hpp)\"\n"
+             << "set xlabel \"wavenumber k (rad/m)\"\nset ylabel \"k F(k) (m²): energy per log k\"\n"
+             << "set logscale x\nset xrange [1e-3:1e2]\nset format x \"10^{%L}\"\nset key bottom left\n";
+    for (int c = 0; c < step06::kCascades; ++c) {
+        const double low = std::max(bands[std::size_t(c)].low, 1e-3), high = bands[std::size_t(c)].high;
+        f.script << "set object " << c + 1 << " rect from " << low << ", graph 0 to " << high
+                 << ", graph 1 fc rgb '" << colours[c] << "' fs transparent solid 0.15 noborder\n"
+                 << "set label " << c + 1 << " \"cascade " << c << "\\n" << std::lround(sizes[std::size_t(c)])
+                 << " m tile\" at " << std::sqrt(low * high) << ", graph 0.9 center tc rgb '" << colours[c] << "'\n";
+    }
+    f.script << "plot 'cascade_bands.dat' using 1:2 with lines ls 1 lc rgb 'black' title \"k F(k), wind 14 m/s, 100 km\"\n";
+}
+
+// Schlick's Fresnel against the exact equations for water, and the seed's slip.
+void fresnel(const fs::path& dir) {
+    Figure f(dir, "fresnel");
+    const double f0 = step06::normal_incidence_reflectance(step06::kWaterIndex);
+    f.data << "# angle from the normal (degrees)  exact  Schlick  seed (1 - cos)^5\n";
+    for (int i = 0; i <= 900; ++i) {
+        const double degrees = 90.0 * i / 900.0, c = std::cos(degrees * kPi / 180);
+        f.data << degrees << ' ' << step06::fresnel_dielectric(c, step06::kWaterIndex) << ' '
+               << step06::fresnel_schlick(c, f0) << ' ' << std::pow(1 - c, 5) << '\n';
+    }
+    f.script << R"gp(set title "How much light water reflects: Fresnel for n = 1.333 (shading.hpp)"
+set xlabel "angle between the view and the normal (degrees)"
+set ylabel "reflectance F"
+set xrange [0:90]
+set yrange [0:1]
+set key top left
+set label "F0 = 0.02: looking straight down, water reflects 2 %" at 5, 0.12
+plot 'fresnel.dat' using 1:2 with lines ls 1 title "exact (Fresnel's equations, unpolarised)", \
+     '' using 1:3 with lines ls 2 title "Schlick, F0 + (1 − F0)(1 − cos θ)^5 (the renderer's)", \
+     '' using 1:4 with lines ls 5 title "the seed's (1 − cos θ)^5: forgets F0"
+)gp";
+}
+
+// The data flow of an 8-point radix-2 Stockham transform (the stages fft.comp runs with radix 4
+// for larger N): stage p, thread t < N/2, k = t mod p, inputs t and t + N/2, outputs 2t - k and
+// 2t - k + p, the second input turned by e^{+i pi k / p}.
+void butterfly(const fs::path& dir) {
+    Figure f(dir, "butterfly");
+    const int n = 8;
+    f.data << "# x0 y0 x1 y1 (one line segment a row)\n";
+    int stage = 0;
+    std::string highlighted;  // one butterfly, its four lines (stage p = 2, thread t = 1)
+    for (int p = 1; p < n; p *= 2, ++stage)
+        for (int t = 0; t < n / 2; ++t) {
+            const int k = t & (p - 1), out = 2 * t - k;
+            for (int input : {t, t + n / 2})
+                for (int output : {out, out + p}) {
+                    const std::string line = std::to_string(stage) + ' ' + std::to_string(input) + ' ' +
+                                             std::to_string(stage + 1) + ' ' + std::to_string(output) + '\n';
+                    f.data << line;
+                    if (p == 2 && t == 1) highlighted += line;
+                }
+        }
+    f.data << "\n\n# the butterfly of thread t = 1 at p = 2: k = 1, w = e^{i pi 1 / 2} = i\n" << highlighted;
+    f.script << "set terminal pngcairo size 900,600 font \"DejaVu Sans,12\"\nset output 'butterfly.png'\n"
+             << "set title \"An 8-point inverse FFT, Stockham order (fft.comp): each stage pairs x[t] with x[t + N/2]\"\n"
+             << "set xlabel \"stage (p = 1, 2, 4)\"\nset ylabel \"index\"\nset xrange [-0.3:5.1]\nset yrange [-0.5:7.5]\n"
+             << "set xtics (\"input\" 0, \"p = 1\" 1, \"p = 2\" 2, \"p = 4 (output)\" 3)\nset ytics 1\nunset key\n"
+             << "set style textbox opaque noborder\n"
+             << "set label \"one butterfly (p = 2, t = 1):\\ny[1] = x[1] + i x[5]\\ny[3] = x[1] − i x[5]\" at 3.25, 6.5 front boxed tc rgb '#d9822b'\n"
+             << "plot 'butterfly.dat' index 0 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#9db8d9' lw 1.5, \\\n"
+             << "     '' index 1 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#d9822b' lw 3.5, \\\n"
+             << "     '' index 0 using 1:2 with points pt 7 ps 1.5 lc rgb '#222222', '' index 0 using 3:4 with points pt 7 ps 1.5 lc rgb '#222222'\n";
+}
+
+// The vectors of the lighting model at a point of a wave (a cut through x, y): T, N from step03's
+// normals.hpp, V to the eye, L to the sun, H halfway, R the reflection of V.
+void lighting_vectors(const fs::path& dir) {
+    Figure f(dir, "lighting_vectors");
+    const std::vector<step02::DirectionalWave> waves{{0.0, 12.0, 1.0, 0.0}};  // along +x, 12 m, 1 m high
+    f.data << "# x  height\n";
+    for (int i = 0; i <= 300; ++i) {
+        const double x = -10 + 20.0 * i / 300;
+        f.data << x << ' ' << step03::height_and_gradient(waves, x, 0, 0).height << '\n';
+    }
+    const double x0 = 1.5;
+    const step03::HeightGradient g = step03::height_and_gradient(waves, x0, 0, 0);
+    const Vec3 t = step03::normalize(step03::tangent(g)), n = step03::normal(g);
+    const Vec3 v = step03::normalize({-0.82, 0.57, 0}), l = step03::normalize({0.77, 0.64, 0});
+    const Vec3 h = step03::normalize({v.x + l.x, v.y + l.y, v.z + l.z});
+    const double vn = step03::dot(v, n);
+    const Vec3 r{2 * vn * n.x - v.x, 2 * vn * n.y - v.y, 0};
+    f.data << "\n\n# x y dx dy label\n";
+    const double length = 3.0;
+    const struct {
+        const char* label;
+        Vec3 d;
+    } arrows[] = {{"T", t}, {"N", n}, {"V (to the eye)", v}, {"L (to the sun)", l}, {"H", h}, {"R", r}};
+    for (const auto& a : arrows)
+        f.data << x0 << ' ' << g.height << ' ' << length * a.d.x << ' ' << length * a.d.y << " \"" << a.label << "\"\n";
+    f.script << R"gp(set title "The vectors of the lighting model at one point (step03's normals.hpp)"
+set xlabel "x (m)"
+set ylabel "y (m)"
+set size ratio -1
+set xrange [-6:8]
+set yrange [-2:5]
+unset key
+plot 'lighting_vectors.dat' index 0 using 1:2 with lines ls 1, \
+     '' index 1 using 1:2:3:4 with vectors head filled lw 2 lc rgb '#a33b8f', \
+     '' index 1 using ($1+$3*1.12):($2+$4*1.12):5 with labels tc rgb '#222222'
+)gp";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) return std::fprintf(stderr, "usage: figure_data OUT_DIR\n"), 2;
+    const fs::path dir = argv[1];
+    std::error_code error;
+    fs::create_directories(dir, error);
+    if (error) return std::fprintf(stderr, "figure_data: cannot make %s: %s\n", argv[1], error.message().c_str()), 1;
+    const std::vector<std::function<void(const fs::path&)>> figures{wave_profiles, jacobian_fold, spectra, cascade_bands,
+                                                                    fresnel,       butterfly,     lighting_vectors};
+    for (const auto& make : figures) make(dir);
+    std::printf("figure_data: %zu figures' data and scripts in %s\n", figures.size(), argv[1]);
+    return 0;
+}
