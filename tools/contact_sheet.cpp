@@ -19,8 +19,14 @@ int main(int argc, char** argv) {
     using namespace ocean_tools;
     const int margin = kSheetMargin, rows = argc - 3;
     Canvas canvas(sheet_width(w), sheet_height(rows, h), {24, 27, 32});
-    canvas.text(margin, 10, "rendered now (same camera and time)", {200, 205, 215}, 2);
-    canvas.text(2 * margin + w, 10, "the step's own screenshot", {200, 205, 215}, 2);
+    // Each header over its own column, at the size that fits the tile (they used to run into each
+    // other). The columns differ in camera for the steps whose screenshot has its own view
+    // (step05 and step06 look from a deck): the headers say so.
+    const char* headers[] = {"rendered now: one camera and time for all", "the step's own screenshot: its own view"};
+    for (int column = 0; column < 2; ++column) {
+        const int scale = Canvas::text_width(headers[column], 2) <= w ? 2 : 1;
+        canvas.text(sheet_tile_x(column, w), 10, headers[column], {200, 205, 215}, scale);
+    }
     for (int r = 0; r < rows; ++r) {
         const std::string entry = argv[3 + r];
         const auto bar1 = entry.find('|'), bar2 = entry.find('|', bar1 + 1);
