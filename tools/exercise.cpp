@@ -10,6 +10,7 @@
 #include "common/error.hpp"
 #include "common/gl.hpp"
 #include "common/shader.hpp"
+#include "step03_lighting/lighting.hpp"
 #include "step06_foam_sky/shading.hpp"
 
 #include <glm/vec4.hpp>
@@ -47,14 +48,19 @@ struct Exercise {
     std::function<Verdict(const fs::path& work)> check;
 };
 
-// Evaluates `expression` (GLSL, in terms of n, v, l, alpha) over 2048 random configurations of the
-// learner's shading.glsl and compares each to `reference`.
-Verdict check_shading(const fs::path& work, const std::string& expression,
-                      const std::function<double(const Vec3&, const Vec3&, const Vec3&, double)>& reference,
-                      double tolerance) {
-    const fs::path shader = work / ".check_shading.comp";
-    std::ofstream(shader) << "#version 450 core\nlayout(local_size_x = 64) in;\n#include \"shading.glsl\"\n"
-                             "layout(std430, binding = 0) readonly buffer In { vec4 inputs[]; };\n"
+using Reference = std::function<double(const Vec3& n, const Vec3& v, const Vec3& l, double alpha)>;
+
+// Evaluates `expression` (GLSL, in terms of n, v, l, alpha) with the learner's `include` (a file of
+// the work folder) at 2048 random normals, eyes and suns, after `set_uniforms`, and compares each
+// value with `reference`. With `fixed_sun`, l is that one direction (a chapter whose sun is a
+// uniform); otherwise anywhere, below the surface too.
+Verdict check_glsl(const fs::path& work, const std::string& include, const std::string& expression,
+                   const Reference& reference, double tolerance,
+                   const std::function<void(const ocean::ShaderProgram&)>& set_uniforms = {},
+                   const Vec3* fixed_sun = nullptr) {
+    const fs::path shader = work / ".check.comp";
+    std::ofstream(shader) << "#version 450 core\nlayout(local_size_x = 64) in;\n#include \"" << include << "\"\n"
+                          << "layout(std430, binding = 0) readonly buffer In { vec4 inputs[]; };\n"
                              "layout(std430, binding = 1) writeonly buffer Out { float outputs[]; };\n"
                              "void main() {\n    int i = int(gl_GlobalInvocationID.x);\n"
                              "    vec3 n = inputs[3 * i].xyz, v = inputs[3 * i + 1].xyz, l = inputs[3 * i + 2].xyz;\n"
@@ -74,7 +80,7 @@ Verdict check_shading(const fs::path& work, const std::string& expression,
     };
     std::vector<glm::vec4> packed;
     for (int i = 0; i < kCount; ++i) {
-        const Vec3 n = direction(0.5), v = direction(0.02), l = direction(-1.0);
+        const Vec3 n = direction(0.5), v = direction(0.02), l = fixed_sun != nullptr ? *fixed_sun : direction(-1.0);
         packed.emplace_back(float(n.x), float(n.y), float(n.z), float(0.02 + 0.6 * unit(random)));
         packed.emplace_back(float(v.x), float(v.y), float(v.z), 0.0f);
         packed.emplace_back(float(l.x), float(l.y), float(l.z), 0.0f);
@@ -84,6 +90,7 @@ Verdict check_shading(const fs::path& work, const std::string& expression,
     glNamedBufferStorage(out.id(), GLsizeiptr(kCount * sizeof(float)), nullptr, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+    if (set_uniforms) set_uniforms(program);
     glUseProgram(program.id());
     glDispatchCompute(kCount / 64, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -102,9 +109,37 @@ Verdict check_shading(const fs::path& work, const std::string& expression,
         }
     }
     std::ostringstream detail;
-    detail << "worst difference " << worst << " (expected " << worst_expected << ", yours " << worst_got
-           << ") over " << kCount << " normals, eyes and suns";
+    detail << expression << ": worst difference " << worst << " (expected " << worst_expected << ", yours "
+           << worst_got << ") over " << kCount << " normals, eyes and suns";
     return {worst <= tolerance * std::max(largest, 1e-12), detail.str()};
+}
+
+// step03's light with the sun at `sun`, a white sun, the default water and shininess 64.
+step03::Light step03_light(const Vec3& sun) {
+    step03::Light light;
+    light.to_sun = sun;
+    light.sun = {1, 1, 1};
+    light.water = {0.05, 0.25, 0.35};
+    light.ambient = {0.02, 0.04, 0.06};
+    light.shininess = 64;
+    return light;
+}
+
+// step03's light_terms on the GPU, one term: its uniforms set as step03_light says.
+Verdict check_step03_term(const fs::path& work, const std::string& term, double (*pick)(const step03::LightTerms&)) {
+    static const Vec3 sun = step03::normalize({0.4, 0.5, -0.3});
+    const step03::Light light = step03_light(sun);
+    return check_glsl(
+        work, "lighting.glsl", "light_terms(n, v)." + term,
+        [&](const Vec3& n, const Vec3& v, const Vec3&, double) { return pick(step03::light_terms(n, v, light)); }, 1e-4,
+        [&](const ocean::ShaderProgram& p) {
+            p.set("u_to_sun", glm::vec3(float(sun.x), float(sun.y), float(sun.z)));
+            p.set("u_sun_color", glm::vec3(1.0f));
+            p.set("u_water_color", glm::vec3(float(light.water.r), float(light.water.g), float(light.water.b)));
+            p.set("u_ambient_color", glm::vec3(float(light.ambient.r), float(light.ambient.g), float(light.ambient.b)));
+            p.set("u_shininess", float(light.shininess));
+        },
+        &sun);
 }
 
 std::vector<Exercise> exercises() {
@@ -119,7 +154,7 @@ std::vector<Exercise> exercises() {
          "everything (1). Check both ends of your formula, and clamp cos theta: a normal bent past 90 degrees "
          "gives a negative one.",
          [](const fs::path& work) {
-             return check_shading(work, "fresnel_schlick(dot(n, v), 0.02)",
+             return check_glsl(work, "shading.glsl", "fresnel_schlick(dot(n, v), 0.02)",
                                   [](const Vec3& n, const Vec3& v, const Vec3&, double) {
                                       return step06::fresnel_schlick(step03::dot(n, v), 0.02);
                                   },
@@ -136,11 +171,25 @@ std::vector<Exercise> exercises() {
          "Fresnel takes V.H here, not N.V (the microfacets that reflect the sun face H); the 4 N.V in the "
          "denominator is N.V alone (N.L cancels with the irradiance); return vec3(0.0) for N.L <= 0 or N.V <= 0.",
          [](const fs::path& work) {
-             return check_shading(work, "specular_term(n, v, l, alpha, 0.02, vec3(1.0)).x",
+             return check_glsl(work, "shading.glsl", "specular_term(n, v, l, alpha, 0.02, vec3(1.0)).x",
                                   [](const Vec3& n, const Vec3& v, const Vec3& l, double alpha) {
                                       return step06::specular_factor(n, v, l, alpha, 0.02, Microfacet::Ggx);
                                   },
                                   1e-4);
+         }},
+        {"step03_lighting", 1, "Lambert and Blinn-Phong", "lighting.glsl", "LightTerms light_terms(vec3 normal, vec3 to_eye) {",
+         "    // TODO (exercise 1): ambient, Lambert diffuse and Blinn-Phong specular.\n"
+         "    LightTerms t;\n    t.ambient = u_ambient_color;\n    t.diffuse = vec3(0.0);\n    t.specular = vec3(0.0);\n"
+         "    return t;\n",
+         "Write light_terms: diffuse = water * sun * max(N.L, 0) (Lambert); specular = sun * max(N.H, 0)^shininess "
+         "with the halfway vector H = normalize(V + L), and no specular when the sun is behind the surface "
+         "(N.L <= 0). Without them the sea is flat ambient colour.",
+         "H is normalize(to_eye + to_sun), the direction halfway between eye and sun, not the reflection of either; "
+         "the specular needs N.L > 0 (a sun below the surface makes no glint) even where N.H is large.",
+         [](const fs::path& work) {
+             const Verdict diffuse = check_step03_term(work, "diffuse.y", [](const step03::LightTerms& t) { return t.diffuse.g; });
+             if (!diffuse.pass) return diffuse;
+             return check_step03_term(work, "specular.x", [](const step03::LightTerms& t) { return t.specular.r; });
          }},
     };
 }
