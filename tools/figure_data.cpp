@@ -113,6 +113,58 @@ std::vector<double> one_mode_profile(double steepness, std::vector<double>* x_ou
     return heights;
 }
 
+// The bridge from step04 (step05's README): one wave is one pair of lattice points, k and -k,
+// holding conjugate numbers; the lattice 2 pi n / L makes every wave fit the tile a whole number
+// of times. The height is step05's simulate_cpu of that single pair on a 64 m tile.
+void spectrum_lattice(const fs::path& dir) {
+    Figure f(dir, "spectrum_lattice");
+    step05::InitialSpectrum s;
+    s.n = 16;
+    s.patch_size = 64;
+    s.h0.assign(std::size_t(s.n) * s.n, 0.0);
+    s.omega.assign(s.h0.size(), 0.0);
+    s.density.assign(s.h0.size(), 0.0);
+    const int i = 2, j = 1;  // k = (2 pi 2 / 64, 2 pi 1 / 64): two crests across x, one across z
+    s.h0[std::size_t(j) * s.n + i] = 0.5;
+    const step05::OceanMaps maps = step05::simulate_cpu(s, 0.0);
+    f.data << "# kx kz: the lattice (N = 16, L = 64 m)\n";
+    for (int b = 0; b < s.n; ++b)
+        for (int a = 0; a < s.n; ++a)
+            f.data << step05::wavenumber(a, s.n, s.patch_size) << ' ' << step05::wavenumber(b, s.n, s.patch_size) << '\n';
+    const double kx = step05::wavenumber(i, s.n, s.patch_size), kz = step05::wavenumber(j, s.n, s.patch_size);
+    f.data << "\n\n# the wave's two points: k, holding A/2, and -k, holding its conjugate\n"
+           << kx << ' ' << kz << "\n" << -kx << ' ' << -kz << "\n";
+    f.data << "\n\n# x z height: the real wave those two points make, on the tile\n";
+    for (int b = 0; b < s.n; ++b) {
+        for (int a = 0; a < s.n; ++a)
+            f.data << a * s.patch_size / s.n << ' ' << b * s.patch_size / s.n << ' '
+                   << maps[step05::Height][std::size_t(b) * s.n + std::size_t(a)] << '\n';
+        f.data << '\n';
+    }
+    f.script << R"gp(set terminal pngcairo size 1000,460 font "DejaVu Sans,12" linewidth 1.5
+set output 'spectrum_lattice.png'
+set multiplot layout 1,2 title "One wave = one pair of points of the spectrum (step05's simulate\\_cpu, N = 16, L = 64 m)"
+set title "the lattice k = 2π(n, m)/L: h̃ is zero except at k and −k"
+set xlabel "k_x (rad/m)"
+set ylabel "k_z (rad/m)"
+set size ratio -1
+set key below
+plot 'spectrum_lattice.dat' index 0 using 1:2 with points pt 7 ps 0.5 lc rgb '#bbbbbb' title "the grid's wavevectors",      '' index 1 every ::0::0 using 1:2 with points pt 7 ps 2 lc rgb '#1f5fa8' title "k: A/2 e^{iφ}",      '' index 1 every ::1::1 using 1:2 with points pt 7 ps 2 lc rgb '#d9822b' title "−k: its conjugate"
+set title "their sum: a real wave fitting the tile 2 × 1 times"
+set xlabel "x (m)"
+set ylabel "z (m)"
+set xrange [0:60]
+set yrange [0:60]
+set palette defined (-1 '#0b2e59', 0 '#6fa8dc', 1 '#ffffff')
+set cblabel "height (m)"
+unset key
+set view map
+set pm3d map interpolate 4,4
+splot 'spectrum_lattice.dat' index 2 using 1:2:3 with pm3d
+unset multiplot
+)gp";
+}
+
 // The fold itself: where lambda k A > 1 the surface crosses over itself, and J < 0 marks it.
 void jacobian_fold(const fs::path& dir) {
     Figure f(dir, "jacobian_fold");
@@ -306,8 +358,8 @@ int main(int argc, char** argv) {
     std::error_code error;
     fs::create_directories(dir, error);
     if (error) return std::fprintf(stderr, "figure_data: cannot make %s: %s\n", argv[1], error.message().c_str()), 1;
-    const std::vector<std::function<void(const fs::path&)>> figures{wave_profiles, jacobian_fold, spectra, cascade_bands,
-                                                                    fresnel,       butterfly,     lighting_vectors};
+    const std::vector<std::function<void(const fs::path&)>> figures{
+        wave_profiles, spectrum_lattice, jacobian_fold, spectra, cascade_bands, fresnel, butterfly, lighting_vectors};
     for (const auto& make : figures) make(dir);
     std::printf("figure_data: %zu figures' data and scripts in %s\n", figures.size(), argv[1]);
     return 0;
