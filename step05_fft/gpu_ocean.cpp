@@ -190,6 +190,11 @@ void GpuOcean::simulate(double time, Backend backend, float choppiness, ocean::G
 
 namespace {
 
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
 template <class Work>
 double median_ms(int repeats, Work work) {
     std::vector<double> ms;
@@ -200,8 +205,7 @@ double median_ms(int repeats, Work work) {
         glFinish();
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
-    std::sort(ms.begin(), ms.end());
-    return ms[ms.size() / 2];
+    return median(ms);
 }
 
 std::string format_ms(const char* label, double ms) {
@@ -241,10 +245,6 @@ void GpuOcean::simulate_auto(double time, float choppiness, ocean::GpuTimers* ti
     (trial == Backend::Fftw ? auto_.fftw_ms : auto_.gpu_fft_ms)
         .push_back(median_ms(1, [&] { simulate(time, trial, choppiness, timers); }));
     if (int(auto_.gpu_fft_ms.size()) < kAutoTrialFrames || int(auto_.fftw_ms.size()) < kAutoTrialFrames) return;
-    const auto median = [](std::vector<double> v) {
-        std::sort(v.begin(), v.end());
-        return v[v.size() / 2];
-    };
     const double gpu = median(auto_.gpu_fft_ms), cpu = median(auto_.fftw_ms);
     auto_.chosen = cpu < gpu ? Backend::Fftw : Backend::GpuFft;
     auto_.decided = true;

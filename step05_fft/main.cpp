@@ -105,10 +105,9 @@ private:
         ocean->set("u_background", step03::srgb_to_linear(clear));
         gpu_->bind_maps(*ocean);
         // Only the grid's chunks that may be in view (the plane reaches the horizon all round, the
-        // view sees a wedge of it): five standard deviations of the height, and as much again
-        // times the choppiness sideways, bound how far a vertex moves (as step06's culling).
-        const float largest_displacement = 5.0f * height_sigma_ * (1.0f + ocean_params_.choppiness) + 1.0f;
-        draw_grid(*ocean, grid_, wireframe_, cull_ ? largest_displacement : -1.0f);
+        // view sees a wedge of it), widened by how far a vertex can move.
+        const double margin = step05::largest_displacement(double(height_sigma_) * height_sigma_, ocean_params_.choppiness);
+        draw_grid(*ocean, grid_, wireframe_, cull_ ? float(margin) : -1.0f);
     }
 
     void draw_map_view() {

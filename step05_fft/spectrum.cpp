@@ -230,6 +230,10 @@ InitialSpectrum initial_spectrum(const SpectrumParams& p) {
 
 double resolved_variance(const SpectrumParams& p) { return resolved_moment(p, 0); }
 
+double largest_displacement(double height_variance, double choppiness) {
+    return 5 * std::sqrt(height_variance) * (1 + choppiness) + 1;
+}
+
 double resolved_slope_variance(const SpectrumParams& p) { return resolved_moment(p, 2); }
 
 double resolved_moment(const SpectrumParams& p, int power) {

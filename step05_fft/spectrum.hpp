@@ -133,6 +133,10 @@ InitialSpectrum initial_spectrum(const SpectrumParams& p);
 
 // sum over resolved modes of Phi(k) dk^2: the expected variance of the height field, m^2.
 double resolved_variance(const SpectrumParams& p);
+// A bound on how far any point of the sea moves from rest, metres, for frustum culling (step05's
+// grid chunks, step06's patches): five standard deviations of the height, as much again times
+// the choppiness sideways (|D~| = |h~| mode by mode), and a metre.
+double largest_displacement(double height_variance, double choppiness);
 // sum over resolved modes of |k|^2 Phi(k) dk^2: the expected variance of the slope, summed over
 // both axes (E[(dh/dx)^2 + (dh/dz)^2]).
 double resolved_slope_variance(const SpectrumParams& p);

@@ -106,10 +106,6 @@ private:
             gpu_->set_spectra(pointers);
             foam_->resize(ocean_params_.spectrum().resolution);
         }
-        // A bound on how far any point moves, for the frustum culling: five standard deviations of
-        // the height, and as much again times the choppiness sideways (|D~| = |h~| mode by mode).
-        // Every frame: the choppiness may change without the spectrum changing.
-        max_displacement_ = float(5 * std::sqrt(height_variance_) * (1 + ocean_params_.choppiness)) + 1.0f;
         if (look_.sky_image != sky_image_loaded_) {
             sky_image_loaded_ = look_.sky_image;
             if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
@@ -228,7 +224,9 @@ private:
         mesh->set("u_patch_size", patch_size_);
         mesh->set("u_tess_scale", tess_scale_);
         mesh->set("u_frustum", ocean::frustum_planes(view_projection));
-        mesh->set("u_max_displacement", max_displacement_);
+        // The patches' boxes widened by how far the sea can move them (the choppiness may change
+        // without the spectrum changing, so every frame).
+        mesh->set("u_max_displacement", float(step05::largest_displacement(height_variance_, ocean_params_.choppiness)));
         mesh->set("u_cull", int(cull_));
         glEnable(GL_DEPTH_TEST);
         glUseProgram(mesh->id());
@@ -357,7 +355,7 @@ private:
     std::string sky_image_loaded_;
     step06::FoamSettings foam_settings_;
     unsigned spectrum_built_for_ = 0;
-    float max_displacement_ = 10, tess_scale_ = 12, patch_size_ = 16;
+    float tess_scale_ = 12, patch_size_ = 16;
     double height_variance_ = 0;         // m^2, of the summed cascades
     std::vector<float> unresolved_by_level_;  // kMaxMipLevels per cascade
     step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with

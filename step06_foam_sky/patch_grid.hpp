@@ -4,7 +4,6 @@
 
 #include "common/gl.hpp"
 
-#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
 #include <vector>

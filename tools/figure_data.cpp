@@ -44,6 +44,22 @@ struct Figure {
     }
 };
 
+// A spectrum of n x n modes on a 64 m tile holding one travelling wave of the given amplitude at
+// grid index (i, j): h0 = amplitude / 2 there (the evolution adds its conjugate at -k, so the wave
+// is a cosine of that amplitude) and omega from the deep-water dispersion relation.
+step05::InitialSpectrum single_mode(int n, int i, int j, double amplitude) {
+    step05::InitialSpectrum s;
+    s.n = n;
+    s.patch_size = 64;
+    s.h0.assign(std::size_t(n) * std::size_t(n), 0.0);
+    s.omega.assign(s.h0.size(), 0.0);
+    s.density.assign(s.h0.size(), 0.0);
+    const std::size_t at = std::size_t(j) * std::size_t(n) + std::size_t(i);
+    s.h0[at] = amplitude / 2;
+    s.omega[at] = step05::dispersion(std::hypot(step05::wavenumber(i, n, 64), step05::wavenumber(j, n, 64)), 1000);
+    return s;
+}
+
 // step04's two wave shapes over two periods, and step05's choppy displacement of one mode at three
 // steepnesses (lambda k A = 0.5, 0.9 and 1.3: past 1 the crest folds over itself).
 std::vector<double> one_mode_profile(double steepness, std::vector<double>* x_out, std::vector<double>* jacobian,
@@ -89,16 +105,10 @@ unset multiplot
 // height, and J = 1 + lambda dDx/dx along the row z = 0.
 std::vector<double> one_mode_profile(double steepness, std::vector<double>* x_out, std::vector<double>* jacobian,
                                      std::vector<double>* rest_x) {
-    step05::InitialSpectrum s;
-    s.n = 256;  // a vertex every 25 cm
-    s.patch_size = 64;
-    s.h0.assign(std::size_t(s.n) * s.n, 0.0);
-    s.omega.assign(s.h0.size(), 0.0);
-    s.density.assign(s.h0.size(), 0.0);
-    const int i = 4;  // k = 2 pi 4 / 64 m: a 16 m wave along +x
-    const double k = step05::wavenumber(i, s.n, s.patch_size), amplitude = 1.0;
-    s.h0[std::size_t(i)] = amplitude / 2;  // the evolution adds its conjugate: a cosine of amplitude 1
-    s.omega[std::size_t(i)] = step05::dispersion(k, 1000);
+    const int i = 4;  // k = 2 pi 4 / 64 m: a 16 m wave along +x, a vertex every 25 cm
+    const double amplitude = 1.0;
+    const step05::InitialSpectrum s = single_mode(256, i, 0, amplitude);
+    const double k = step05::wavenumber(i, s.n, s.patch_size);
     const step05::OceanMaps maps = step05::simulate_cpu(s, 0.0);
     const double lambda = steepness / (k * amplitude);
     std::vector<double> heights;
@@ -118,14 +128,8 @@ std::vector<double> one_mode_profile(double steepness, std::vector<double>* x_ou
 // of times. The height is step05's simulate_cpu of that single pair on a 64 m tile.
 void spectrum_lattice(const fs::path& dir) {
     Figure f(dir, "spectrum_lattice");
-    step05::InitialSpectrum s;
-    s.n = 16;
-    s.patch_size = 64;
-    s.h0.assign(std::size_t(s.n) * s.n, 0.0);
-    s.omega.assign(s.h0.size(), 0.0);
-    s.density.assign(s.h0.size(), 0.0);
     const int i = 2, j = 1;  // k = (2 pi 2 / 64, 2 pi 1 / 64): two crests across x, one across z
-    s.h0[std::size_t(j) * s.n + i] = 0.5;
+    const step05::InitialSpectrum s = single_mode(16, i, j, 1.0);
     const step05::OceanMaps maps = step05::simulate_cpu(s, 0.0);
     f.data << "# kx kz: the lattice (N = 16, L = 64 m)\n";
     for (int b = 0; b < s.n; ++b)

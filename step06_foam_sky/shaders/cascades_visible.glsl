@@ -95,7 +95,8 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
         // the normal only through its choppy term) once, over the whole footprint. texture(), not
         // textureGrad: llvmpipe picks one level per 2 x 2 pixels for implicit derivatives and one
         // per pixel for explicit ones, which made the pass 30 % slower. Everything that decides
-        // the loop comes from coarse (per 2 x 2) derivatives, so the 2 x 2 pixels agree on it.
+        // the loop comes from the recorded coarse (per 2 x 2) derivatives, so the 2 x 2 pixels
+        // agree on it.
         float bias = log2(footprint / implicit_long);
         vec4 slopes = vec4(0.0);
         for (int i = 0; i < taps; ++i)
@@ -112,10 +113,10 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
 
 // Foam at rest position p (fragment shaders): the finest level that holds p, blended into the
 // next one over the outer tenth of its window, none beyond the largest window. Every level is
-// read, in uniform control flow (so texture() may take its level from the pixel's neighbours):
-// skipping the levels a pixel does not need saved nothing where neighbouring pixels run together
-// (llvmpipe runs masked-off branches anyway), and its textureGrad, one level per pixel, cost
-// llvmpipe's ocean pass 18 ms of its 130 for the foam.
+// read, in uniform control flow (so texture() may take its level from the pixel's neighbours, with
+// the bias): skipping the levels a pixel does not need saved nothing where neighbouring pixels run
+// together (llvmpipe runs masked-off branches anyway), and the textureGrad that the branches
+// needed takes a level per pixel, which is slower.
 float foam_at(vec2 p, float bias) {
     float foam = 0.0, left = 1.0;  // left: the weight the finer levels did not take
     for (int level = 0; level < FOAM_LEVELS; ++level) {
