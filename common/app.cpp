@@ -136,13 +136,13 @@ int App::run_loop(const Options& options) {
     all_steps_ = repository_steps();
     timers_.set_enabled(options.bench);
     framebuffer_size_ = context_->framebuffer_size();
-    init_imgui();
+    panel_visible_ = !headless || options.show_ui;
+    init_imgui(panel_visible_);
     init();
 
     const int frame_limit = options.frames > 0 ? options.frames : (headless ? 10 : 0);
     FrameClock clock(options);
     time_ = clock.start_time();
-    panel_visible_ = !headless || options.show_ui;
     Image screenshot;
     int frame = 0;
     CloseOnSignal signals;
@@ -188,7 +188,7 @@ void App::frame(const Options& options, int frame, double dt, double real_dt) {
     if (options.exercise_minimise) framebuffer_size_ = exercise_minimise(*context_, frame, framebuffer_size_);
     if (camera_enabled_) camera_.apply(read_camera_input(), float(real_dt));
 
-    ImGui_ImplOpenGL3_NewFrame();
+    if (imgui_renderer_ready_) ImGui_ImplOpenGL3_NewFrame();
     if (context_->window() != nullptr) {
         ImGui_ImplGlfw_NewFrame();
     } else {
@@ -214,7 +214,7 @@ void App::frame(const Options& options, int frame, double dt, double real_dt) {
         } else {
             render_frame();
         }
-        if (panel_visible_) {
+        if (panel_visible_ && imgui_renderer_ready_) {
             bind_target();
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
         }
@@ -262,24 +262,34 @@ void App::on_scroll(GLFWwindow* window, double /*dx*/, double dy) {
     if (app != nullptr && !ImGui::GetIO().WantCaptureMouse) app->scroll_accumulated_ += float(dy);
 }
 
-void App::init_imgui() {
+// ImGui frames run in every run (the keys F1, F5, Esc are read through them), but the panel is
+// only drawn in a window or with --ui. ImGui's OpenGL 3 backend is started only then: in 1.86 it loads its GL
+// functions through libGL.so.1 and GLX, which a GPU server rendering through EGL may not have.
+void App::init_imgui(bool draw_panel) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini files left in the working directory
     ImGui::StyleColorsDark();
+    imgui_ready_ = true;
     if (GLFWwindow* window = context_->window()) {
         glfwSetWindowUserPointer(window, this);
         glfwSetScrollCallback(window, &App::on_scroll);  // before ImGui, which chains to it
         ImGui_ImplGlfw_InitForOpenGL(window, true);
     }
+    if (!draw_panel) {
+        ImGui::GetIO().Fonts->Build();  // what the renderer's NewFrame would do; no texture needed
+        return;
+    }
     if (!ImGui_ImplOpenGL3_Init("#version 450 core"))
-        throw Error("ImGui's OpenGL 3 backend cannot start on this context");
-    imgui_ready_ = true;
+        throw Error("ImGui's OpenGL 3 backend cannot start: it loads GL through libGL.so.1 "
+                    "(install libgl1), even when the context comes from EGL");
+    imgui_renderer_ready_ = true;
 }
 
 void App::shutdown_imgui() {
     if (!imgui_ready_) return;
-    ImGui_ImplOpenGL3_Shutdown();
+    if (imgui_renderer_ready_) ImGui_ImplOpenGL3_Shutdown();
+    imgui_renderer_ready_ = false;
     if (context_ && context_->window() != nullptr) ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
     imgui_ready_ = false;

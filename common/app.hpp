@@ -124,7 +124,7 @@ private:
     int run_loop(const Options& options);
     void frame(const Options& options, int frame, double dt, double real_dt);
     void write_outputs(const Options& options, const struct Image& screenshot, int frames, double bench_seconds);
-    void init_imgui();
+    void init_imgui(bool draw_panel);
     void shutdown_imgui();
     void draw_panel(float frame_ms);
     CameraInput read_camera_input();
@@ -145,6 +145,7 @@ private:
     bool paused_ = false;
     bool panel_visible_ = true;
     bool imgui_ready_ = false;
+    bool imgui_renderer_ready_ = false;  // ImGui's OpenGL 3 backend, only where the panel is drawn
     float scroll_accumulated_ = 0;
     glm::dvec2 last_mouse_{0.0};
     std::string preset_path_ = "preset.txt";

@@ -79,6 +79,36 @@ void Sky::render(const SkySettings& s) {
     image_rendered_ = bool(equirect_);
 }
 
+std::uint32_t pcg_hash(std::uint32_t v) {
+    const std::uint32_t state = v * 747796405u + 2891336453u;
+    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+double lattice_hash(int x, int y) {
+    return double(pcg_hash(std::uint32_t(x) + pcg_hash(std::uint32_t(y))) >> 8u) / 16777216.0;
+}
+
+double value_noise(glm::dvec2 p) {
+    const double fx = std::floor(p.x), fy = std::floor(p.y);
+    const int x = int(fx), y = int(fy);
+    const double ax = p.x - fx, ay = p.y - fy;
+    const double ux = ax * ax * (3 - 2 * ax), uy = ay * ay * (3 - 2 * ay);
+    const auto mix = [](double a, double b, double t) { return a + (b - a) * t; };
+    return mix(mix(lattice_hash(x, y), lattice_hash(x + 1, y), ux),
+               mix(lattice_hash(x, y + 1), lattice_hash(x + 1, y + 1), ux), uy);
+}
+
+double clouds(glm::dvec2 p) {
+    double sum = 0, amplitude = 0.5;
+    for (int octave = 0; octave < 5; ++octave) {
+        sum += amplitude * value_noise(p);
+        p = p * 2.03 + glm::dvec2(17.0, 9.0);
+        amplitude *= 0.5;
+    }
+    return sum;
+}
+
 glm::vec3 cube_texel_direction(int face, int x, int y, int size) {
     const float s = 2.0f * (float(x) + 0.5f) / float(size) - 1.0f, t = 2.0f * (float(y) + 0.5f) / float(size) - 1.0f;
     glm::vec3 d;

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -43,6 +44,13 @@ private:
     ocean::Texture cubemap_, equirect_;
     bool image_rendered_ = false;
 };
+
+// sky.glsl's clouds, the CPU reference: lattice_hash(x, y) in [0, 1) from integers alone (PCG),
+// value_noise smooth between the lattice points, clouds five octaves of it (0 to 31/32).
+std::uint32_t pcg_hash(std::uint32_t v);
+double lattice_hash(int x, int y);
+double value_noise(glm::dvec2 p);
+double clouds(glm::dvec2 p);
 
 // The direction through the centre of texel (x, y) of cubemap face `face` (the GL layout,
 // as cube_faces.glsl): the tests find the sun's texel with it.

@@ -32,19 +32,22 @@ void main() {
     float dk = 6.2831853 / u_patch_size[cascade];
     vec2 k = dk * vec2(i < n / 2 ? i : i - n, j < n / 2 ? j : j - n);
     float length_k = length(k);
+    // The four packed pairs a + i b (real field a, real field b), with u = k/|k|:
+    //     h + i Dx         = h + i (i ux h)              = (1 - ux) h
+    //     Dz + i dh/dx     = i uz h + i (i kx h)         = -kx h + uz (i h)
+    //     dh/dz + i dDx/dx = i kz h + i (i kx)(i ux h)   = (kz - kx ux) (i h)
+    //     dDz/dz + i dDx/dz = i kz (i uz h) + i (i kz)(i ux h) = -uz (kz h + kx (i h))
+    // written as real multiples of h and i h. Not for speed: NVIDIA's driver (580, H100) compiled
+    // the nested i (i ...) swizzles of the straightforward version with x and y exchanged, and
+    // FftTest.EvolvedSpectraMatchTheFormulas caught it there (llvmpipe was right).
     vec2 pairs[4] = vec2[4](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
     if (length_k > 0.0) {
-        vec2 i_h = vec2(-h.y, h.x);            // i h~
-        vec2 dx = i_h * (k.x / length_k);      // +i kx/|k| h~: points crowd to the crests
-        vec2 dz = i_h * (k.y / length_k);
-        vec2 sx = i_h * k.x, sz = i_h * k.y;   // i k h~
-        vec2 dxx = -h * (k.x * k.x / length_k), dzz = -h * (k.y * k.y / length_k);  // i kx (i kx/|k| h~)
-        vec2 dxz = -h * (k.x * k.y / length_k);
-        // a + i b for each pair (real field a, real field b)
-        pairs[0] = h + vec2(-dx.y, dx.x);
-        pairs[1] = dz + vec2(-sx.y, sx.x);
-        pairs[2] = sz + vec2(-dxx.y, dxx.x);
-        pairs[3] = dzz + vec2(-dxz.y, dxz.x);
+        vec2 u = k / length_k;
+        vec2 i_h = vec2(-h.y, h.x);
+        pairs[0] = (1.0 - u.x) * h;
+        pairs[1] = -k.x * h + u.y * i_h;
+        pairs[2] = (k.y - k.x * u.x) * i_h;
+        pairs[3] = -u.y * (k.y * h + k.x * i_h);
     }
     for (int f = 0; f < 4; ++f) spectra[field_base(cascade, f) + j * n + i] = pairs[f];
 }

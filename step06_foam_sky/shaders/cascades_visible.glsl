@@ -86,7 +86,17 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
         // it to its mean, which is zero (a periodic tile has no mean slope or displacement):
         // skipping it changes nothing but its variance, and saves its fetches (the small cascades,
         // over most of the distant sea).
-        if (footprint >= 0.5 * u_patch_sizes[c]) {
+        bool averaged_away = footprint >= 0.5 * u_patch_sizes[c];
+#ifdef GL_ARB_shader_group_vote
+        // Skipped only where the whole group agrees: the texture() calls below take their level
+        // from the 2 x 2 quad, which must all run them. A quad straddling two triangles of the
+        // mesh (thin ones near the horizon) has two footprints; where only some of its pixels
+        // skipped, NVIDIA's driver gave the others undefined levels: dark dashes along the
+        // horizon (llvmpipe runs the whole quad anyway). A pixel that reads a cascade it could
+        // skip reads its mean, about zero, and the variance below is the whole cascade's.
+        averaged_away = allInvocationsARB(averaged_away);
+#endif
+        if (averaged_away) {
             s.unresolved_slope_variance += u_unresolved_slope_variance[c * MIP_LEVELS + MIP_LEVELS - 1];
             continue;
         }

@@ -12,12 +12,25 @@ uniform vec2 u_cloud_offset;    // metres the clouds have drifted
 uniform float u_sun_size;       // angular radius, radians
 uniform float u_sun_disc_gain;  // disc radiance / sunlight
 
-float hash(vec2 p) { return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453); }
+// A random number in [0, 1) for each lattice point, from integers alone (PCG's output function:
+// Jarzynski and Olano, "Hash Functions for GPU Rendering", 2020), so every GPU draws the same
+// clouds. The usual fract(sin(dot(p, ...)) * 43758.5453) depends on how the GPU computes sin of
+// arguments in the ten thousands: an H100 and llvmpipe drew different skies with it.
+// sky.hpp's lattice_hash is the CPU reference.
+uint pcg_hash(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+float lattice_hash(ivec2 i) { return float(pcg_hash(uint(i.x) + pcg_hash(uint(i.y))) >> 8u) / 16777216.0; }
 
 float value_noise(vec2 p) {
-    vec2 i = floor(p), f = fract(p);
+    vec2 f = fract(p);
+    ivec2 i = ivec2(floor(p));
     vec2 u = f * f * (3.0 - 2.0 * f);
-    return mix(mix(hash(i), hash(i + vec2(1, 0)), u.x), mix(hash(i + vec2(0, 1)), hash(i + vec2(1, 1)), u.x), u.y);
+    return mix(mix(lattice_hash(i), lattice_hash(i + ivec2(1, 0)), u.x),
+               mix(lattice_hash(i + ivec2(0, 1)), lattice_hash(i + ivec2(1, 1)), u.x), u.y);
 }
 
 float clouds(vec2 p) {

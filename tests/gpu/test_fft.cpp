@@ -3,15 +3,18 @@
 // Relative error = max |gpu - reference| / max |reference|, per field; limit 1e-4.
 #include "step05_fft/gpu_ocean.hpp"
 #include "tests/gpu/gl_test_context.hpp"
+#include "common/constants.hpp"
 #include "tests/gpu/program_cache.hpp"
 
 #include <cmath>
 #include <memory>
 #include <random>
+#include <string>
 
 namespace {
 
 using namespace step05;
+using ocean::kPi;
 
 struct FftTest : ocean_test::GlTest {
     ocean_test::ProgramCache cache;
@@ -69,6 +72,64 @@ TEST_F(FftTest, GpuFftMatchesFftwOnRandomInput) {
             EXPECT_LT(error, 1e-4) << "N = " << n << ", layer " << layer;
             if (layer == 0) std::printf("N = %d: GPU FFT vs FFTW relative error %.2e\n", n, error);
         }
+    }
+}
+
+// evolve.comp alone, against the chapter's formulas in double: every mode's four packed spectra
+// (h + i Dx, Dz + i dh/dx, dh/dz + i dDx/dx, dDz/dz + i dDx/dz) at three times. Run before the
+// transforms, it says which of the two stages is wrong when the backends disagree with the CPU.
+TEST_F(FftTest, EvolvedSpectraMatchTheFormulas) {
+    const int n = 64;
+    SpectrumParams p;
+    p.resolution = n;
+    p.seed = 3;
+    const InitialSpectrum s = initial_spectrum(p);
+    GpuOcean ocean(factory());
+    ocean.set_spectra({&s});
+    const std::size_t area = std::size_t(n) * n;
+    for (double t : {0.0, 2.5, 86400.0 * 3 + 0.25}) {
+        ocean.evolve(t);
+        std::vector<float> gpu(area * 4 * 2);
+        glGetNamedBufferSubData(ocean.spectra_buffer(), 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
+        double worst[4] = {0, 0, 0, 0}, largest = 0;
+        std::string where[4];  // the worst mode of each field, for the failure message
+        int wrong[4] = {0, 0, 0, 0};  // modes off by more than 1e-5 of the largest value
+        const double dk = 2 * kPi / s.patch_size;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const std::size_t here = std::size_t(j) * n + i;
+                const std::size_t mirror = std::size_t((n - j) % n) * n + std::size_t((n - i) % n);
+                const double phase = std::fmod(s.omega[here] * t, 2 * kPi);
+                const Complex turn = std::polar(1.0, -phase);
+                const Complex h = s.h0[here] * turn + std::conj(s.h0[mirror]) * std::conj(turn);
+                const double kx = dk * (i < n / 2 ? i : i - n), kz = dk * (j < n / 2 ? j : j - n);
+                const double k = std::hypot(kx, kz);
+                const Complex I(0, 1);
+                Complex packed[4] = {0.0, 0.0, 0.0, 0.0};
+                if (k > 0) {
+                    const Complex dx = I * (kx / k) * h, dz = I * (kz / k) * h;
+                    packed[0] = h + I * dx;
+                    packed[1] = dz + I * (I * kx * h);
+                    packed[2] = I * kz * h + I * (I * kx * dx);
+                    packed[3] = I * kz * dz + I * (I * kz * dx);
+                }
+                for (int f = 0; f < 4; ++f) {
+                    const std::size_t at = 2 * (std::size_t(f) * area + here);
+                    const double error = std::abs(Complex(gpu[at], gpu[at + 1]) - packed[f]);
+                    if (error > 1e-5 * 0.25) ++wrong[f];
+                    if (error > worst[f]) {
+                        worst[f] = error;
+                        where[f] = "mode (" + std::to_string(i) + ", " + std::to_string(j) + "): GPU (" +
+                                   std::to_string(gpu[at]) + ", " + std::to_string(gpu[at + 1]) + "), expected (" +
+                                   std::to_string(packed[f].real()) + ", " + std::to_string(packed[f].imag()) + ")";
+                    }
+                    largest = std::max(largest, std::abs(packed[f]));
+                }
+            }
+        for (int f = 0; f < 4; ++f)
+            EXPECT_LT(worst[f] / largest, 1e-5) << "packed field " << f << ", t = " << t << ", " << wrong[f] << " modes off, worst at " << where[f];
+        std::printf("t = %g: evolved spectra, worst error per packed field %.1e %.1e %.1e %.1e of %.2e\n", t,
+                    worst[0] / largest, worst[1] / largest, worst[2] / largest, worst[3] / largest, largest);
     }
 }
 

@@ -6,11 +6,13 @@
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/look_params.hpp"
+#include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/tessellation.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <map>
 
 namespace {
@@ -248,6 +250,42 @@ TEST(Step06Tessellation, LevelFallsWithDistance) {
     EXPECT_EQ(step06::tessellation_level(1.0, 16, 12), 64.0);
     EXPECT_EQ(step06::tessellation_level(1e5, 16, 12), 1.0);
     EXPECT_EQ(step06::triangles_for_uniform_level(3.2), 2 * 4 * 4);
+}
+
+
+// The clouds' lattice hash behaves as uniform noise: over 256 x 256 lattice points (negative
+// ones too) its mean is 1/2 and its variance 1/12 (a uniform variable's), neighbours are
+// uncorrelated, and no value repeats more than chance allows. The clouds stay in [0, 31/32].
+TEST(Step06Clouds, LatticeHashIsUniformAndUncorrelated) {
+    double sum = 0, sum2 = 0, neighbours = 0;
+    int count = 0;
+    std::set<double> distinct;
+    for (int y = -128; y < 128; ++y)
+        for (int x = -128; x < 128; ++x) {
+            const double h = step06::lattice_hash(x, y);
+            ASSERT_GE(h, 0.0);
+            ASSERT_LT(h, 1.0);
+            sum += h;
+            sum2 += h * h;
+            neighbours += (h - 0.5) * (step06::lattice_hash(x + 1, y) - 0.5) + (h - 0.5) * (step06::lattice_hash(x, y + 1) - 0.5);
+            distinct.insert(h);
+            ++count;
+        }
+    const double mean = sum / count, variance = sum2 / count - mean * mean;
+    const double correlation = neighbours / (2 * count) / variance;
+    EXPECT_NEAR(mean, 0.5, 0.005);        // 4.5 standard errors (1/sqrt(12 x 65536) = 0.0011)
+    EXPECT_NEAR(variance, 1.0 / 12, 0.002);
+    EXPECT_LT(std::abs(correlation), 0.02);
+    EXPECT_GT(distinct.size(), std::size_t(count * 99 / 100));  // 2^24 values: few collisions
+    double lowest = 1, highest = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const double c = step06::clouds({i * 0.37 - 3000.0, i * 0.11 + 50.0});
+        lowest = std::min(lowest, c);
+        highest = std::max(highest, c);
+    }
+    EXPECT_GE(lowest, 0.0);
+    EXPECT_LE(highest, 31.0 / 32);
+    EXPECT_GT(highest - lowest, 0.4);  // it varies: clouds and gaps
 }
 
 }  // namespace
