@@ -65,6 +65,17 @@ double OceanMaps::jacobian(std::size_t index, double choppiness) const {
     return xx * zz - xz * xz;
 }
 
+std::array<double, 3> OceanMaps::normal(std::size_t index, double choppiness) const {
+    const double xx = 1 + choppiness * fields[DDxDx][index], zz = 1 + choppiness * fields[DDzDz][index];
+    const double xz = choppiness * fields[DDxDz][index];
+    const double along_x[3] = {xx, fields[SlopeX][index], xz}, along_z[3] = {xz, fields[SlopeZ][index], zz};
+    const std::array<double, 3> c{along_z[1] * along_x[2] - along_z[2] * along_x[1],
+                                  along_z[2] * along_x[0] - along_z[0] * along_x[2],
+                                  along_z[0] * along_x[1] - along_z[1] * along_x[0]};
+    const double length = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    return {c[0] / length, c[1] / length, c[2] / length};
+}
+
 ComplexField inverse_fft_2d(const ComplexField& input, int n) {
     static_assert(sizeof(Complex) == sizeof(fftw_complex), "std::complex<double> is fftw_complex");
     ComplexField output(input.size());

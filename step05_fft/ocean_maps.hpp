@@ -55,6 +55,10 @@ struct OceanMaps {
     const std::vector<double>& operator[](Field f) const { return fields[f]; }
     // J = (1 + l dDx/dx)(1 + l dDz/dz) - (l dDx/dz)^2 at cell `index`, for choppiness l.
     double jacobian(std::size_t index, double choppiness) const;
+    // The unit normal of the choppy surface at cell `index` (ocean_maps.glsl's choppy_normal):
+    // N = dP/dz x dP/dx with dP/dx = (1 + l dDx/dx, dh/dx, l dDx/dz), dP/dz = (l dDx/dz, dh/dz,
+    // 1 + l dDz/dz); with l = 0, step03's normalize(-dh/dx, 1, -dh/dz).
+    std::array<double, 3> normal(std::size_t index, double choppiness) const;
 };
 
 // Inverse 2D transforms of the four packed spectra with FFTW (double), unpacked into 8 fields.

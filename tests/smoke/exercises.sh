@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # exercises.sh EXERCISE_EXE REPO: every exercise's starter fails its check, and the chapter's own
-# code (the solution: the step's shader, copied over the learner's file) passes it. Schlick's
-# exercise also refuses the seed's slip, (1 - cos)^5 without F0.
+# code (the solution: the step's shader, copied over the learner's file) passes it. The checks
+# also refuse known slips: the seed's Fresnel without F0, the notes' slope without w a, and a
+# normal pointing into the water.
 set -u
 exe=$1 repo=$2
 work="$(mktemp -d)"
@@ -27,5 +28,15 @@ dir="$work/seed-fresnel"
 "$exe" prepare step06_foam_sky 1 "$dir" > /dev/null
 sed -i 's|    return 0.0;|    return pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);|' "$dir/shading.glsl"
 if "$exe" check step06_foam_sky 1 "$dir" > /dev/null 2>&1; then echo "FAIL: the seed's Fresnel passes"; status=1; fi
+# The notes' 2.2 slope, cos(x w + phase) without w a, must not pass step01's exercise 2.
+dir="$work/seed-slope"
+"$exe" prepare step01_sine2d 2 "$dir" > /dev/null
+sed -i 's|    return 0.0;|    return cos(x * u_waves[i].x + u_waves[i].z);|' "$dir/sine_sum.glsl"
+if "$exe" check step01_sine2d 2 "$dir" > /dev/null 2>&1; then echo "FAIL: the notes' slope without w a passes"; status=1; fi
+# T x B, the normal pointing into the water, must not pass step04's exercise 2.
+dir="$work/downward-normal"
+"$exe" prepare step04_fbm 2 "$dir" > /dev/null
+sed -i 's|    return vec3(0.0, 1.0, 0.0);|    return normalize(cross(vec3(1.0, gradient.x, 0.0), vec3(0.0, gradient.y, 1.0)));|' "$dir/fbm.glsl"
+if "$exe" check step04_fbm 2 "$dir" > /dev/null 2>&1; then echo "FAIL: the downward normal T x B passes"; status=1; fi
 [ "$count" -gt 0 ] || { echo "FAIL: no exercises listed"; status=1; }
 exit $status

@@ -1,11 +1,13 @@
 // Chapter 4's spectrum and its CPU transforms, in double precision.
 #include "step05_fft/ocean_maps.hpp"
 #include "step05_fft/spectrum.hpp"
+#include "step03_lighting/normals.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <random>
 #include <string>
 
 namespace {
@@ -369,6 +371,36 @@ TEST(Step05Validate, RefusesImpossibleParameters) {
     p.resolution = 64;
     p.depth = -1;
     EXPECT_NE(validate(p).find("depth"), std::string::npos);
+}
+
+// The choppy surface's normal: perpendicular to both tangents of P(p) = (p.x + l Dx, h, p.z + l Dz)
+// whatever the derivatives, of unit length, up where the surface has not folded (J > 0), and
+// step03's normal when l = 0.
+TEST(Step05Normal, IsPerpendicularToTheTangentsAndStep03sWithoutChoppiness) {
+    std::mt19937 random(4);
+    std::uniform_real_distribution<double> uniform(-0.6, 0.6);
+    step05::OceanMaps maps;
+    maps.n = 1;
+    for (auto& field : maps.fields) field.assign(1, 0.0);
+    for (int i = 0; i < 1000; ++i) {
+        for (step05::Field f : {step05::SlopeX, step05::SlopeZ, step05::DDxDx, step05::DDzDz, step05::DDxDz})
+            maps.fields[f][0] = uniform(random);
+        const double l = 1.3;
+        const auto n = maps.normal(0, l);
+        const double xx = 1 + l * maps.fields[step05::DDxDx][0], zz = 1 + l * maps.fields[step05::DDzDz][0];
+        const double xz = l * maps.fields[step05::DDxDz][0];
+        EXPECT_NEAR(n[0] * xx + n[1] * maps.fields[step05::SlopeX][0] + n[2] * xz, 0.0, 1e-12);  // . dP/dx
+        EXPECT_NEAR(n[0] * xz + n[1] * maps.fields[step05::SlopeZ][0] + n[2] * zz, 0.0, 1e-12);  // . dP/dz
+        EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-12);
+        if (maps.jacobian(0, l) > 0) {
+            EXPECT_GT(n[1], 0.0);
+        }
+        const auto flat = maps.normal(0, 0.0);
+        const step03::Vec3 expected = step03::normal({0.0, maps.fields[step05::SlopeX][0], maps.fields[step05::SlopeZ][0]});
+        EXPECT_NEAR(flat[0], expected.x, 1e-12);
+        EXPECT_NEAR(flat[1], expected.y, 1e-12);
+        EXPECT_NEAR(flat[2], expected.z, 1e-12);
+    }
 }
 
 }  // namespace
