@@ -18,3 +18,6 @@ pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET fftw3)    # libfftw3-dev: the CP
 pkg_check_modules(FFTWF REQUIRED IMPORTED_TARGET fftw3f)  # the same package: single precision, and
 find_library(FFTWF_THREADS fftw3f_threads REQUIRED)      # its threads (the FFTW backend, the floor)
 find_package(Threads REQUIRED)
+# libwebp-dev: tools/animate encodes the READMEs' animations (animated WebP, WebPAnimEncoder) and
+# reads them back (WebPAnimDecoder) to check them.
+pkg_check_modules(WEBP REQUIRED IMPORTED_TARGET libwebpmux libwebpdemux libwebp)

@@ -161,6 +161,7 @@ int App::run_loop(const Options& options) {
         }
         this->frame(options, frame, tick.dt, tick.real_dt);
         const bool last = frame_limit > 0 && frame + 1 == frame_limit;
+        if (!options.record_dir.empty()) record_frame(options.record_dir, frame);
         if (last && (!options.screenshot.empty() || headless)) screenshot = capture_frame(*context_, framebuffer_size_);
         context_->swap_buffers();
         timers_.collect();
@@ -220,6 +221,15 @@ void App::frame(const Options& options, int frame, double dt, double real_dt) {
         }
     }
     check_gl_errors("the frame");
+}
+
+// --record: this frame as DIR/frame_NNNN.png (four digits, more past 9999), read before the
+// buffers swap. The folder is created at the first frame.
+void App::record_frame(const std::string& dir, int frame) {
+    if (framebuffer_size_.x <= 0 || framebuffer_size_.y <= 0) return;  // minimised: nothing drawn
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", frame);
+    save_screenshot(capture_frame(*context_, framebuffer_size_), (fs::path(dir) / name).string());
 }
 
 void App::write_outputs(const Options& options, const Image& screenshot, int frames, double bench_seconds) {

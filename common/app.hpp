@@ -125,6 +125,7 @@ private:
     void frame(const Options& options, int frame, double dt, double real_dt);
     void write_outputs(const Options& options, const struct Image& screenshot, int frames, double bench_seconds);
     void init_imgui(bool draw_panel);
+    void record_frame(const std::string& dir, int frame);
     void shutdown_imgui();
     void draw_panel(float frame_ms);
     CameraInput read_camera_input();

@@ -67,7 +67,7 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
         static const TextFlag texts[] = {
             {"--preset", &Options::preset, "a preset file"}, {"--save-preset", &Options::save_preset, "a preset file"},
             {"--camera", &Options::camera, "a camera name"}, {"--export", &Options::export_dir, "a directory"},
-            {"--shader-dir", &Options::shader_dir, "a directory"}};
+            {"--shader-dir", &Options::shader_dir, "a directory"}, {"--record", &Options::record_dir, "a directory"}};
         // The flags that take no value, each setting one switch.
         static const std::pair<const char*, bool Options::*> switches[] = {
             {"--help", &Options::help}, {"-h", &Options::help}, {"--headless", &Options::headless},
@@ -157,6 +157,8 @@ usage: )" + step + R"( [flags]
   --resource-log N      every N frames print resident memory and live GL objects (soak tests)
   --exercise-minimise   frames 2 and 3 run as if the window were minimised (size 0), then restored
   --shader-dir DIR      read this step's shaders from DIR instead of its source folder
+  --record DIR          write every frame to DIR/frame_0000.png, frame_0001.png ... (with --dt
+                        for a steady clock; tools/animate makes an animation of them)
   --export DIR          write the simulated maps and their parameters to DIR after the last
                         frame (the steps that simulate maps)
   --help                this text

@@ -29,6 +29,7 @@ struct Options {
     bool show_ui = false;           // --ui: draw the panel in headless runs (and screenshots)
     std::string shader_dir;         // --shader-dir DIR: read this step's shaders from DIR
     std::string export_dir;         // --export DIR: a step that simulates maps writes them there
+    std::string record_dir;         // --record DIR: every frame to DIR/frame_NNNN.png (animations)
     std::string camera;             // --camera NAME: a shared view (camera_presets())
     bool split = false;             // --split: the chapter's two variants side by side
     int resource_log = 0;           // --resource-log N: print memory and GL objects every N frames
