@@ -1,0 +1,44 @@
+#!/usr/bin/env python3
+"""excerpts.py REPO: every ```glsl block in a step's README quotes its shaders verbatim.
+
+A block names its file with a line `// from shaders/FILE` (relative to the step's folder; more
+than one may follow each other); every other line, but the `//>` notes and blank lines, must be a
+line of that file (leading and trailing spaces aside). So an excerpt cannot drift from the code:
+change the shader and this test names the README line to update. Exit 0 when all hold.
+"""
+import pathlib
+import sys
+
+repo = pathlib.Path(sys.argv[1])
+failures, checked = [], 0
+for readme in sorted(repo.glob("step*/README.md")):
+    step = readme.parent
+    in_block, source, lines = False, None, set()
+    for number, line in enumerate(readme.read_text(encoding="utf-8").splitlines(), 1):
+        if line.startswith("```"):
+            in_block = line.strip() == "```glsl" and not in_block
+            source = None
+            continue
+        if not in_block or not line.strip() or line.lstrip().startswith("//>"):
+            continue
+        if line.startswith("// from "):
+            path = step / line[len("// from "):].strip()
+            if not path.is_file():
+                failures.append(f"{readme}:{number}: no file {path}")
+                source = None
+            else:
+                source = path
+                lines = {l.strip() for l in path.read_text(encoding="utf-8").splitlines()}
+            continue
+        if source is None:
+            failures.append(f"{readme}:{number}: a GLSL line before any '// from shaders/FILE'")
+            continue
+        checked += 1
+        if line.strip() not in lines:
+            failures.append(f"{readme}:{number}: not in {source.relative_to(repo)}: {line.strip()}")
+for failure in failures:
+    print("FAIL:", failure)
+print(f"excerpts: {checked} quoted lines checked, {len(failures)} not found")
+if checked == 0:
+    print("FAIL: no excerpts found")
+sys.exit(1 if failures or checked == 0 else 0)
