@@ -1,9 +1,13 @@
 #include "tools/canvas.hpp"
 
 #include <stb_easy_font.h>
+#include <stb_truetype.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <vector>
 
 namespace ocean_tools {
@@ -24,7 +28,114 @@ void Canvas::fill_rect(int x, int y, int w, int h, Colour colour) {
         }
 }
 
+namespace {
+
+// The labels' font: DejaVu Sans from Debian's fonts-dejavu-core (./ocean installs it), rasterised
+// by stb_truetype with anti-aliasing. Without the file the labels fall back to stb_easy_font's
+// segment font, with one warning.
+constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+struct Font {
+    std::vector<unsigned char> data;
+    stbtt_fontinfo info{};
+    bool loaded = false;
+};
+
+const Font& font() {
+    static const Font f = [] {
+        Font loaded;
+        std::ifstream file(kFontPath, std::ios::binary);
+        loaded.data.assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+        loaded.loaded = !loaded.data.empty() &&
+                        stbtt_InitFont(&loaded.info, loaded.data.data(), stbtt_GetFontOffsetForIndex(loaded.data.data(), 0)) != 0;
+        if (!loaded.loaded)
+            std::fprintf(stderr, "warning: cannot read the font %s (install fonts-dejavu-core): labels in the "
+                                 "segment font\n", kFontPath);
+        return loaded;
+    }();
+    return f;
+}
+
+// The code points of UTF-8 text (labels hold "x", "×", "—" ...); a malformed byte becomes '?'.
+std::vector<int> code_points(const std::string& text) {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        const int length = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+        if (length == 0 || i + std::size_t(length) > text.size()) {
+            out.push_back('?');
+            ++i;
+            continue;
+        }
+        int point = length == 1 ? c : c & (0x7F >> length);
+        for (int k = 1; k < length; ++k) point = (point << 6) | (static_cast<unsigned char>(text[i + std::size_t(k)]) & 0x3F);
+        out.push_back(point);
+        i += std::size_t(length);
+    }
+    return out;
+}
+
+// The font's pixel height for a `scale` of the old segment font (7 pixels a scale, plus leading).
+float pixel_height(int scale) { return 8.0f * float(scale); }
+
+int segment_text_width(const std::string& text, int scale) {
+    std::string copy = text;
+    return stb_easy_font_width(copy.data()) * scale;
+}
+
+}  // namespace
+
 void Canvas::text(int x, int y, const std::string& text, Colour colour, int scale) {
+    const Font& f = font();
+    if (!f.loaded) {
+        segment_text(x, y, text, colour, scale);
+        return;
+    }
+    const float s = stbtt_ScaleForPixelHeight(&f.info, pixel_height(scale));
+    int ascent = 0, descent = 0, gap = 0;
+    stbtt_GetFontVMetrics(&f.info, &ascent, &descent, &gap);
+    const int baseline = y + int(std::lround(float(ascent) * s));
+    float pen = float(x);
+    const std::vector<int> points = code_points(text);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        int advance = 0, bearing = 0;
+        stbtt_GetCodepointHMetrics(&f.info, points[i], &advance, &bearing);
+        int w = 0, h = 0, x0 = 0, y0 = 0;
+        const float shift = pen - std::floor(pen);
+        unsigned char* bitmap = stbtt_GetCodepointBitmapSubpixel(&f.info, s, s, shift, 0.0f, points[i], &w, &h, &x0, &y0);
+        for (int j = 0; j < h; ++j)
+            for (int k = 0; k < w; ++k)
+                blend(int(std::floor(pen)) + x0 + k, baseline + y0 + j, colour, bitmap[j * w + k]);
+        stbtt_FreeBitmap(bitmap, nullptr);
+        pen += float(advance) * s;
+        if (i + 1 < points.size()) pen += float(stbtt_GetCodepointKernAdvance(&f.info, points[i], points[i + 1])) * s;
+    }
+}
+
+int Canvas::text_width(const std::string& text, int scale) {
+    const Font& f = font();
+    if (!f.loaded) return segment_text_width(text, scale);
+    const float s = stbtt_ScaleForPixelHeight(&f.info, pixel_height(scale));
+    float width = 0;
+    const std::vector<int> points = code_points(text);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        int advance = 0, bearing = 0;
+        stbtt_GetCodepointHMetrics(&f.info, points[i], &advance, &bearing);
+        width += float(advance) * s;
+        if (i + 1 < points.size()) width += float(stbtt_GetCodepointKernAdvance(&f.info, points[i], points[i + 1])) * s;
+    }
+    return int(std::ceil(width));
+}
+
+// Coverage 0..255 of `colour` over the pixel (x, y).
+void Canvas::blend(int x, int y, Colour colour, int coverage) {
+    if (x < 0 || y < 0 || x >= image_.width || y >= image_.height || coverage <= 0) return;
+    std::uint8_t* p = &image_.rgba[(std::size_t(y) * image_.width + x) * 4];
+    for (int k = 0; k < 3; ++k)
+        p[k] = std::uint8_t((p[k] * (255 - coverage) + colour[std::size_t(k)] * coverage + 127) / 255);
+}
+
+void Canvas::segment_text(int x, int y, const std::string& text, Colour colour, int scale) {
     // stb_easy_font writes 64 bytes a quad and needs up to ~12 quads for a digit ("0", "8"): at the
     // ~300 bytes a character its header calls typical, labels full of digits were cut short.
     std::vector<char> buffer(text.size() * 1024 + 64);
@@ -38,11 +149,6 @@ void Canvas::text(int x, int y, const std::string& text, Colour colour, int scal
         const int x1 = x + int(std::lround(v2[0] * float(scale))), y1 = y + int(std::lround(v2[1] * float(scale)));
         fill_rect(std::min(x0, x1), std::min(y0, y1), std::abs(x1 - x0), std::abs(y1 - y0), colour);
     }
-}
-
-int Canvas::text_width(const std::string& text, int scale) {
-    std::string copy = text;
-    return stb_easy_font_width(copy.data()) * scale;
 }
 
 void Canvas::draw_image(const ocean::Image& src, int x, int y, int w, int h) {

@@ -1,5 +1,6 @@
 // A small CPU canvas for the repository's own pictures (the contact sheet, the bench chart):
-// rectangles, text (stb_easy_font's segment font, scaled) and resized images, into an RGBA8 image.
+// rectangles, text (DejaVu Sans through stb_truetype, anti-aliased; stb_easy_font's segment font
+// if the font file is missing) and resized images, into an RGBA8 image.
 #pragma once
 
 #include "common/image.hpp"
@@ -16,7 +17,7 @@ class Canvas {
 public:
     Canvas(int width, int height, Colour background);
     void fill_rect(int x, int y, int w, int h, Colour colour);
-    // Text with its top-left corner at (x, y); each font pixel becomes scale x scale pixels.
+    // Text with its top-left corner at (x, y), UTF-8, 8 x scale pixels high.
     void text(int x, int y, const std::string& text, Colour colour, int scale = 2);
     static int text_width(const std::string& text, int scale = 2);
     // `image` resized (bilinear) into the rectangle.
@@ -24,6 +25,8 @@ public:
     const ocean::Image& image() const { return image_; }
 
 private:
+    void blend(int x, int y, Colour colour, int coverage);
+    void segment_text(int x, int y, const std::string& text, Colour colour, int scale);
     ocean::Image image_;
 };
 

@@ -2,7 +2,8 @@
 # tools/readme_images.sh [BUILD_DIR]: redraws every picture the steps' READMEs show, each with the
 # one command written here beside it, so a README's image can be reproduced and cannot quietly
 # drift from the code. Headless, on a fixed clock (t = 5 s reached by 0.1 s steps, so foam has
-# grown), 640x360 (step05's map views 300x300). Takes about a minute on llvmpipe.
+# grown), 640x360 (step05's map views 480x300, room for their legends; the spectrum 300x300).
+# Takes about a minute on llvmpipe.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
@@ -25,8 +26,8 @@ run step04_fbm warp_off.png --set warp=0 --camera low
 run step04_fbm warp_on.png --set warp=6 --camera low
 run step04_fbm sine.png --set shape=sine --set warp=0 --camera low
 run step05_fft screenshot.png
-run step05_fft height.png --size 300x300 --set view=height
-run step05_fft jacobian.png --size 300x300 --set view=jacobian --set choppiness=2.5
+run step05_fft height.png --size 480x300 --set view=height
+run step05_fft jacobian.png --size 480x300 --set view=jacobian --set choppiness=2.5
 run step05_fft spectrum.png --size 300x300 --set view=spectrum
 run step06_foam_sky screenshot.png
 for preset in calm breezy stormy crossing; do

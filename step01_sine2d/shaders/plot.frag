@@ -2,6 +2,7 @@
 // The plot, one pixel at a time: for each curve y = f(x) the pixel's distance to it is
 // |y - f(x)| / sqrt(1 + f'(x)^2) (in pixels), which keeps lines the same width on steep slopes.
 #include "sine_sum.glsl"
+#include "digits.glsl"
 
 in vec2 v_uv;
 out vec4 out_color;
@@ -41,6 +42,18 @@ void main() {
     float axes = max(clamp(1.0 - abs(x) / metres_per_pixel.x, 0.0, 1.0),
                      clamp(1.0 - abs(y) / metres_per_pixel.y, 0.0, 1.0));
     color = mix(color, vec3(0.45, 0.48, 0.52), axes);
+
+    // Axis numbers, in metres: x along the bottom edge, y along the left one, at round steps.
+    vec2 pixel = gl_FragCoord.xy;
+    float x_step = label_step(u_x_range.y - u_x_range.x), y_step = label_step(2.0 * u_y_extent);
+    float x_label = floor(x / x_step + 0.5) * x_step, y_label = floor(y / y_step + 0.5) * y_step;
+    vec2 x_centre = vec2((x_label - u_x_range.x) / metres_per_pixel.x, 12.0);
+    vec2 y_centre = vec2(26.0, (y_label + u_y_extent) / metres_per_pixel.y);
+    float numbers = 0.0;
+    // (not under the y numbers, and whole: none cut by an edge)
+    if (x_centre.x > 56.0 && x_centre.x < u_resolution.x - 16.0) numbers = number_coverage(x_label, decimals_for(x_step), pixel, x_centre, vec2(6.0, 10.0));
+    if (y_centre.y > 28.0 && y_centre.y < u_resolution.y - 10.0) numbers = max(numbers, number_coverage(y_label, decimals_for(y_step), pixel, y_centre, vec2(6.0, 10.0)));
+    color = mix(color, vec3(0.62, 0.66, 0.72), numbers);
 
     if (u_show_waves) {
         for (int i = 0; i < u_wave_count; ++i) {

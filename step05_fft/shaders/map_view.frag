@@ -2,8 +2,10 @@
 // The debug view of one map: the chosen channel over the screen (one tile, 1:1 aspect), blue for
 // negative, white at zero, red for positive, scaled by u_range. The Jacobian is drawn around 1
 // (red where J < 0: the surface folds). The spectrum view shows log10 of each mode's energy.
+// Right of the tile, a legend: the colour bar with the values at its ends and middle.
 #include "ocean_maps.glsl"
 #include "srgb.glsl"
+#include "digits.glsl"
 
 in vec2 v_uv;
 out vec4 out_color;
@@ -22,12 +24,34 @@ vec3 diverging(float v) {
     return v < 0.0 ? mix(vec3(1.0), vec3(0.1, 0.3, 0.9), -v) : mix(vec3(1.0), vec3(0.85, 0.15, 0.1), v);
 }
 
+// The legend (sRGB) beside a tile whose right edge is at x = right (pixels): a bar from -u_range (bottom)
+// to +u_range (top) in the map's colours, numbered at both ends and the middle (the Jacobian's
+// around 1, with the folded J < 0 colour below it). Nothing where the margin is too narrow.
+vec3 legend(vec2 pixel, float right, float side) {
+    vec3 background = vec3(0.06, 0.07, 0.09);  // the margin's colour (sRGB, as written out)
+    if (u_map == MAP_SPECTRUM || u_resolution.x - right < 90.0) return background;
+    float bottom = 0.5 * (u_resolution.y - side) + 0.1 * side, height = 0.8 * side;
+    vec2 bar = pixel - vec2(right + 18.0, bottom);
+    if (bar.x >= 0.0 && bar.x < 14.0 && bar.y >= 0.0 && bar.y < height) {
+        float v = 2.0 * bar.y / height - 1.0;
+        return linear_to_srgb(u_map == MAP_JACOBIAN && v <= -1.0 / u_range ? vec3(0.6, 0.0, 0.0) : diverging(v));
+    }
+    float offset = u_map == MAP_JACOBIAN ? 1.0 : 0.0;  // the Jacobian's colours are centred on J = 1
+    int decimals = u_range >= 10.0 ? 0 : u_range >= 1.0 ? 1 : u_range >= 0.1 ? 2 : 3;
+    float numbers = 0.0;
+    for (int i = -1; i <= 1; ++i) {
+        vec2 centre = vec2(right + 64.0, bottom + 0.5 * height * (1.0 + float(i)));
+        numbers = max(numbers, number_coverage(offset + float(i) * u_range, decimals, pixel, centre, vec2(6.0, 10.0)));
+    }
+    return mix(background, vec3(0.75), numbers);
+}
+
 void main() {
     // A square tile in the middle of the screen.
     float side = min(u_resolution.x, u_resolution.y);
     vec2 uv = (gl_FragCoord.xy - 0.5 * (u_resolution - side)) / side;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) {
-        out_color = vec4(0.06, 0.07, 0.09, 1.0);
+        out_color = vec4(legend(gl_FragCoord.xy, 0.5 * (u_resolution.x + side), side), 1.0);
         return;
     }
     if (u_map == MAP_SPECTRUM) {
