@@ -80,17 +80,13 @@ TEST_F(FftTest, GpuFftMatchesFftwOnRandomInput) {
 // transforms, it says which of the two stages is wrong when the backends disagree with the CPU.
 TEST_F(FftTest, EvolvedSpectraMatchTheFormulas) {
     const int n = 64;
-    SpectrumParams p;
-    p.resolution = n;
-    p.seed = 3;
-    const InitialSpectrum s = initial_spectrum(p);
-    GpuOcean ocean(factory());
-    ocean.set_spectra({&s});
+    const InitialSpectrum s = sea(n);
+    const auto ocean = ocean_of(s);
     const std::size_t area = std::size_t(n) * n;
     for (double t : {0.0, 2.5, 86400.0 * 3 + 0.25}) {
-        ocean.evolve(t);
+        ocean->evolve(t);
         std::vector<float> gpu(area * 4 * 2);
-        glGetNamedBufferSubData(ocean.spectra_buffer(), 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
+        glGetNamedBufferSubData(ocean->spectra_buffer(), 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
         double worst[4] = {0, 0, 0, 0}, largest = 0;
         std::string where[4];  // the worst mode of each field, for the failure message
         int wrong[4] = {0, 0, 0, 0};  // modes off by more than 1e-5 of the largest value
