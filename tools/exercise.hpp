@@ -1,0 +1,64 @@
+// The exercises' pieces shared by tools/exercise.cpp (prepare, check, list), exercise_checks.cpp
+// (how a learner's GLSL is evaluated on the GPU and held to a CPU reference) and
+// exercise_table.cpp (the exercises themselves).
+#pragma once
+
+#include "common/shader.hpp"
+#include "step03_lighting/normals.hpp"
+
+#include <glm/vec4.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace exercises {
+
+namespace fs = std::filesystem;
+using step03::Vec3;
+
+// What a check found: the worst difference, and where, for the hint.
+struct Verdict {
+    bool pass = false;
+    std::string detail;
+};
+
+struct Exercise {
+    std::string step;
+    int number;
+    std::string title;
+    std::string file;       // the shader (in the step's shaders/) holding the function
+    std::string signature;  // the function's first line, as written there
+    std::string stub;       // the body the learner starts from (compiles, does nothing useful)
+    std::string task;       // what to write
+    std::string hint;       // printed when the check fails
+    std::function<Verdict(const fs::path& work)> check;
+};
+
+// Every exercise, in the order `exercise list` prints them (exercise_table.cpp).
+std::vector<Exercise> all();
+
+using Reference = std::function<double(const Vec3& n, const Vec3& v, const Vec3& l, double alpha)>;
+using ValueReference = std::function<double(const glm::dvec4& a, const glm::dvec4& b)>;
+using SetUniforms = std::function<void(const ocean::ShaderProgram&)>;
+
+// Evaluates `expression` (GLSL, in terms of n, v, l, alpha) with the learner's `include` (a file of
+// the work folder) at 2048 random normals, eyes and suns, after `set_uniforms`, and compares each
+// value with `reference` within `tolerance` of the largest. With `fixed_sun`, l is that one
+// direction (a chapter whose sun is a uniform); otherwise anywhere, below the surface too.
+Verdict check_glsl(const fs::path& work, const std::string& include, const std::string& expression,
+                   const Reference& reference, double tolerance, const SetUniforms& set_uniforms = {},
+                   const Vec3* fixed_sun = nullptr);
+
+// Evaluates `expression` (GLSL, in terms of vec4 a and b, each component uniform in [low, high])
+// at 2048 random inputs and compares it with `reference(a, b)`: for the wave functions of steps
+// 01 to 05.
+Verdict check_values(const fs::path& work, const std::string& include, const std::string& expression,
+                     const ValueReference& reference, double tolerance, double low, double high,
+                     const SetUniforms& set_uniforms = {});
+
+// Both checks must pass; the first failure is the verdict.
+Verdict both(const Verdict& first, const std::function<Verdict()>& second);
+
+}  // namespace exercises

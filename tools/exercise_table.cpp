@@ -1,0 +1,240 @@
+// The exercises: for each, the chapter's file and function it empties, the stub, the task, the
+// hint, and the check that holds the learner's function to the chapter's CPU reference.
+#include "tools/exercise.hpp"
+
+#include "step01_sine2d/sine_sum.hpp"
+#include "step02_sine3d/wave_uniforms.hpp"
+#include "step03_lighting/lighting.hpp"
+#include "step04_fbm/fbm.hpp"
+#include "step05_fft/ocean_maps.hpp"
+#include "step06_foam_sky/shading.hpp"
+
+#include <glm/vec3.hpp>
+
+namespace exercises {
+
+namespace {
+
+// The waves the checks of steps 01 and 02 give the learner's functions, at t = 1.7 s.
+constexpr double kCheckTime = 1.7;
+const std::vector<step01::Wave> kStep01Waves{{8.0, 0.5, 1.2}, {3.1, 0.2, -0.7}, {1.7, 0.08, 0.9}};
+const std::vector<step02::DirectionalWave> kStep02Waves{{20, 14.0, 0.6, 3.0}, {75, 6.5, 0.25, 2.1}, {-40, 3.2, 0.1, 1.4}};
+
+// step01's uniforms as its main.cpp sets them: (w, a, -t phi mod 2 pi, 0) per wave.
+void set_step01_waves(const ocean::ShaderProgram& p) {
+    std::vector<glm::vec4> packed;
+    for (const step01::Wave& w : kStep01Waves)
+        packed.emplace_back(float(step01::angular_wavenumber(w)), float(w.amplitude),
+                            float(step01::phase_at(step01::phase_rate(w), kCheckTime)), 0.0f);
+    p.set("u_wave_count", int(packed.size()));
+    p.set("u_waves", packed);
+}
+
+// A sample of step05's maps from a and b: displacement (0, 0, 0, l dDx/dz), slopes (dh/dx, dh/dz,
+// l dDx/dx, l dDz/dz), as GLSL and as the CPU's OceanMaps (one cell, choppiness 1).
+const char* kStep05Sample = "vec4(0.0, 0.0, 0.0, b.x), a";
+step05::OceanMaps step05_cell(const glm::dvec4& a, const glm::dvec4& b) {
+    step05::OceanMaps maps;
+    maps.n = 1;
+    for (auto& field : maps.fields) field.assign(1, 0.0);
+    maps.fields[step05::SlopeX][0] = a.x;
+    maps.fields[step05::SlopeZ][0] = a.y;
+    maps.fields[step05::DDxDx][0] = a.z;
+    maps.fields[step05::DDzDz][0] = a.w;
+    maps.fields[step05::DDxDz][0] = b.x;
+    return maps;
+}
+
+// step03's light with the sun at `sun`, a white sun, the default water and shininess 64.
+step03::Light step03_light(const Vec3& sun) {
+    step03::Light light;
+    light.to_sun = sun;
+    light.sun = {1, 1, 1};
+    light.water = {0.05, 0.25, 0.35};
+    light.ambient = {0.02, 0.04, 0.06};
+    light.shininess = 64;
+    return light;
+}
+
+// step03's light_terms on the GPU, one term: its uniforms set as step03_light says.
+Verdict check_step03_term(const fs::path& work, const std::string& term, double (*pick)(const step03::LightTerms&)) {
+    static const Vec3 sun = step03::normalize({0.4, 0.5, -0.3});
+    const step03::Light light = step03_light(sun);
+    return check_glsl(
+        work, "lighting.glsl", "light_terms(n, v)." + term,
+        [&](const Vec3& n, const Vec3& v, const Vec3&, double) { return pick(step03::light_terms(n, v, light)); }, 1e-4,
+        [&](const ocean::ShaderProgram& p) {
+            p.set("u_to_sun", glm::vec3(float(sun.x), float(sun.y), float(sun.z)));
+            p.set("u_sun_color", glm::vec3(1.0f));
+            p.set("u_water_color", glm::vec3(float(light.water.r), float(light.water.g), float(light.water.b)));
+            p.set("u_ambient_color", glm::vec3(float(light.ambient.r), float(light.ambient.g), float(light.ambient.b)));
+            p.set("u_shininess", float(light.shininess));
+        },
+        &sun);
+}
+
+}  // namespace
+
+std::vector<Exercise> all() {
+    using step06::Microfacet;
+    return {
+        {"step01_sine2d", 1, "One sine wave", "sine_sum.glsl", "float wave_height(int i, float x) {",
+         "    // TODO (exercise 1): the height of wave i at x.\n    return 0.0;\n",
+         "Write wave_height: wave i arrives as u_waves[i] = (w, a, phase, 0), w = 2 pi / wavelength already, and\n"
+         "its height at x is a sin(x w + phase). Without it the plot is a flat line.",
+         "u_waves[i].x is w (radians per metre), .y the amplitude a, .z the phase (-t phi, reduced on the CPU): "
+         "a * sin(x * w + phase). The phase is added, not multiplied.",
+         [](const fs::path& work) {
+             return check_values(
+                 work, "sine_sum.glsl", "sum_of_sines(a.x)",
+                 [](const glm::dvec4& a, const glm::dvec4&) { return step01::sum_of_sines(kStep01Waves, a.x, kCheckTime); },
+                 1e-4, -20, 20, set_step01_waves);
+         }},
+        {"step01_sine2d", 2, "The slope of a sine", "sine_sum.glsl", "float wave_slope(int i, float x) {",
+         "    // TODO (exercise 2): d/dx of wave i's height at x.\n    return 0.0;\n",
+         "Write wave_slope, the derivative of a sin(x w + phase) with respect to x. The plot uses it to draw\n"
+         "its line equally thick on steep slopes: without it the line thins where the wave is steep.",
+         "The chain rule brings w out of the sine, and the amplitude stays: a w cos(x w + phase). The notes' 2.2 "
+         "writes cos(...) alone, without w a: that is the slope of a wave of one radian per metre and amplitude 1.",
+         [](const fs::path& work) {
+             return check_values(
+                 work, "sine_sum.glsl", "sum_of_sines_slope(a.x)",
+                 [](const glm::dvec4& a, const glm::dvec4&) {
+                     return step01::sum_of_sines_slope(kStep01Waves, a.x, kCheckTime);
+                 },
+                 1e-4, -20, 20, set_step01_waves);
+         }},
+        {"step02_sine3d", 1, "Waves with a direction", "waves.glsl", "float wave_height(vec2 xz) {",
+         "    // TODO (exercise 1): the sum of the directional waves at xz.\n    return 0.0;\n",
+         "Write wave_height: the sum over the u_wave_count waves of a sin(dot(d, xz) w + phase), with\n"
+         "u_waves[i] = (d.x, d.z, w, a) and the phase in u_wave_phases[i]. Without it the sea is flat.",
+         "dot(d, xz) is how far along the wave's direction the point lies: crests are lines across d. "
+         "u_waves[i].xy is d, .z is w, .w is a; the phase is its own uniform array, u_wave_phases[i].",
+         [](const fs::path& work) {
+             return check_values(
+                 work, "waves.glsl", "wave_height(a.xy)",
+                 [](const glm::dvec4& a, const glm::dvec4&) { return step02::height(kStep02Waves, a.x, a.y, kCheckTime); },
+                 1e-4, -60, 60,
+                 [](const ocean::ShaderProgram& p) { step02::upload_waves(p, kStep02Waves, kCheckTime); });
+         }},
+        {"step04_fbm", 1, "The exp-sine wave and its derivatives", "fbm.glsl", "vec3 wave_shape(float theta) {",
+         "    // TODO (exercise 1): (W, W', W'') of the exp-sine wave, mean removed. For now, a sine.\n"
+         "    return vec3(sin(theta), cos(theta), -sin(theta));\n",
+         "Write wave_shape for SHAPE 1: W = e^(sin theta - 1) - 0.46575961 (its mean, so the sea stays at y = 0),\n"
+         "W' = dW/dtheta and W'' = d2W/dtheta2. W' makes the normals, W'' the domain warp's Jacobian.\n"
+         "The starter is step02's sine: round crests, as wide as the troughs.",
+         "d/dtheta e^(sin theta - 1) = e^(sin theta - 1) cos theta; differentiate that product again: "
+         "e^(sin theta - 1)(cos^2 theta - sin theta). The mean is subtracted from W only.",
+         [](const fs::path& work) {
+             using step04::Shape;
+             const auto component = [&](const char* swizzle, double step04::ShapeValue::*part) {
+                 return check_values(
+                     work, "fbm.glsl", std::string("wave_shape(a.x).") + swizzle,
+                     [part](const glm::dvec4& a, const glm::dvec4&) { return step04::wave_shape(Shape::ExpSine, a.x).*part; },
+                     1e-4, -10, 10);
+             };
+             return both(component("x", &step04::ShapeValue::value), [&] {
+                 return both(component("y", &step04::ShapeValue::first),
+                             [&] { return component("z", &step04::ShapeValue::second); });
+             });
+         }},
+        {"step04_fbm", 2, "The normal from the gradient", "fbm.glsl", "vec3 fbm_normal(vec2 gradient) {",
+         "    // TODO (exercise 2): the unit normal from (dh/dx, dh/dz).\n    return vec3(0.0, 1.0, 0.0);\n",
+         "Write fbm_normal: with the tangents T = (1, dh/dx, 0) and B = (0, dh/dz, 1), N = B x T, normalised.\n"
+         "The starter's normal is straight up: the sea is lit as if flat.",
+         "B x T = (-dh/dx, 1, -dh/dz) before normalising; T x B points down, into the water (then the light is "
+         "on the wrong side of every wave).",
+         [](const fs::path& work) {
+             const auto component = [&](const char* swizzle, double step03::Vec3::*part) {
+                 return check_values(
+                     work, "fbm.glsl", std::string("fbm_normal(a.xy).") + swizzle,
+                     [part](const glm::dvec4& a, const glm::dvec4&) { return step03::normal({0.0, a.x, a.y}).*part; },
+                     1e-4, -2, 2);
+             };
+             return both(component("x", &step03::Vec3::x), [&] {
+                 return both(component("y", &step03::Vec3::y), [&] { return component("z", &step03::Vec3::z); });
+             });
+         }},
+        {"step05_fft", 1, "Where the surface folds", "ocean_maps.glsl", "float jacobian(vec4 displacement, vec4 slopes) {",
+         "    // TODO (exercise 1): the Jacobian of the choppy displacement.\n    return 1.0;\n",
+         "Write jacobian: J = (1 + l dDx/dx)(1 + l dDz/dz) - (l dDx/dz)^2, with l dDx/dx = slopes.z, l dDz/dz =\n"
+         "slopes.w, l dDx/dz = displacement.w. J < 0 where the surface folds over itself: view=jacobian shows\n"
+         "it, and step06 puts its foam there.",
+         "J is the determinant of the 2 x 2 matrix [[1 + l dDx/dx, l dDx/dz], [l dDx/dz, 1 + l dDz/dz]]: the "
+         "product of the diagonal minus the square of the off-diagonal term (the maps hold l D already).",
+         [](const fs::path& work) {
+             return check_values(
+                 work, "ocean_maps.glsl", std::string("jacobian(") + kStep05Sample + ")",
+                 [](const glm::dvec4& a, const glm::dvec4& b) { return step05_cell(a, b).jacobian(0, 1.0); }, 1e-4, -0.8,
+                 0.8);
+         }},
+        {"step05_fft", 2, "The normal of the choppy surface", "ocean_maps.glsl",
+         "vec3 choppy_normal(vec4 displacement, vec4 slopes) {",
+         "    // TODO (exercise 2): the normal of the displaced surface. For now, step03's.\n"
+         "    return normalize(vec3(-slopes.x, 1.0, -slopes.y));\n",
+         "Write choppy_normal: the surface point of rest position p is P = (p.x + l Dx, h, p.z + l Dz); its\n"
+         "tangents are dP/dx = (1 + l dDx/dx, dh/dx, l dDx/dz) and dP/dz = (l dDx/dz, dh/dz, 1 + l dDz/dz), and\n"
+         "N = normalize(dP/dz x dP/dx). The starter is step03's normal, right only where l = 0.",
+         "slopes = (dh/dx, dh/dz, l dDx/dx, l dDz/dz), displacement.w = l dDx/dz (= l dDz/dx). The order of the "
+         "cross product decides up or down: dP/dz x dP/dx points up for a flat sea.",
+         [](const fs::path& work) {
+             const auto component = [&](const char* swizzle, int index) {
+                 return check_values(
+                     work, "ocean_maps.glsl", std::string("choppy_normal(") + kStep05Sample + ")." + swizzle,
+                     [index](const glm::dvec4& a, const glm::dvec4& b) {
+                         return step05_cell(a, b).normal(0, 1.0)[std::size_t(index)];
+                     },
+                     1e-4, -0.6, 0.6);
+             };
+             return both(component("x", 0), [&] { return both(component("y", 1), [&] { return component("z", 2); }); });
+         }},
+        {"step03_lighting", 1, "Lambert and Blinn-Phong", "lighting.glsl", "LightTerms light_terms(vec3 normal, vec3 to_eye) {",
+         "    // TODO (exercise 1): ambient, Lambert diffuse and Blinn-Phong specular.\n"
+         "    LightTerms t;\n    t.ambient = u_ambient_color;\n    t.diffuse = vec3(0.0);\n    t.specular = vec3(0.0);\n"
+         "    return t;\n",
+         "Write light_terms: diffuse = water * sun * max(N.L, 0) (Lambert); specular = sun * max(N.H, 0)^shininess "
+         "with the halfway vector H = normalize(V + L), and no specular when the sun is behind the surface "
+         "(N.L <= 0). Without them the sea is flat ambient colour.",
+         "H is normalize(to_eye + to_sun), the direction halfway between eye and sun, not the reflection of either; "
+         "the specular needs N.L > 0 (a sun below the surface makes no glint) even where N.H is large.",
+         [](const fs::path& work) {
+             const Verdict diffuse = check_step03_term(work, "diffuse.y", [](const step03::LightTerms& t) { return t.diffuse.g; });
+             if (!diffuse.pass) return diffuse;
+             return check_step03_term(work, "specular.x", [](const step03::LightTerms& t) { return t.specular.r; });
+         }},
+        {"step06_foam_sky", 1, "Schlick's Fresnel", "shading.glsl", "float fresnel_schlick(float cos_theta, float f0) {",
+         "    // TODO (exercise 1): how much light the water reflects, seen at cos_theta from the normal.\n"
+         "    return 0.0;\n",
+         "Write fresnel_schlick: F = F0 + (1 - F0)(1 - cos theta)^5, with cos theta clamped to [0, 1].\n"
+         "Without it the sea reflects nothing: no sky in the water, no glint.",
+         "Looking straight down (cos theta = 1) water reflects F0 = 0.02; at grazing (cos theta = 0), "
+         "everything (1). Check both ends of your formula, and clamp cos theta: a normal bent past 90 degrees "
+         "gives a negative one.",
+         [](const fs::path& work) {
+             return check_glsl(work, "shading.glsl", "fresnel_schlick(dot(n, v), 0.02)",
+                                  [](const Vec3& n, const Vec3& v, const Vec3&, double) {
+                                      return step06::fresnel_schlick(step03::dot(n, v), 0.02);
+                                  },
+                                  1e-4);
+         }},
+        {"step06_foam_sky", 2, "The microfacet specular", "shading.glsl",
+         "vec3 specular_term(vec3 n, vec3 v, vec3 l, float alpha, float f0, vec3 sun) {",
+         "    // TODO (exercise 2): the sun's reflection towards v: sun * D * G * F / (4 N.V).\n"
+         "    return vec3(0.0);\n",
+         "Write specular_term from the parts above it: H = normalize(V + L), D = "
+         "microfacet_distribution(N.H, alpha), G = 1 / (1 + smith_lambda(N.V) + smith_lambda(N.L)), F = "
+         "fresnel_schlick(V.H, f0); return sun D G F / (4 N.V), and nothing when the sun or the eye is below "
+         "the surface (N.L <= 0 or N.V <= 0). Without it there is no sun glint.",
+         "Fresnel takes V.H here, not N.V (the microfacets that reflect the sun face H); the 4 N.V in the "
+         "denominator is N.V alone (N.L cancels with the irradiance); return vec3(0.0) for N.L <= 0 or N.V <= 0.",
+         [](const fs::path& work) {
+             return check_glsl(work, "shading.glsl", "specular_term(n, v, l, alpha, 0.02, vec3(1.0)).x",
+                                  [](const Vec3& n, const Vec3& v, const Vec3& l, double alpha) {
+                                      return step06::specular_factor(n, v, l, alpha, 0.02, Microfacet::Ggx);
+                                  },
+                                  1e-4);
+         }},
+    };
+}
+
+}  // namespace exercises
