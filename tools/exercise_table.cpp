@@ -11,6 +11,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <string>
+
 namespace exercises {
 
 namespace {
@@ -117,6 +119,41 @@ std::vector<Exercise> all() {
                  1e-4, -60, 60,
                  [](const ocean::ShaderProgram& p) { step02::upload_waves(p, kStep02Waves, kCheckTime); });
          }},
+        {"step03_lighting", 1, "Lambert and Blinn-Phong", "lighting.glsl", "LightTerms light_terms(vec3 normal, vec3 to_eye) {",
+         "    // TODO (exercise 1): ambient, Lambert diffuse and Blinn-Phong specular.\n"
+         "    LightTerms t;\n    t.ambient = u_ambient_color;\n    t.diffuse = vec3(0.0);\n    t.specular = vec3(0.0);\n"
+         "    return t;\n",
+         "Write light_terms: diffuse = water * sun * max(N.L, 0) (Lambert); specular = sun * max(N.H, 0)^shininess "
+         "with the halfway vector H = normalize(V + L), and no specular when the sun is behind the surface "
+         "(N.L <= 0). Without them the sea is flat ambient colour.",
+         "H is normalize(to_eye + to_sun), the direction halfway between eye and sun, not the reflection of either; "
+         "the specular needs N.L > 0 (a sun below the surface makes no glint) even where N.H is large.",
+         [](const fs::path& work) {
+             const Verdict diffuse = check_step03_term(work, "diffuse.y", [](const step03::LightTerms& t) { return t.diffuse.g; });
+             if (!diffuse.pass) return diffuse;
+             return check_step03_term(work, "specular.x", [](const step03::LightTerms& t) { return t.specular.r; });
+         }},
+        {"step03_lighting", 2, "The slope of the waves", "wave_gradient.glsl", "vec3 wave_height_gradient(vec2 xz) {",
+         "    // TODO (exercise 2): (h, dh/dx, dh/dz). For now the height alone: a sea lit as if flat.\n"
+         "    return vec3(wave_height(xz), 0.0, 0.0);\n",
+         "Write wave_height_gradient: in one loop over the waves, the height a sin(angle) and its two partial\n"
+         "derivatives, with angle = dot(d, xz) w + phase. The normal (and so all the light) comes from them.",
+         "The derivative of a sin(dot(d, xz) w + phase) along x is a w cos(angle) d.x (the chain rule brings out w "
+         "and the direction); the notes' 2.2 forgets the w a. u_waves[i] = (d.x, d.z, w, a).",
+         [](const fs::path& work) {
+             const auto component = [&](const char* swizzle, double step03::HeightGradient::*part) {
+                 return check_values(
+                     work, "wave_gradient.glsl", std::string("wave_height_gradient(a.xy).") + swizzle,
+                     [part](const glm::dvec4& a, const glm::dvec4&) {
+                         return step03::height_and_gradient(kStep02Waves, a.x, a.y, kCheckTime).*part;
+                     },
+                     1e-4, -60, 60, [](const ocean::ShaderProgram& p) { step02::upload_waves(p, kStep02Waves, kCheckTime); });
+             };
+             return both(component("x", &step03::HeightGradient::height), [&] {
+                 return both(component("y", &step03::HeightGradient::dh_dx),
+                             [&] { return component("z", &step03::HeightGradient::dh_dz); });
+             });
+         }},
         {"step04_fbm", 1, "The exp-sine wave and its derivatives", "fbm.glsl", "vec3 wave_shape(float theta) {",
          "    // TODO (exercise 1): (W, W', W'') of the exp-sine wave, mean removed. For now, a sine.\n"
          "    return vec3(sin(theta), cos(theta), -sin(theta));\n",
@@ -187,20 +224,6 @@ std::vector<Exercise> all() {
                      1e-4, -0.6, 0.6);
              };
              return both(component("x", 0), [&] { return both(component("y", 1), [&] { return component("z", 2); }); });
-         }},
-        {"step03_lighting", 1, "Lambert and Blinn-Phong", "lighting.glsl", "LightTerms light_terms(vec3 normal, vec3 to_eye) {",
-         "    // TODO (exercise 1): ambient, Lambert diffuse and Blinn-Phong specular.\n"
-         "    LightTerms t;\n    t.ambient = u_ambient_color;\n    t.diffuse = vec3(0.0);\n    t.specular = vec3(0.0);\n"
-         "    return t;\n",
-         "Write light_terms: diffuse = water * sun * max(N.L, 0) (Lambert); specular = sun * max(N.H, 0)^shininess "
-         "with the halfway vector H = normalize(V + L), and no specular when the sun is behind the surface "
-         "(N.L <= 0). Without them the sea is flat ambient colour.",
-         "H is normalize(to_eye + to_sun), the direction halfway between eye and sun, not the reflection of either; "
-         "the specular needs N.L > 0 (a sun below the surface makes no glint) even where N.H is large.",
-         [](const fs::path& work) {
-             const Verdict diffuse = check_step03_term(work, "diffuse.y", [](const step03::LightTerms& t) { return t.diffuse.g; });
-             if (!diffuse.pass) return diffuse;
-             return check_step03_term(work, "specular.x", [](const step03::LightTerms& t) { return t.specular.r; });
          }},
         {"step06_foam_sky", 1, "Schlick's Fresnel", "shading.glsl", "float fresnel_schlick(float cos_theta, float f0) {",
          "    // TODO (exercise 1): how much light the water reflects, seen at cos_theta from the normal.\n"

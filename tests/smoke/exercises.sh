@@ -33,6 +33,12 @@ dir="$work/seed-slope"
 "$exe" prepare step01_sine2d 2 "$dir" > /dev/null
 sed -i 's|    return 0.0;|    return cos(x * u_waves[i].x + u_waves[i].z);|' "$dir/sine_sum.glsl"
 if "$exe" check step01_sine2d 2 "$dir" > /dev/null 2>&1; then echo "FAIL: the notes' slope without w a passes"; status=1; fi
+# The notes' 2.2 gradient, cos(angle) d without w a, must not pass step03's exercise 2.
+dir="$work/seed-gradient"
+"$exe" prepare step03_lighting 2 "$dir" > /dev/null
+sed -i 's|    return vec3(wave_height(xz), 0.0, 0.0);|    vec3 r = vec3(0.0);\n    for (int i = 0; i < u_wave_count; ++i) {\n        float angle = dot(u_waves[i].xy, xz) * u_waves[i].z + u_wave_phases[i];\n        r += vec3(u_waves[i].w * sin(angle), cos(angle) * u_waves[i].xy);\n    }\n    return r;|' "$dir/wave_gradient.glsl"
+if "$exe" check step03_lighting 2 "$dir" > "$dir.log" 2>&1; then echo "FAIL: the notes' gradient without w a passes"; status=1; fi
+grep -q "wave_height_gradient(a.xy).y" "$dir.log" || { echo "FAIL: the notes' gradient did not fail on its slope"; cat "$dir.log"; status=1; }
 # T x B, the normal pointing into the water, must not pass step04's exercise 2.
 dir="$work/downward-normal"
 "$exe" prepare step04_fbm 2 "$dir" > /dev/null
