@@ -43,4 +43,14 @@ inline double height(const std::vector<DirectionalWave>& waves, double x, double
     return h;
 }
 
+// The flat facet shading's normal (facet.glsl): two edges of a triangle crossed, normalised and
+// turned to face up (+y).
+struct Vector { double x, y, z; };
+inline Vector facet_normal(const Vector& a, const Vector& b) {
+    Vector n{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    const double sign = n.y < 0 ? -1.0 : 1.0;
+    return {sign * n.x / length, sign * n.y / length, sign * n.z / length};
+}
+
 }  // namespace step02

@@ -119,6 +119,27 @@ std::vector<Exercise> all() {
                  1e-4, -60, 60,
                  [](const ocean::ShaderProgram& p) { step02::upload_waves(p, kStep02Waves, kCheckTime); });
          }},
+        {"step02_sine3d", 2, "A facet's normal", "facet.glsl", "vec3 facet_normal(vec3 along_x, vec3 along_y) {",
+         "    // TODO (exercise 2): the unit normal of the facet spanned by the two edges, facing up.\n"
+         "    return vec3(0.0, 1.0, 0.0);\n",
+         "Write facet_normal: the cross product of the two edges is perpendicular to both; normalise it, and\n"
+         "turn it up (y >= 0) whichever way round the edges come. The starter's normal is straight up: every\n"
+         "facet is shaded alike and the waves' shape is hard to read (step02 draws with facet_shading on).",
+         "normalize(cross(along_x, along_y)), then negate it when its y is negative: the order of the edges "
+         "(and the screen's orientation) decides which side the cross product points to.",
+         [](const fs::path& work) {
+             const auto component = [&](const char* swizzle, double step02::Vector::*part) {
+                 return check_values(
+                     work, "facet.glsl", std::string("facet_normal(a.xyz, b.xyz).") + swizzle,
+                     [part](const glm::dvec4& a, const glm::dvec4& b) {
+                         return step02::facet_normal({a.x, a.y, a.z}, {b.x, b.y, b.z}).*part;
+                     },
+                     1e-4, -1, 1);
+             };
+             return both(component("x", &step02::Vector::x), [&] {
+                 return both(component("y", &step02::Vector::y), [&] { return component("z", &step02::Vector::z); });
+             });
+         }},
         {"step03_lighting", 1, "Lambert and Blinn-Phong", "lighting.glsl", "LightTerms light_terms(vec3 normal, vec3 to_eye) {",
          "    // TODO (exercise 1): ambient, Lambert diffuse and Blinn-Phong specular.\n"
          "    LightTerms t;\n    t.ambient = u_ambient_color;\n    t.diffuse = vec3(0.0);\n    t.specular = vec3(0.0);\n"

@@ -3,6 +3,7 @@
 // Colour follows height (deep troughs, pale crests). The optional facet shading takes each
 // triangle's normal from screen-space derivatives of its position: cheap, flat, and a
 // preview of why step03 computes normals properly.
+#include "facet.glsl"
 
 in vec3 v_world_position;
 out vec4 out_color;
@@ -20,8 +21,7 @@ void main() {
     float h = clamp(0.5 + 0.5 * v_world_position.y / max(u_height_extent, 1e-4), 0.0, 1.0);
     vec3 color = mix(vec3(0.02, 0.12, 0.25), vec3(0.35, 0.75, 0.85), h);
     if (u_facet_shading) {
-        vec3 facet = normalize(cross(dFdx(v_world_position), dFdy(v_world_position)));
-        if (facet.y < 0.0) facet = -facet;
+        vec3 facet = facet_normal(dFdx(v_world_position), dFdy(v_world_position));
         color *= 0.35 + 0.65 * max(dot(facet, normalize(vec3(0.4, 0.8, 0.3))), 0.0);
     }
     // Fade into the background colour with distance, so the plane's edge is soft.

@@ -39,6 +39,11 @@ dir="$work/seed-gradient"
 sed -i 's|    return vec3(wave_height(xz), 0.0, 0.0);|    vec3 r = vec3(0.0);\n    for (int i = 0; i < u_wave_count; ++i) {\n        float angle = dot(u_waves[i].xy, xz) * u_waves[i].z + u_wave_phases[i];\n        r += vec3(u_waves[i].w * sin(angle), cos(angle) * u_waves[i].xy);\n    }\n    return r;|' "$dir/wave_gradient.glsl"
 if "$exe" check step03_lighting 2 "$dir" > "$dir.log" 2>&1; then echo "FAIL: the notes' gradient without w a passes"; status=1; fi
 grep -q "wave_height_gradient(a.xy).y" "$dir.log" || { echo "FAIL: the notes' gradient did not fail on its slope"; cat "$dir.log"; status=1; }
+# A facet normal that is not turned up (half the facets face down) must not pass step02's exercise 2.
+dir="$work/unturned-facet"
+"$exe" prepare step02_sine3d 2 "$dir" > /dev/null
+sed -i 's|    return vec3(0.0, 1.0, 0.0);|    return normalize(cross(along_x, along_y));|' "$dir/facet.glsl"
+if "$exe" check step02_sine3d 2 "$dir" > /dev/null 2>&1; then echo "FAIL: the facet normal not turned up passes"; status=1; fi
 # T x B, the normal pointing into the water, must not pass step04's exercise 2.
 dir="$work/downward-normal"
 "$exe" prepare step04_fbm 2 "$dir" > /dev/null

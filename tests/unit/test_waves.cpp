@@ -125,4 +125,24 @@ TEST(Step02Waves, ReducesToStep01AlongX) {
         EXPECT_NEAR(step02::height(waves, x, 123.0, 0.8), step01::wave_height(flat, x, 0.8), 1e-12);
 }
 
+// step02's facet normal: perpendicular to both edges, of unit length, facing up whatever the
+// edges' order, and (0, 1, 0) for a level triangle.
+TEST(Step02Facet, NormalIsPerpendicularUnitAndUp) {
+    const step02::Vector level = step02::facet_normal({1, 0, 0}, {0, 0, 1});
+    EXPECT_NEAR(level.x, 0.0, 1e-15);
+    EXPECT_NEAR(level.y, 1.0, 1e-15);
+    EXPECT_NEAR(level.z, 0.0, 1e-15);
+    for (int i = 0; i < 100; ++i) {
+        const step02::Vector a{std::cos(i * 0.7), 0.3 * std::sin(i * 1.3), std::sin(i * 0.7)};
+        const step02::Vector b{-std::sin(i * 0.9) * 0.8, 0.4 * std::cos(i * 0.5), std::cos(i * 0.9)};
+        const step02::Vector n = step02::facet_normal(a, b), swapped = step02::facet_normal(b, a);
+        EXPECT_NEAR(n.x * a.x + n.y * a.y + n.z * a.z, 0.0, 1e-12);
+        EXPECT_NEAR(n.x * b.x + n.y * b.y + n.z * b.z, 0.0, 1e-12);
+        EXPECT_NEAR(n.x * n.x + n.y * n.y + n.z * n.z, 1.0, 1e-12);
+        EXPECT_GE(n.y, 0.0);
+        EXPECT_NEAR(swapped.x, n.x, 1e-12);
+        EXPECT_NEAR(swapped.y, n.y, 1e-12);
+    }
+}
+
 }  // namespace
