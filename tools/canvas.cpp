@@ -75,6 +75,15 @@ std::vector<int> code_points(const std::string& text) {
     return out;
 }
 
+// How far the pen moves after character i of `points`, in pixels at font scale s: its advance,
+// and the kerning with the next one.
+float pen_advance(const Font& f, const std::vector<int>& points, std::size_t i, float s) {
+    int advance = 0, bearing = 0;
+    stbtt_GetCodepointHMetrics(&f.info, points[i], &advance, &bearing);
+    const int kern = i + 1 < points.size() ? stbtt_GetCodepointKernAdvance(&f.info, points[i], points[i + 1]) : 0;
+    return float(advance + kern) * s;
+}
+
 // The font's pixel height for a `scale` of the old segment font (7 pixels a scale, plus leading).
 float pixel_height(int scale) { return 8.0f * float(scale); }
 
@@ -98,8 +107,6 @@ void Canvas::text(int x, int y, const std::string& text, Colour colour, int scal
     float pen = float(x);
     const std::vector<int> points = code_points(text);
     for (std::size_t i = 0; i < points.size(); ++i) {
-        int advance = 0, bearing = 0;
-        stbtt_GetCodepointHMetrics(&f.info, points[i], &advance, &bearing);
         int w = 0, h = 0, x0 = 0, y0 = 0;
         const float shift = pen - std::floor(pen);
         unsigned char* bitmap = stbtt_GetCodepointBitmapSubpixel(&f.info, s, s, shift, 0.0f, points[i], &w, &h, &x0, &y0);
@@ -107,8 +114,7 @@ void Canvas::text(int x, int y, const std::string& text, Colour colour, int scal
             for (int k = 0; k < w; ++k)
                 blend(int(std::floor(pen)) + x0 + k, baseline + y0 + j, colour, bitmap[j * w + k]);
         stbtt_FreeBitmap(bitmap, nullptr);
-        pen += float(advance) * s;
-        if (i + 1 < points.size()) pen += float(stbtt_GetCodepointKernAdvance(&f.info, points[i], points[i + 1])) * s;
+        pen += pen_advance(f, points, i, s);
     }
 }
 
@@ -118,12 +124,7 @@ int Canvas::text_width(const std::string& text, int scale) {
     const float s = stbtt_ScaleForPixelHeight(&f.info, pixel_height(scale));
     float width = 0;
     const std::vector<int> points = code_points(text);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        int advance = 0, bearing = 0;
-        stbtt_GetCodepointHMetrics(&f.info, points[i], &advance, &bearing);
-        width += float(advance) * s;
-        if (i + 1 < points.size()) width += float(stbtt_GetCodepointKernAdvance(&f.info, points[i], points[i + 1])) * s;
-    }
+    for (std::size_t i = 0; i < points.size(); ++i) width += pen_advance(f, points, i, s);
     return int(std::ceil(width));
 }
 

@@ -6,6 +6,7 @@
 #include "common/shader.hpp"
 #include "step03_lighting/normals.hpp"
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <filesystem>
@@ -58,7 +59,11 @@ Verdict check_values(const fs::path& work, const std::string& include, const std
                      const ValueReference& reference, double tolerance, double low, double high,
                      const SetUniforms& set_uniforms = {});
 
-// Both checks must pass; the first failure is the verdict.
-Verdict both(const Verdict& first, const std::function<Verdict()>& second);
+// A vec3 `expression` held to `reference`, component by component as check_values does (x, then
+// y, then z): the first component that fails is the verdict.
+using VectorReference = std::function<glm::dvec3(const glm::dvec4& a, const glm::dvec4& b)>;
+Verdict check_vector(const fs::path& work, const std::string& include, const std::string& expression,
+                     const VectorReference& reference, double tolerance, double low, double high,
+                     const SetUniforms& set_uniforms = {});
 
 }  // namespace exercises

@@ -119,6 +119,18 @@ Verdict check_values(const fs::path& work, const std::string& include, const std
     return compare(std::get<std::vector<float>>(result), expected, expression, tolerance, "random inputs");
 }
 
-Verdict both(const Verdict& first, const std::function<Verdict()>& second) { return first.pass ? second() : first; }
+Verdict check_vector(const fs::path& work, const std::string& include, const std::string& expression,
+                     const VectorReference& reference, double tolerance, double low, double high,
+                     const SetUniforms& set_uniforms) {
+    Verdict verdict;
+    for (int c = 0; c < 3; ++c) {
+        verdict = check_values(
+            work, include, expression + "." + "xyz"[c],
+            [&](const glm::dvec4& a, const glm::dvec4& b) { return reference(a, b)[c]; }, tolerance, low, high,
+            set_uniforms);
+        if (!verdict.pass) break;
+    }
+    return verdict;
+}
 
 }  // namespace exercises

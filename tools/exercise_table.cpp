@@ -128,17 +128,13 @@ std::vector<Exercise> all() {
          "normalize(cross(along_x, along_y)), then negate it when its y is negative: the order of the edges "
          "(and the screen's orientation) decides which side the cross product points to.",
          [](const fs::path& work) {
-             const auto component = [&](const char* swizzle, double step02::Vector::*part) {
-                 return check_values(
-                     work, "facet.glsl", std::string("facet_normal(a.xyz, b.xyz).") + swizzle,
-                     [part](const glm::dvec4& a, const glm::dvec4& b) {
-                         return step02::facet_normal({a.x, a.y, a.z}, {b.x, b.y, b.z}).*part;
-                     },
-                     1e-4, -1, 1);
-             };
-             return both(component("x", &step02::Vector::x), [&] {
-                 return both(component("y", &step02::Vector::y), [&] { return component("z", &step02::Vector::z); });
-             });
+             return check_vector(
+                 work, "facet.glsl", "facet_normal(a.xyz, b.xyz)",
+                 [](const glm::dvec4& a, const glm::dvec4& b) {
+                     const step02::Vector n = step02::facet_normal({a.x, a.y, a.z}, {b.x, b.y, b.z});
+                     return glm::dvec3(n.x, n.y, n.z);
+                 },
+                 1e-4, -1, 1);
          }},
         {"step03_lighting", 1, "Lambert and Blinn-Phong", "lighting.glsl", "LightTerms light_terms(vec3 normal, vec3 to_eye) {",
          "    // TODO (exercise 1): ambient, Lambert diffuse and Blinn-Phong specular.\n"
@@ -162,18 +158,13 @@ std::vector<Exercise> all() {
          "The derivative of a sin(dot(d, xz) w + phase) along x is a w cos(angle) d.x (the chain rule brings out w "
          "and the direction); the notes' 2.2 forgets the w a. u_waves[i] = (d.x, d.z, w, a).",
          [](const fs::path& work) {
-             const auto component = [&](const char* swizzle, double step03::HeightGradient::*part) {
-                 return check_values(
-                     work, "wave_gradient.glsl", std::string("wave_height_gradient(a.xy).") + swizzle,
-                     [part](const glm::dvec4& a, const glm::dvec4&) {
-                         return step03::height_and_gradient(kStep02Waves, a.x, a.y, kCheckTime).*part;
-                     },
-                     1e-4, -60, 60, [](const ocean::ShaderProgram& p) { step02::upload_waves(p, kStep02Waves, kCheckTime); });
-             };
-             return both(component("x", &step03::HeightGradient::height), [&] {
-                 return both(component("y", &step03::HeightGradient::dh_dx),
-                             [&] { return component("z", &step03::HeightGradient::dh_dz); });
-             });
+             return check_vector(
+                 work, "wave_gradient.glsl", "wave_height_gradient(a.xy)",
+                 [](const glm::dvec4& a, const glm::dvec4&) {
+                     const auto g = step03::height_and_gradient(kStep02Waves, a.x, a.y, kCheckTime);
+                     return glm::dvec3(g.height, g.dh_dx, g.dh_dz);
+                 },
+                 1e-4, -60, 60, [](const ocean::ShaderProgram& p) { step02::upload_waves(p, kStep02Waves, kCheckTime); });
          }},
         {"step04_fbm", 1, "The exp-sine wave and its derivatives", "fbm.glsl", "vec3 wave_shape(float theta) {",
          "    // TODO (exercise 1): (W, W', W'') of the exp-sine wave, mean removed. For now, a sine.\n"
@@ -184,17 +175,13 @@ std::vector<Exercise> all() {
          "d/dtheta e^(sin theta - 1) = e^(sin theta - 1) cos theta; differentiate that product again: "
          "e^(sin theta - 1)(cos^2 theta - sin theta). The mean is subtracted from W only.",
          [](const fs::path& work) {
-             using step04::Shape;
-             const auto component = [&](const char* swizzle, double step04::ShapeValue::*part) {
-                 return check_values(
-                     work, "fbm.glsl", std::string("wave_shape(a.x).") + swizzle,
-                     [part](const glm::dvec4& a, const glm::dvec4&) { return step04::wave_shape(Shape::ExpSine, a.x).*part; },
-                     1e-4, -10, 10);
-             };
-             return both(component("x", &step04::ShapeValue::value), [&] {
-                 return both(component("y", &step04::ShapeValue::first),
-                             [&] { return component("z", &step04::ShapeValue::second); });
-             });
+             return check_vector(
+                 work, "fbm.glsl", "wave_shape(a.x)",
+                 [](const glm::dvec4& a, const glm::dvec4&) {
+                     const step04::ShapeValue w = step04::wave_shape(step04::Shape::ExpSine, a.x);
+                     return glm::dvec3(w.value, w.first, w.second);
+                 },
+                 1e-4, -10, 10);
          }},
         {"step04_fbm", 2, "The normal from the gradient", "fbm.glsl", "vec3 fbm_normal(vec2 gradient) {",
          "    // TODO (exercise 2): the unit normal from (dh/dx, dh/dz).\n    return vec3(0.0, 1.0, 0.0);\n",
@@ -203,15 +190,13 @@ std::vector<Exercise> all() {
          "B x T = (-dh/dx, 1, -dh/dz) before normalising; T x B points down, into the water (then the light is "
          "on the wrong side of every wave).",
          [](const fs::path& work) {
-             const auto component = [&](const char* swizzle, double step03::Vec3::*part) {
-                 return check_values(
-                     work, "fbm.glsl", std::string("fbm_normal(a.xy).") + swizzle,
-                     [part](const glm::dvec4& a, const glm::dvec4&) { return step03::normal({0.0, a.x, a.y}).*part; },
-                     1e-4, -2, 2);
-             };
-             return both(component("x", &step03::Vec3::x), [&] {
-                 return both(component("y", &step03::Vec3::y), [&] { return component("z", &step03::Vec3::z); });
-             });
+             return check_vector(
+                 work, "fbm.glsl", "fbm_normal(a.xy)",
+                 [](const glm::dvec4& a, const glm::dvec4&) {
+                     const step03::Vec3 n = step03::normal({0.0, a.x, a.y});
+                     return glm::dvec3(n.x, n.y, n.z);
+                 },
+                 1e-4, -2, 2);
          }},
         {"step05_fft", 1, "Where the surface folds", "ocean_maps.glsl", "float jacobian(vec4 displacement, vec4 slopes) {",
          "    // TODO (exercise 1): the Jacobian of the choppy displacement.\n    return 1.0;\n",
@@ -236,15 +221,13 @@ std::vector<Exercise> all() {
          "slopes = (dh/dx, dh/dz, l dDx/dx, l dDz/dz), displacement.w = l dDx/dz (= l dDz/dx). The order of the "
          "cross product decides up or down: dP/dz x dP/dx points up for a flat sea.",
          [](const fs::path& work) {
-             const auto component = [&](const char* swizzle, int index) {
-                 return check_values(
-                     work, "ocean_maps.glsl", std::string("choppy_normal(") + kStep05Sample + ")." + swizzle,
-                     [index](const glm::dvec4& a, const glm::dvec4& b) {
-                         return step05_cell(a, b).normal(0, 1.0)[std::size_t(index)];
-                     },
-                     1e-4, -0.6, 0.6);
-             };
-             return both(component("x", 0), [&] { return both(component("y", 1), [&] { return component("z", 2); }); });
+             return check_vector(
+                 work, "ocean_maps.glsl", std::string("choppy_normal(") + kStep05Sample + ")",
+                 [](const glm::dvec4& a, const glm::dvec4& b) {
+                     const auto n = step05_cell(a, b).normal(0, 1.0);
+                     return glm::dvec3(n[0], n[1], n[2]);
+                 },
+                 1e-4, -0.6, 0.6);
          }},
         {"step06_foam_sky", 1, "Schlick's Fresnel", "shading.glsl", "float fresnel_schlick(float cos_theta, float f0) {",
          "    // TODO (exercise 1): how much light the water reflects, seen at cos_theta from the normal.\n"

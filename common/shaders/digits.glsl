@@ -63,9 +63,12 @@ float number_coverage(float value, int decimals, vec2 pixel, vec2 centre, vec2 s
 // The decimals a label step needs (1, 2, 5 x 10^n): none for 5, one for 0.5, two for 0.05.
 int decimals_for(float step) { return max(0, int(-floor(log(step) / log(10.0) + 1e-4))); }
 
-// A round step between labels for an axis of `span` units: 1, 2 or 5 x 10^n, 4 to 10 labels.
+// The power of ten that divides an axis of `span` units into 4 to 40 parts: a plot's grid spacing.
+float grid_spacing(float span) { return pow(10.0, floor(log(span / 4.0) / log(10.0))); }
+
+// A round step between labels for an axis of `span` units: 1, 2 or 5 grid spacings, 4 to 10 labels.
 float label_step(float span) {
-    float spacing = pow(10.0, floor(log(span / 4.0) / log(10.0)));
+    float spacing = grid_spacing(span);
     float lines = span / spacing;
     return spacing * (lines > 20.0 ? 5.0 : lines > 10.0 ? 2.0 : 1.0);
 }

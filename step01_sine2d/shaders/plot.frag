@@ -25,7 +25,7 @@ float line(float value, float curve, float slope, vec2 metres_per_pixel, float w
 
 // Thin lines along one axis at a round spacing (1, 10, 100 ... or 0.1 ...) giving 4 to 40 lines.
 float grid(float coordinate, float span, float metres_per_pixel) {
-    float spacing = pow(10.0, floor(log(span / 4.0) / log(10.0)));
+    float spacing = grid_spacing(span);
     float d = abs(fract(coordinate / spacing + 0.5) - 0.5) * spacing / metres_per_pixel;
     return clamp(1.0 - d, 0.0, 1.0);
 }
