@@ -1,11 +1,12 @@
 #version 450 core
 // Chapter 5.3 (foam.hpp is the CPU reference): at each texel of each foam level, the Jacobian of
-// the summed surface (all cascades, as rendered) at the texel's world position; foam decays by
-// exp(-rate dt) and grows where J falls below the threshold, at a rate times dt.
+// the summed surface (all cascades, as rendered) at the texel's world position; foam is made where
+// J falls below the threshold and fades, integrated exactly over the frame (foam_step.glsl).
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "cascades.glsl"
 // FOAM_LEVELS and the clipmap's layout:
 #include "foam_map.glsl"
+#include "foam_step.glsl"
 
 layout(r32f, binding = 0) uniform image2DArray u_foam_image;
 
@@ -36,10 +37,10 @@ void main() {
     ivec2 previous = u_previous_origin[level];
     bool entered = any(lessThan(cell, previous)) || any(greaterThanEqual(cell, previous + u_n));
     float foam = imageLoad(u_foam_image, id).r;
-    float injection = u_injection * max(0.0, u_threshold - j);
+    float injection_rate = u_injection * max(0.0, u_threshold - j);
     if (u_warm_start || entered)  // where injection and decay balance if J stayed as it is
-        foam = injection / max(u_decay_rate, 0.1);
+        foam = clamp(injection_rate / max(u_decay_rate, 0.1), 0.0, 1.0);
     else
-        foam = foam * exp(-u_decay_rate * u_dt) + injection * u_dt;
-    imageStore(u_foam_image, id, vec4(clamp(foam, 0.0, 1.0)));
+        foam = foam_step(foam, injection_rate, u_decay_rate, u_dt);
+    imageStore(u_foam_image, id, vec4(foam));
 }

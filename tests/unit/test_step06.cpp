@@ -127,20 +127,57 @@ TEST(Step06Foam, ImpulseDecaysExponentiallyWhateverTheFrameRate) {
         for (int i = 0; i < int(std::lround(1 / dt)); ++i) foam = step06::foam_step(foam, 1.0, dt, s);
         EXPECT_NEAR(foam / std::exp(-s.decay_rate), 1.0, 1e-9) << "dt = " << dt;
     }
-    // Injection is a rate: the foam made in one second hardly depends on the step.
-    auto grown = [&](double dt) {
-        double foam = 0;
-        for (int i = 0; i < int(std::lround(1 / dt)); ++i) foam = step06::foam_step(foam, 0.6, dt, s);
-        return foam;
+    // Injection is a rate: foam grows where J is below the threshold.
+    double foam = 0;
+    for (int i = 0; i < 30; ++i) foam = step06::foam_step(foam, 0.6, 1.0 / 30, s);
+    EXPECT_GT(foam, 0.3) << "J = 0.6 is below the threshold: foam grows";
+}
+
+// The same foam at 6 and at 60 frames a second. For a J that holds still the step is exact, so the
+// two agree to rounding (the explicit step f e^{-r dt} + q dt they replace made 7 % more foam at 6
+// frames a second; it is computed here to show that this test tells the two apart). For a J that
+// changes (a crest passing a point every 8 s), each frame holds J for dt, and the two clocks differ
+// by what that costs: -0.3 % at 6 frames a second (the explicit step: +5.8 %).
+TEST(Step06Foam, TheSameFoamAtSixAndSixtyFramesASecond) {
+    step06::FoamSettings s;
+    s.injection = 2;  // below the clamp: 2 * 0.15 / 0.8 = 0.375 at the steady state
+    auto run = [&](double fps, double seconds, auto jacobian_at, bool explicit_step) {
+        const double dt = 1 / fps;
+        double foam = 0, sum = 0;
+        const int frames = int(std::lround(seconds * fps));
+        for (int i = 0; i < frames; ++i) {
+            const double j = jacobian_at((i + 1) * dt);  // the sea is simulated to the frame's end first
+            if (explicit_step)
+                foam = std::clamp(foam * std::exp(-s.decay_rate * dt) +
+                                      s.injection * std::max(0.0, s.threshold - j) * dt, 0.0, 1.0);
+            else
+                foam = step06::foam_step(foam, j, dt, s);
+            sum += foam;
+        }
+        return std::pair{foam, sum / frames};
     };
-    EXPECT_GT(grown(1.0 / 30), 0.3) << "J = 0.6 is below the threshold: foam grows";
-    EXPECT_NEAR(grown(1.0 / 30), grown(1.0 / 120), 0.01);
+    auto still = [](double) { return 0.6; };
+    for (double seconds : {0.5, 1.0, 2.0, 10.0}) {
+        const double at6 = run(6, seconds, still, false).first, at60 = run(60, seconds, still, false).first;
+        EXPECT_NEAR(at6 / at60, 1.0, 1e-12) << "after " << seconds << " s";
+    }
+    const double euler6 = run(6, 1.0, still, true).first, euler60 = run(60, 1.0, still, true).first;
+    std::printf("after 1 s at J = 0.6: exact %.6f at 6 and 60 fps; explicit step %.6f at 6, %.6f at 60 (%+.1f %%)\n",
+                run(6, 1.0, still, false).first, euler6, euler60, 100 * (euler6 / euler60 - 1));
+    EXPECT_GT(std::abs(euler6 / euler60 - 1), 0.03) << "the explicit step depends on the frame rate";
+
+    auto passing_crest = [](double t) { return 1.0 - 0.5 * std::cos(2 * M_PI * t / 8); };
+    const double mean6 = run(6, 16, passing_crest, false).second, mean60 = run(60, 16, passing_crest, false).second;
+    const double euler_mean6 = run(6, 16, passing_crest, true).second, euler_mean60 = run(60, 16, passing_crest, true).second;
+    std::printf("a passing crest, mean foam over 16 s: %.5f at 6 fps, %.5f at 60 (%+.2f %%); explicit step %+.2f %%\n",
+                mean6, mean60, 100 * (mean6 / mean60 - 1), 100 * (euler_mean6 / euler_mean60 - 1));
+    EXPECT_NEAR(mean6 / mean60, 1.0, 0.01);
 }
 
 TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
     // Below the clamp (J = 0.7, threshold 0.75, injection 8: 8 * 0.05 / 0.8 = 0.5), the warm start is the
     // balance of injection and decay: stepping from it, or from zero long enough, stays there
-    // (the discrete fixed point is I dt / (1 - e^{-r dt}), which tends to I / r as dt -> 0).
+    // (q / r is the exact step's fixed point at any dt).
     const step06::FoamSettings s;
     const double j = 0.7;
     const double steady = step06::foam_steady_state(j, s);
@@ -149,7 +186,8 @@ TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
     double foam = 0;
     for (int i = 0; i < 240 * 30; ++i) foam = step06::foam_step(foam, j, dt, s);  // 30 s: 24 decay times
     EXPECT_NEAR(foam, steady, 0.005) << "from nothing, foam settles at the warm start's value";
-    EXPECT_NEAR(step06::foam_step(steady, j, dt, s), steady, 1e-5) << "the warm start does not jump";
+    EXPECT_NEAR(step06::foam_step(steady, j, dt, s), steady, 1e-12) << "the warm start does not jump";
+    EXPECT_NEAR(step06::foam_step(steady, j, 0.5, s), steady, 1e-12) << "at any frame time";
     // Above the clamp it is 1, and where J is above the threshold nothing is made.
     EXPECT_EQ(step06::foam_steady_state(0.0, s), 1.0);
     EXPECT_EQ(step06::foam_steady_state(0.8, s), 0.0);
