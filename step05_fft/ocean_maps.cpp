@@ -19,6 +19,22 @@ double reduced_phase(double omega, double time) {
     return phase < 0 ? phase + 2 * kPi : phase;
 }
 
+Complex evolve_mode(Complex h0_k, Complex h0_minus_k, double phase) {
+    const Complex rotation(std::cos(phase), -std::sin(phase));  // e^{-i omega t}: along +k
+    return h0_k * rotation + std::conj(h0_minus_k) * std::conj(rotation);
+}
+
+std::array<Complex, 4> packed_pairs(Complex h, double kx, double kz) {
+    const double k = std::hypot(kx, kz);
+    if (k == 0) return {};  // the mean level: zero
+    const Complex i_unit(0, 1);
+    const Complex dx = i_unit * (kx / k) * h, dz = i_unit * (kz / k) * h;  // +i: sharp crests
+    const Complex sx = i_unit * kx * h, sz = i_unit * kz * h;
+    // d/dx of a mode is a factor i kx: dDx/dx = i kx (i kx/|k| h~) = -kx^2/|k| h~.
+    const Complex dxx = -(kx * kx / k) * h, dzz = -(kz * kz / k) * h, dxz = -(kx * kz / k) * h;
+    return {h + i_unit * dx, dz + i_unit * sx, sz + i_unit * dxx, dzz + i_unit * dxz};
+}
+
 ComplexField height_spectrum(const InitialSpectrum& s, double time) {
     const int n = s.n;
     ComplexField h(std::size_t(n) * n);
@@ -26,9 +42,7 @@ ComplexField height_spectrum(const InitialSpectrum& s, double time) {
         for (int i = 0; i < n; ++i) {
             const std::size_t index = std::size_t(j) * n + i;
             const std::size_t minus = std::size_t((n - j) % n) * n + std::size_t((n - i) % n);
-            const double phase = reduced_phase(s.omega[index], time);
-            const Complex rotation(std::cos(phase), -std::sin(phase));  // e^{-i omega t}: along +k
-            h[index] = s.h0[index] * rotation + std::conj(s.h0[minus]) * std::conj(rotation);
+            h[index] = evolve_mode(s.h0[index], s.h0[minus], reduced_phase(s.omega[index], time));
         }
     return h;
 }
@@ -37,23 +51,12 @@ std::array<ComplexField, 4> packed_spectra(const InitialSpectrum& s, double time
     const int n = s.n;
     std::array<ComplexField, 4> out;
     for (auto& field : out) field.assign(std::size_t(n) * n, {0, 0});
-    const Complex i_unit(0, 1);
     const ComplexField heights = height_spectrum(s, time);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const std::size_t index = std::size_t(j) * n + i;
-            const Complex h = heights[index];
-            const double kx = wavenumber(i, n, s.patch_size), kz = wavenumber(j, n, s.patch_size);
-            const double k = std::hypot(kx, kz);
-            if (k == 0) continue;  // the mean level: zero
-            const Complex dx = i_unit * (kx / k) * h, dz = i_unit * (kz / k) * h;  // +i: sharp crests
-            const Complex sx = i_unit * kx * h, sz = i_unit * kz * h;
-            // d/dx of a mode is a factor i kx: dDx/dx = i kx (i kx/|k| h~) = -kx^2/|k| h~.
-            const Complex dxx = -(kx * kx / k) * h, dzz = -(kz * kz / k) * h, dxz = -(kx * kz / k) * h;
-            out[0][index] = h + i_unit * dx;
-            out[1][index] = dz + i_unit * sx;
-            out[2][index] = sz + i_unit * dxx;
-            out[3][index] = dzz + i_unit * dxz;
+            const auto pairs = packed_pairs(heights[index], wavenumber(i, n, s.patch_size), wavenumber(j, n, s.patch_size));
+            for (int f = 0; f < 4; ++f) out[std::size_t(f)][index] = pairs[std::size_t(f)];
         }
     return out;
 }

@@ -42,6 +42,12 @@ const char* field_name(Field f);  // "height", "displacement_x", ...
 // rotation applied to h0(k) is then e^{-i phase}).
 double reduced_phase(double omega, double time);
 
+// One mode (mode.glsl's evolve_mode): h0(k) e^{-i phase} + conj(h0(-k)) e^{+i phase}.
+Complex evolve_mode(Complex h0_k, Complex h0_minus_k, double phase);
+// One mode's four packed pairs from h~ at k = (kx, kz), kPacking's order (mode.glsl's packed_pairs);
+// all zero at k = 0.
+std::array<Complex, 4> packed_pairs(Complex h, double kx, double kz);
+
 // h~(k, t) alone (Hermitian: its inverse transform is real).
 ComplexField height_spectrum(const InitialSpectrum& s, double time);
 // The four packed spectra at time t.

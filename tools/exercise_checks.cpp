@@ -4,6 +4,10 @@
 #include "tools/exercise.hpp"
 
 #include "common/gl.hpp"
+#include "step05_fft/gpu_ocean.hpp"
+
+#include <map>
+#include <memory>
 
 #include <cmath>
 #include <fstream>
@@ -24,7 +28,10 @@ std::variant<std::vector<float>, std::string> evaluate_on_gpu(
     const fs::path& work, const std::string& include, const std::string& declarations, const std::string& expression,
     const std::vector<glm::vec4>& packed, int stride, const std::function<void(const ocean::ShaderProgram&)>& set_uniforms) {
     const fs::path shader = work / ".check.comp";
-    std::ofstream(shader) << "#version 450 core\nlayout(local_size_x = 64) in;\n#include \"" << include << "\"\n"
+    std::ostringstream includes;  // `include` may name several files, separated by commas
+    std::istringstream names(include);
+    for (std::string name; std::getline(names, name, ',');) includes << "#include \"" << name << "\"\n";
+    std::ofstream(shader) << "#version 450 core\nlayout(local_size_x = 64) in;\n" << includes.str()
                           << "layout(std430, binding = 0) readonly buffer In { vec4 inputs[]; };\n"
                              "layout(std430, binding = 1) writeonly buffer Out { float outputs[]; };\n"
                              "const int STRIDE = " << stride << ";\n"
@@ -131,6 +138,66 @@ Verdict check_vector(const fs::path& work, const std::string& include, const std
         if (!verdict.pass) break;
     }
     return verdict;
+}
+
+Verdict check_fft(const fs::path& work) {
+    // The chapter's programs, each stage file taken from the work folder when it is there.
+    std::map<std::string, std::unique_ptr<ocean::ShaderProgram>> programs;
+    std::string build_error;
+    const ocean::ProgramFactory factory = [&](const std::string& name, const std::vector<std::string>& files,
+                                              const std::vector<std::string>& defines) -> ocean::ShaderProgram* {
+        std::string key = name;
+        for (const auto& d : defines) key += "|" + d;
+        auto& slot = programs[key];
+        if (!slot) {
+            std::vector<std::string> paths;
+            for (const auto& f : files) {
+                const fs::path own = work / fs::path(f).filename();
+                paths.push_back(fs::exists(own) ? own.string() : std::string(OCEAN_SOURCE_DIR) + "/" + f);
+            }
+            slot = std::make_unique<ocean::ShaderProgram>(name, paths, std::vector<std::string>{}, defines);
+            if (auto error = slot->build()) {
+                build_error = *error;
+                return nullptr;
+            }
+        }
+        return slot.get();
+    };
+    std::ostringstream detail;
+    for (int n : {64, 128, 256, 512}) {
+        step05::SpectrumParams p;
+        p.resolution = n;
+        const step05::InitialSpectrum sizes = step05::initial_spectrum(p);  // only to size the buffers
+        step05::GpuOcean ocean(factory);
+        ocean.set_spectra({&sizes});
+        std::mt19937 random{unsigned(n)};
+        std::uniform_real_distribution<float> uniform(-1, 1);
+        std::vector<float> input(std::size_t(n) * n * 2);  // the first of the four fields
+        for (float& v : input) v = uniform(random);
+        glNamedBufferSubData(ocean.spectra_buffer(), 0, GLsizeiptr(input.size() * sizeof(float)), input.data());
+        try {
+            ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), 1);
+        } catch (const std::exception& error) {
+            return {false, "your shader does not build:\n" + (build_error.empty() ? error.what() : build_error)};
+        }
+        const std::vector<float> output = ocean.read_fields();
+        step05::ComplexField field(std::size_t(n) * n);
+        for (std::size_t i = 0; i < field.size(); ++i) field[i] = {input[2 * i], input[2 * i + 1]};
+        const step05::ComplexField reference = step05::inverse_fft_2d(field, n);
+        double worst = 0, largest = 0;
+        std::size_t worst_at = 0;
+        for (std::size_t i = 0; i < reference.size(); ++i) {
+            const std::complex<double> gpu(output[2 * i], output[2 * i + 1]);
+            const double difference = std::isfinite(gpu.real() + gpu.imag()) ? std::abs(gpu - reference[i]) : 1e30;
+            largest = std::max(largest, std::abs(reference[i]));
+            if (difference > worst) worst = difference, worst_at = i;
+        }
+        detail << "N = " << n << ": worst |yours - reference| " << worst << " of " << largest << " (at x = "
+               << worst_at % std::size_t(n) << ", z = " << worst_at / std::size_t(n) << ")";
+        if (worst > 1e-4 * largest) return {false, detail.str()};
+        detail << "; ";
+    }
+    return {true, detail.str() + "the inverse 2D transform of random spectra"};
 }
 
 }  // namespace exercises

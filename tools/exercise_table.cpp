@@ -7,7 +7,10 @@
 #include "step03_lighting/lighting.hpp"
 #include "step04_fbm/fbm.hpp"
 #include "step05_fft/ocean_maps.hpp"
+#include "step06_foam_sky/foam.hpp"
+#include "step06_foam_sky/fog.hpp"
 #include "step06_foam_sky/shading.hpp"
+#include "step06_foam_sky/tessellation.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -74,6 +77,31 @@ Verdict check_step03_term(const fs::path& work, const std::string& term, double 
         },
         &sun);
 }
+
+// step05's packed pairs, all eight real numbers one after the other (pair f, real then imaginary).
+Verdict check_packed_pairs(const fs::path& work) {
+    Verdict verdict;
+    for (int f = 0; f < 4 && (f == 0 || verdict.pass); ++f)
+        for (int part = 0; part < 2 && (part == 0 || verdict.pass); ++part)
+            verdict = check_values(
+                work, "ocean_layout.glsl,mode.glsl",
+                "packed_pairs(a.xy, 2.0 * a.zw)[" + std::to_string(f) + "]." + "xy"[part],
+                [f, part](const glm::dvec4& a, const glm::dvec4&) {
+                    const auto pairs = step05::packed_pairs({a.x, a.y}, 2 * a.z, 2 * a.w);
+                    return part == 0 ? pairs[std::size_t(f)].real() : pairs[std::size_t(f)].imag();
+                },
+                1e-4, -1, 1);
+    return verdict;
+}
+
+// step06's fog, as the amount of fog colour (surface black, fog white), for eyes 2-52 m up and
+// points on the sea within 1.5 km.
+constexpr double kFogDensity = 0.0012, kFogFalloff = 0.02;
+const char* kFogRay = "vec3(100.0 * a.x, 27.0 + 25.0 * a.y, 100.0 * a.z), vec3(1500.0 * b.x, 3.0 * b.y, 1500.0 * b.z)";
+
+// step06's tessellation uniforms in the checks: an eye 12 m up, 16 m patches, scale 12 (the defaults).
+const glm::dvec3 kTessEye(10.0, 12.0, -20.0);
+constexpr double kTessPatch = 16, kTessScale = 12;
 
 }  // namespace
 
@@ -229,6 +257,70 @@ std::vector<Exercise> all() {
                  },
                  1e-4, -0.6, 0.6);
          }},
+        {"step05_fft", 3, "From texel to wave vector", "mode.glsl", "vec2 wave_vector(ivec2 texel, int n, float patch_size) {",
+         "    // TODO (exercise 3): the wave vector k that texel (i, j) of the spectrum holds.\n"
+         "    return (6.2831853 / patch_size) * vec2(texel);\n",
+         "Write wave_vector: texel (i, j) of an N x N spectrum holds k = 2 pi (n, m) / L. The inverse FFT sums\n"
+         "frequencies 0, 1, ..., N/2 - 1 and then -N/2, ..., -1 in that order, so n = i for i < N/2 and i - N\n"
+         "above, and the same for m. The starter takes n = i everywhere: half the waves run the wrong way, and\n"
+         "the tile is no longer a sum of Hermitian pairs.",
+         "Texels N/2 .. N-1 hold the negative frequencies: n = i - N there (an FFT of N points cannot tell "
+         "frequency n from n - N, and the spectrum is centred on k = 0). Check both halves: texel 1 is "
+         "+2 pi / L, texel N - 1 is -2 pi / L.",
+         [](const fs::path& work) {
+             Verdict verdict;
+             for (int c = 0; c < 2 && (c == 0 || verdict.pass); ++c)
+                 verdict = check_values(
+                     work, "ocean_layout.glsl,mode.glsl",
+                     std::string("wave_vector(ivec2(64.0 * a.xy), 64, 100.0 + 400.0 * b.x).") + "xy"[c],
+                     [c](const glm::dvec4& a, const glm::dvec4& b) {
+                         return step05::wavenumber(int(64 * (c == 0 ? a.x : a.y)), 64, 100 + 400 * b.x);
+                     },
+                     1e-5, 0, 0.999);
+             return verdict;
+         }},
+        {"step05_fft", 4, "The phase: a mode in time", "mode.glsl", "vec2 evolve_mode(vec2 h0_k, vec2 h0_minus_k, float phase) {",
+         "    // TODO (exercise 4): h~(k, t) from h0(k), h0(-k) and phase = omega t.\n    return h0_k;\n",
+         "Write evolve_mode: h~(k, t) = h0(k) e^{-i omega t} + conj(h0(-k)) e^{+i omega t}, with phase = omega t\n"
+         "(omega from the dispersion relation, omega^2 = g k tanh(k depth), formed and reduced in double on the\n"
+         "CPU). Complex numbers are vec2 (real, imaginary); complex_multiply is in ocean_layout.glsl. The\n"
+         "starter returns h0(k): a frozen sea, and not even a real one.",
+         "e^{-i phase} is vec2(cos(phase), -sin(phase)); the second term is the conjugate of h0(-k) times the "
+         "conjugate rotation, which makes h~(-k) = conj(h~(k)) and the height real. With e^{+i omega t} on h0(k) "
+         "(the notes' 4.3) the crests run upwind.",
+         [](const fs::path& work) {
+             Verdict verdict;
+             for (int part = 0; part < 2 && (part == 0 || verdict.pass); ++part)
+                 verdict = check_values(
+                     work, "ocean_layout.glsl,mode.glsl", std::string("evolve_mode(a.xy, a.zw, 6.2831853 * b.x).") + "xy"[part],
+                     [part](const glm::dvec4& a, const glm::dvec4& b) {
+                         const auto h = step05::evolve_mode({a.x, a.y}, {a.z, a.w}, 6.2831853 * b.x);
+                         return part == 0 ? h.real() : h.imag();
+                     },
+                     1e-4, -1, 1);
+             return verdict;
+         }},
+        {"step05_fft", 5, "One radix-4 stage of the FFT", "fft.comp", "void radix4_stage(int t, int p, int from) {",
+         "    // TODO (exercise 5): thread t's four butterflies of the stage of stride p, lines[from] -> lines[1 - from].\n"
+         "    for (int j = 0; j < 4; ++j) lines[1 - from][t + j * QUARTER] = lines[from][t + j * QUARTER];\n",
+         "Write radix4_stage from the rule in fft.comp's header: with k = t mod p, take a_j = x[t + j N/4] w^(j k)\n"
+         "(w^(j k) = twiddle[j k N / (4 p)]), and write y[(t - k) 4 + k + q p] = sum_j a_j e^{+2 pi i j q / 4}\n"
+         "for q = 0..3. The factors e^{2 pi i j q / 4} are 1, i, -1, -i: additions and times_i only. The\n"
+         "starter copies the line through: the 'transform' is the spectrum itself.",
+         "Output q = 1 is a0 + i a1 - a2 - i a3 (a quarter turn per j), q = 2 is a0 - a1 + a2 - a3, q = 3 is "
+         "a0 - i a1 - a2 + i a3. Twiddle the inputs before the 4-point DFT, not after, and write at (t - k) * 4 + k "
+         "+ q * p (Stockham: each stage puts its results where the next one reads them).",
+         [](const fs::path& work) { return check_fft(work); }},
+        {"step05_fft", 6, "Choppiness and slopes in the spectrum", "mode.glsl", "vec2[4] packed_pairs(vec2 h, vec2 k) {",
+         "    // TODO (exercise 6): the four packed pairs from h~ at k. For now the height alone.\n"
+         "    vec2 pairs[4] = vec2[4](h, vec2(0.0), vec2(0.0), vec2(0.0));\n    return pairs;\n",
+         "Write packed_pairs: every map is h~ times a factor, because d/dx of e^{i k.x} is i kx e^{i k.x}. With\n"
+         "u = k/|k|: D~ = +i u h~ (choppy displacement), slopes i k h~, and the derivatives of D one more factor\n"
+         "i k. Pack them as h + i Dx, Dz + i dh/dx, dh/dz + i dDx/dx, dDz/dz + i dDx/dz, and return zeros at\n"
+         "k = 0. The starter gives the height alone: no choppiness, and a sea lit as if flat.",
+         "i times a complex (x, y) is (-y, x). Multiply it out: h + i (i ux h) = (1 - ux) h; i kz h + i (i kx)(i ux h) "
+         "= (kz - kx ux) i h. The notes' 4.5 writes D~ = -i u h~: round crests and folds in the troughs.",
+         [](const fs::path& work) { return check_packed_pairs(work); }},
         {"step06_foam_sky", 1, "Schlick's Fresnel", "shading.glsl", "float fresnel_schlick(float cos_theta, float f0) {",
          "    // TODO (exercise 1): how much light the water reflects, seen at cos_theta from the normal.\n"
          "    return 0.0;\n",
@@ -260,6 +352,90 @@ std::vector<Exercise> all() {
                                       return step06::specular_factor(n, v, l, alpha, 0.02, Microfacet::Ggx);
                                   },
                                   1e-4);
+         }},
+        {"step06_foam_sky", 3, "Foam, exact at any frame rate", "foam_step.glsl",
+         "float foam_step(float foam, float injection_rate, float decay_rate, float dt) {",
+         "    // TODO (exercise 3): the foam after dt seconds. The starter is the explicit step.\n"
+         "    return clamp(foam * exp(-decay_rate * dt) + injection_rate * dt, 0.0, 1.0);\n",
+         "Write foam_step: solve df/dt = q - r f over the frame, q = injection_rate and r = decay_rate held\n"
+         "constant, from f(0) = foam, and clamp to [0, 1]. The starter's explicit step makes 6 % more foam at\n"
+         "6 frames a second than at 60.",
+         "The solution of df/dt = q - r f is f(dt) = f e^{-r dt} + q (1 - e^{-r dt}) / r; for r dt -> 0 it tends "
+         "to f + q dt (mind the division by r = 0, and float's cancellation in 1 - e^{-x} for tiny x).",
+         [](const fs::path& work) {
+             return check_values(
+                 work, "foam_step.glsl", "foam_step(a.x, 20.0 * a.y, 5.0 * a.z, 0.5 * b.x)",
+                 [](const glm::dvec4& a, const glm::dvec4& b) {
+                     step06::FoamSettings s;
+                     s.threshold = 1;  // J = 0: the injection rate is s.injection
+                     s.injection = 20 * a.y;
+                     s.decay_rate = 5 * a.z;
+                     return step06::foam_step(a.x, 0.0, 0.5 * b.x, s);
+                 },
+                 1e-4, 0, 1);
+         }},
+        {"step06_foam_sky", 4, "The tessellation level", "tessellation.glsl", "float edge_level(vec2 a, vec2 b) {",
+         "    // TODO (exercise 4): how many segments the edge from a to b (x, z, at y = 0) is cut into.\n"
+         "    return 16.0;\n",
+         "Write edge_level: the level falls as 1 / distance from the eye (u_eye) to the edge's midpoint, so that\n"
+         "a segment covers about the same part of the screen near and far: u_tess_scale * u_patch_size /\n"
+         "distance, clamped to [1, 64]. The starter cuts every edge into 16: too coarse near the camera, wasted far\n"
+         "away (view=tessellation shows it).",
+         "Use the midpoint of the edge (so the two patches that share it compute the same level and no crack "
+         "opens), at y = 0, and its distance to u_eye in 3D; clamp to [1, 64].",
+         [](const fs::path& work) {
+             return check_values(
+                 work, "tessellation.glsl", "edge_level(300.0 * a.xy, 300.0 * a.zw)",
+                 [](const glm::dvec4& a, const glm::dvec4&) {
+                     const glm::dvec3 midpoint(150.0 * (a.x + a.z), 0.0, 150.0 * (a.y + a.w));
+                     const glm::dvec3 d = midpoint - kTessEye;
+                     return step06::tessellation_level(std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z), kTessPatch, kTessScale);
+                 },
+                 1e-4, -1, 1, [](const ocean::ShaderProgram& p) {
+                     p.set("u_eye", glm::vec3(kTessEye));
+                     p.set("u_patch_size", float(kTessPatch));
+                     p.set("u_tess_scale", float(kTessScale));
+                 });
+         }},
+        {"step06_foam_sky", 5, "The GGX distribution, normalised", "shading.glsl",
+         "float ggx_distribution(float n_dot_h, float alpha) {",
+         "    // TODO (exercise 5): GGX's D(h). The starter is step03's Blinn-Phong lobe, not normalised.\n"
+         "    return pow(max(n_dot_h, 0.0), 2.0 / (alpha * alpha) - 2.0);\n",
+         "Write ggx_distribution: D(h) = alpha^2 / (pi ((N.H)^2 (alpha^2 - 1) + 1)^2), the density of microfacet\n"
+         "normals around h for slopes of spread alpha. It is normalised: the integral of D (N.H) over the\n"
+         "hemisphere is 1, so a rougher sea spreads the sun's glint wider and dimmer without making light. The\n"
+         "starter's lobe has the right shape and the wrong size.",
+         "At N.H = 1, D = 1 / (pi alpha^2): a smooth sea (small alpha) has a tall, narrow peak. Without the pi the "
+         "glint is pi times too bright; check D(1) for alpha = 0.1 (31.8).",
+         [](const fs::path& work) {
+             return check_glsl(work, "shading.glsl", "ggx_distribution(max(dot(n, normalize(v + l)), 0.0), alpha)",
+                               [](const Vec3& n, const Vec3& v, const Vec3& l, double alpha) {
+                                   const Vec3 h = step03::normalize({v.x + l.x, v.y + l.y, v.z + l.z});
+                                   return step06::microfacet_distribution(std::max(step03::dot(n, h), 0.0), alpha,
+                                                                          step06::Microfacet::Ggx);
+                               },
+                               1e-4);
+         }},
+        {"step06_foam_sky", 6, "Height fog", "fog.glsl", "vec3 apply_fog(vec3 colour, vec3 eye, vec3 p, vec3 fog_colour) {",
+         "    // TODO (exercise 6): fog between the eye and p. The starter's fog is as thick at any height.\n"
+         "    return mix(fog_colour, colour, exp(-u_fog_density * length(p - eye)));\n",
+         "Write apply_fog: the fog's density falls with height, rho(y) = u_fog_density e^{-u_fog_falloff y}. Sum it\n"
+         "along the segment from eye to p (the optical depth tau: the integral has a closed form), and keep\n"
+         "e^{-tau} of the colour, the rest fog_colour. The starter's fog ignores height: a camera up high sees\n"
+         "as much as one on deck.",
+         "Parametrise the segment as eye + s (p - eye), s in [0, 1]: tau = |p - eye| * density e^{-f eye.y} * "
+         "(1 - e^{-f dy}) / (f dy), dy = p.y - eye.y. A level ray (f dy -> 0) needs the limit 1.",
+         [](const fs::path& work) {
+             return check_values(
+                 work, "fog.glsl", std::string("apply_fog(vec3(0.0), ") + kFogRay + ", vec3(1.0)).x",
+                 [](const glm::dvec4& a, const glm::dvec4& b) {
+                     return step06::fog_amount({100 * a.x, 27 + 25 * a.y, 100 * a.z}, {1500 * b.x, 3 * b.y, 1500 * b.z},
+                                               kFogDensity, kFogFalloff);
+                 },
+                 1e-4, -1, 1, [](const ocean::ShaderProgram& p) {
+                     p.set("u_fog_density", float(kFogDensity));
+                     p.set("u_fog_falloff", float(kFogFalloff));
+                 });
          }},
     };
 }

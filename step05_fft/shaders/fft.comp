@@ -34,6 +34,22 @@ int element(int layer, int line, int e) {
 
 vec2 times_i(vec2 a) { return vec2(-a.y, a.x); }
 
+// One radix-4 stage of stride p, thread t's share: four inputs a quarter of the line apart, twiddled,
+// give four outputs of one 4-point DFT, written where the next stage reads them (Stockham).
+void radix4_stage(int t, int p, int from) {
+    int k = t & (p - 1);
+    int step = k * (FFT_SIZE / (4 * p));  // w^(j k) = twiddle[j * step]
+    vec2 a0 = lines[from][t];
+    vec2 a1 = complex_multiply(lines[from][t + QUARTER], twiddle[step]);
+    vec2 a2 = complex_multiply(lines[from][t + 2 * QUARTER], twiddle[2 * step]);
+    vec2 a3 = complex_multiply(lines[from][t + 3 * QUARTER], twiddle[3 * step]);
+    int out_index = (t - k) * 4 + k;
+    lines[1 - from][out_index] = a0 + a1 + a2 + a3;
+    lines[1 - from][out_index + p] = a0 + times_i(a1) - a2 - times_i(a3);
+    lines[1 - from][out_index + 2 * p] = a0 - a1 + a2 - a3;
+    lines[1 - from][out_index + 3 * p] = a0 - times_i(a1) - a2 + times_i(a3);
+}
+
 void main() {
     int line = int(gl_WorkGroupID.x), layer = int(gl_WorkGroupID.y);  // layer = cascade * 4 + field
     int t = int(gl_LocalInvocationID.x);
@@ -42,17 +58,7 @@ void main() {
 
     int from = 0, p = 1;
     for (; 4 * p <= FFT_SIZE; p *= 4) {  // radix-4 stages
-        int k = t & (p - 1);
-        int step = k * (FFT_SIZE / (4 * p));  // w^(j k) = twiddle[j * step]
-        vec2 a0 = lines[from][t];
-        vec2 a1 = complex_multiply(lines[from][t + QUARTER], twiddle[step]);
-        vec2 a2 = complex_multiply(lines[from][t + 2 * QUARTER], twiddle[2 * step]);
-        vec2 a3 = complex_multiply(lines[from][t + 3 * QUARTER], twiddle[3 * step]);
-        int out_index = (t - k) * 4 + k;
-        lines[1 - from][out_index] = a0 + a1 + a2 + a3;
-        lines[1 - from][out_index + p] = a0 + times_i(a1) - a2 - times_i(a3);
-        lines[1 - from][out_index + 2 * p] = a0 - a1 + a2 - a3;
-        lines[1 - from][out_index + 3 * p] = a0 - times_i(a1) - a2 + times_i(a3);
+        radix4_stage(t, p, from);
         from = 1 - from;
         barrier();
     }

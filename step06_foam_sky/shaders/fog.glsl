@@ -1,7 +1,7 @@
-// Height fog (seed 5.5): thick near the sea, thinning with altitude. For a density
-// rho(y) = u_fog_density exp(-u_fog_falloff y), the optical depth along the segment from the eye
-// to p has a closed form (Quilez's "better fog"); the fog takes the sky's horizon colour, so the
-// sea melts into the sky at the horizon.
+// Height fog (the notes' 5.5; fog.hpp is the CPU reference): thick near the sea, thinning with
+// altitude. For a density rho(y) = u_fog_density exp(-u_fog_falloff y), the optical depth along
+// the segment from the eye to p has a closed form (Quilez's "better fog"); the fog takes the sky's
+// horizon colour, so the sea melts into the sky at the horizon.
 uniform float u_fog_density;  // per metre at sea level
 uniform float u_fog_falloff;  // per metre of height
 
@@ -10,7 +10,10 @@ vec3 apply_fog(vec3 colour, vec3 eye, vec3 p, vec3 fog_colour) {
     float distance = length(ray);
     float dy = ray.y;
     float k = u_fog_falloff;
-    float depth = u_fog_density * exp(-k * eye.y) * distance *
-                  (abs(k * dy) > 1e-4 ? (1.0 - exp(-k * dy)) / (k * dy) : 1.0);
+    float x = k * dy;
+    // the mean of e^{-k s dy} over the segment, (1 - e^{-x}) / x: by its series near x = 0, where
+    // float would lose it to cancellation (a level ray)
+    float along = abs(x) > 1e-2 ? (1.0 - exp(-x)) / x : 1.0 - x * (0.5 - x / 6.0);
+    float depth = u_fog_density * exp(-k * eye.y) * distance * along;
     return mix(fog_colour, colour, exp(-depth));
 }

@@ -1,25 +1,17 @@
 #version 450 core
 // Chapter 5.1: how finely to cut each patch. Each edge's level falls with the distance from the
-// camera to its midpoint (tessellation.hpp is the CPU formula); neighbouring patches share edges
-// and therefore levels, so no cracks open. Patches outside the view frustum (their box widened by
+// camera to its midpoint (edge_level, tessellation.glsl); neighbouring patches share edges and
+// therefore levels, so no cracks open. Patches outside the view frustum (their box widened by
 // the largest displacement) get level 0, which discards them.
 layout(vertices = 4) out;
 
 in vec2 tc_rest_xz[];
 out vec2 te_rest_xz[];
 
-uniform vec3 u_eye;
-uniform float u_patch_size;     // metres
-uniform float u_tess_scale;     // level = scale * patch_size / distance
+#include "tessellation.glsl"
 uniform vec4 u_frustum[6];      // planes, normals pointing inwards: dot(plane.xyz, p) + plane.w >= 0 inside
 uniform float u_max_displacement;  // metres: how far any point can move from rest
 uniform bool u_cull;
-
-float edge_level(vec2 a, vec2 b) {
-    vec3 midpoint = vec3(0.5 * (a.x + b.x), 0.0, 0.5 * (a.y + b.y));
-    float distance = max(length(midpoint - u_eye), 1e-3);
-    return clamp(u_tess_scale * u_patch_size / distance, 1.0, 64.0);
-}
 
 bool outside_frustum(vec2 lo, vec2 hi) {
     float r = u_max_displacement;

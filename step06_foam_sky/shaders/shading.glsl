@@ -26,13 +26,25 @@ float smith_lambda(float cos_theta, float alpha) {
 #endif
 }
 
-float microfacet_distribution(float n_dot_h, float alpha) {
+// D(h): how many microfacets face h, per steradian, for a surface of roughness alpha (the slopes'
+// spread). Normalised: its integral against (N.H) over the hemisphere is 1, so a rougher sea spreads
+// the same sunlight wider instead of making more of it.
+float ggx_distribution(float n_dot_h, float alpha) {
     float c2 = n_dot_h * n_dot_h, a2 = alpha * alpha;
-#if MICROFACET == 0
     float d = c2 * (a2 - 1.0) + 1.0;
     return a2 / (PI * d * d);
-#else
+}
+
+float beckmann_distribution(float n_dot_h, float alpha) {
+    float c2 = n_dot_h * n_dot_h, a2 = alpha * alpha;
     return exp((c2 - 1.0) / (a2 * c2)) / (PI * a2 * c2 * c2);
+}
+
+float microfacet_distribution(float n_dot_h, float alpha) {
+#if MICROFACET == 0
+    return ggx_distribution(n_dot_h, alpha);
+#else
+    return beckmann_distribution(n_dot_h, alpha);
 #endif
 }
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # exercises.sh EXERCISE_EXE REPO: every exercise's starter fails its check, and the chapter's own
 # code (the solution: the step's shader, copied over the learner's file) passes it. The checks
-# also refuse known slips: the seed's Fresnel without F0, the notes' slope without w a, and a
-# normal pointing into the water.
+# also refuse known slips: the notes' Fresnel without F0, their slope without w a, their e^{+i omega t}
+# and -i choppiness, a normal pointing into the water, GGX without 1/pi, and a spectrum centred the
+# wrong way.
 set -u
 exe=$1 repo=$2
 work="$(mktemp -d)"
@@ -46,5 +47,18 @@ refuses unturned-facet step02_sine3d 2 facet.glsl '    return vec3(0.0, 1.0, 0.0
 # T x B, the normal pointing into the water.
 refuses downward-normal step04_fbm 2 fbm.glsl '    return vec3(0.0, 1.0, 0.0);' \
   '    return normalize(cross(vec3(1.0, gradient.x, 0.0), vec3(0.0, gradient.y, 1.0)));'
+# The notes' 4.3, h0(k) e^{+i omega t}: crests upwind.
+refuses seed-evolution step05_fft 4 mode.glsl '    return h0_k;' \
+  '    vec2 r = vec2(cos(phase), sin(phase));\n    return complex_multiply(h0_k, r) + complex_multiply(vec2(h0_minus_k.x, -h0_minus_k.y), vec2(r.x, -r.y));'
+# The notes' 4.5, D = -i k/|k| h: folds in the troughs (the first pair, h + i Dx, shows it).
+refuses seed-choppiness step05_fft 6 mode.glsl '    vec2 pairs\[4\] = vec2\[4\](h, vec2(0.0), vec2(0.0), vec2(0.0));' \
+  '    vec2 u = k / max(length(k), 1e-9);\n    vec2 pairs[4] = vec2[4]((1.0 + u.x) * h, vec2(0.0), vec2(0.0), vec2(0.0));' \
+  'packed_pairs(a.xy, 2.0 * a.zw)[0].x'
+# GGX without its 1/pi: the shape, not the normalisation.
+refuses unnormalised-ggx step06_foam_sky 5 shading.glsl '    return pow(max(n_dot_h, 0.0), 2.0 / (alpha * alpha) - 2.0);' \
+  '    float d = n_dot_h * n_dot_h * (alpha * alpha - 1.0) + 1.0;\n    return alpha * alpha / (d * d);'
+# The texel's index used as the frequency everywhere (no negative half): fails on k's x.
+refuses unsigned-frequency step05_fft 3 mode.glsl '    return (6.2831853 / patch_size) \* vec2(texel);' \
+  '    return (6.2831853 / patch_size) * vec2(texel - n / 2);'
 [ "$count" -gt 0 ] || { echo "FAIL: no exercises listed"; status=1; }
 exit $status

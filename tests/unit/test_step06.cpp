@@ -3,6 +3,7 @@
 #include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
 #include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/fog.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/look_params.hpp"
@@ -327,3 +328,34 @@ TEST(Step06Clouds, LatticeHashIsUniformAndUncorrelated) {
 }
 
 }  // namespace
+
+// The fog's closed form against the density summed along the ray by quadrature (Simpson, 2000
+// intervals), for rays up, down, level and long; and what a viewer sees: more fog farther away,
+// less for the same distance higher up, none at zero density.
+TEST(Step06Fog, OpticalDepthIsTheDensitySummedAlongTheRay) {
+    const double density = 0.0012, falloff = 0.02;
+    auto by_quadrature = [&](const step03::Vec3& eye, const step03::Vec3& p) {
+        const int intervals = 2000;
+        const double distance = std::sqrt(step03::dot({p.x - eye.x, p.y - eye.y, p.z - eye.z}, {p.x - eye.x, p.y - eye.y, p.z - eye.z}));
+        double sum = 0;
+        for (int i = 0; i <= intervals; ++i) {
+            const double s = double(i) / intervals, y = eye.y + s * (p.y - eye.y);
+            const double weight = (i == 0 || i == intervals) ? 1 : (i % 2 == 1 ? 4 : 2);
+            sum += weight * density * std::exp(-falloff * y);
+        }
+        return distance * sum / (3.0 * intervals);
+    };
+    const step03::Vec3 eye{3, 12, -4};
+    for (const step03::Vec3 p : {step03::Vec3{800, 0, 300}, step03::Vec3{-50, 0.5, 20}, step03::Vec3{400, 12, 0},
+                                 step03::Vec3{2000, 300, 900}, step03::Vec3{10, -3, 5}}) {
+        const double closed = step06::fog_optical_depth(eye, p, density, falloff);
+        EXPECT_NEAR(closed / by_quadrature(eye, p), 1.0, 1e-9) << p.x << ", " << p.y << ", " << p.z;
+    }
+    EXPECT_LT(step06::fog_amount(eye, {100, 0, 0}, density, falloff), step06::fog_amount(eye, {1000, 0, 0}, density, falloff));
+    EXPECT_GT(step06::fog_amount({0, 2, 0}, {500, 2, 0}, density, falloff),
+              step06::fog_amount({0, 200, 0}, {500, 200, 0}, density, falloff));
+    EXPECT_EQ(step06::fog_amount(eye, {1000, 0, 0}, 0.0, falloff), 0.0);
+    const double far = step06::fog_amount(eye, {1e6, 0, 0}, density, falloff);
+    EXPECT_GT(far, 0.999);
+    EXPECT_LE(far, 1.0);
+}
