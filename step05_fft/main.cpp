@@ -43,7 +43,7 @@ public:
                       "spectrum"},
                      "the lit sea, or one map over the screen");
         p.add_float("map_range", &map_range_, 0, 100,
-                    "value shown at full colour in the map views (0: chosen from the spectrum)");
+                    "value shown at full colour in the map views but the Jacobian's (0: chosen from the spectrum)");
         light_.declare(p);
         grid_params_.declare(p);
         p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
@@ -115,7 +115,7 @@ private:
         if (p == nullptr) return;  // first asked for after a shader broke: nothing to draw with
         const int map = view_ - 1;
         float range = map_range_;
-        if (range <= 0) {  // about 2.5 standard deviations of the height; slopes and J - 1 within 0.5
+        if (range <= 0) {  // about 2.5 standard deviations of the height; slopes within 0.5 (J: its own scale)
             range = map <= 2 ? std::max(2.5f * height_sigma_, 1e-3f) : 0.5f;
         }
         p->set("u_map", map);

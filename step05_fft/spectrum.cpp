@@ -28,6 +28,13 @@ double jonswap(double omega, double wind_speed, double fetch, double gamma) {
     return jonswap_with_alpha(omega, jonswap_alpha(wind_speed, fetch), jonswap_peak_omega(wind_speed, fetch), gamma);
 }
 
+double pierson_moskowitz_peak_omega(double wind_speed) { return wind_speed > 0 ? 0.855 * kGravity / wind_speed : 0; }
+
+double pierson_moskowitz(double omega, double wind_speed) {
+    if (wind_speed <= 0) return 0;
+    return jonswap_with_alpha(omega, kPiersonMoskowitzAlpha, pierson_moskowitz_peak_omega(wind_speed), 1.0);
+}
+
 double jonswap_with_alpha(double omega, double alpha, double peak, double gamma) {
     if (omega <= 0 || peak <= 0) return 0;
     const double sigma = omega <= peak ? 0.07 : 0.09;

@@ -66,6 +66,13 @@ double jonswap_peak_omega(double wind_speed, double fetch);   // 22 (g^2 / (U F)
 // alpha g^2 / (5 omega_p^4).
 double jonswap(double omega, double wind_speed, double fetch, double gamma);
 double jonswap_with_alpha(double omega, double alpha, double peak_omega, double gamma);
+// Pierson-Moskowitz (1964): the fully developed sea, the limit of unlimited fetch and duration,
+// S(omega) = alpha g^2 / omega^5 exp(-5/4 (omega_p / omega)^4) with alpha = 0.0081 and
+// omega_p = 0.855 g / U. Its variance alpha g^2 / (5 omega_p^4) gives Hs = 0.22 U^2 / g. (JONSWAP
+// with gamma = 1 has this shape, but its alpha and omega_p still depend on the fetch.)
+constexpr double kPiersonMoskowitzAlpha = 0.0081;
+double pierson_moskowitz_peak_omega(double wind_speed);  // 0.855 g / U
+double pierson_moskowitz(double omega, double wind_speed);
 // The integral of S over omega for alpha = 1 (numerical: gamma's bump has no closed form).
 double jonswap_variance_per_alpha(double peak_omega, double gamma);
 // The alpha the spectrum uses under `energy`.

@@ -224,8 +224,9 @@ unset multiplot
 )gp";
 }
 
-// S(omega) for a 14 m/s wind over 100 km: JONSWAP, Pierson-Moskowitz (JONSWAP with gamma = 1),
-// and Phillips turned into S(omega) by dk/domega; the peak and step05's grid cut-offs.
+// S(omega) for a 14 m/s wind: JONSWAP over 100 km, the same with gamma = 1 (its shape without the
+// peak enhancement), Pierson-Moskowitz's fully developed sea (unlimited fetch), and Phillips turned
+// into S(omega) by dk/domega; the peaks and step05's grid cut-offs.
 // The sea the spectrum figures show: step06's default wind (14 m/s over 100 km), 256 modes on a
 // 500 m tile.
 step05::SpectrumParams figure_sea() {
@@ -241,26 +242,32 @@ void spectra(const fs::path& dir) {
     Figure f(dir, "spectra");
     const step05::SpectrumParams p = figure_sea();
     const double peak = step05::jonswap_peak_omega(p.wind_speed, p.fetch);
-    f.data << "# omega  JONSWAP  Pierson-Moskowitz  Phillips\n";
+    f.data << "# omega  JONSWAP  JONSWAP(gamma=1)  Phillips  Pierson-Moskowitz\n";
     for (int i = 1; i <= 600; ++i) {
         const double omega = 3.0 * i / 600.0;
         const double k = omega * omega / step05::kGravity, dk_domega = 2 * omega / step05::kGravity;
         f.data << omega << ' ' << step05::jonswap(omega, p.wind_speed, p.fetch, 3.3) << ' '
                << step05::jonswap(omega, p.wind_speed, p.fetch, 1.0) << ' '
-               << step05::phillips_k(k, p.wind_speed) * dk_domega << '\n';
+               << step05::phillips_k(k, p.wind_speed) * dk_domega << ' ' << step05::pierson_moskowitz(omega, p.wind_speed)
+               << '\n';
     }
+    const double pm_peak = step05::pierson_moskowitz_peak_omega(p.wind_speed);
     const double k_min = 2 * kPi / p.patch_size, k_max = kPi * p.resolution / p.patch_size;
     const double omega_min = step05::dispersion(k_min, p.depth), omega_max = step05::dispersion(k_max, p.depth);
-    f.script << "set title \"Wave spectra S(ω), wind 14 m/s, fetch 100 km (step05's spectrum.cpp)\"\n"
+    f.script << "set title \"Wave spectra S(ω), wind 14 m/s (step05's spectrum.cpp)\"\n"
              << "set xlabel \"ω (rad/s)\"\nset ylabel \"S(ω) (m² s / rad)\"\nset xrange [0:3]\n"
              << "set arrow from " << peak << ", graph 0 to " << peak << ", graph 1 nohead ls 5\n"
-             << "set label \"ω_p = " << std::round(peak * 1000) / 1000 << "\" at " << peak - 0.03 << ", graph 0.95 right\n"
-             << "set key at graph 0.98, graph 0.72\n"
+             << "set label \"ω_p = " << std::round(peak * 1000) / 1000 << "\" at " << peak + 0.03 << ", graph 0.95 left\n"
+             << "set arrow from " << pm_peak << ", graph 0 to " << pm_peak << ", graph 1 nohead ls 5 lc rgb '#a33b8f'\n"
+             << "set label \"0.855 g/U = " << std::round(pm_peak * 1000) / 1000 << "\" at " << pm_peak - 0.03
+             << ", graph 0.95 right tc rgb '#a33b8f'\n"
+             << "set key at graph 0.98, graph 0.55\n"
              << "set arrow from " << omega_min << ", graph 0 to " << omega_min << ", graph 1 nohead ls 5 lc rgb '#aa3333'\n"
-             << "set label \"one 500 m tile's longest wave\" at " << omega_min + 0.03 << ", graph 0.55 tc rgb '#aa3333'\n"
-             << "set label \"its shortest (N = 256): ω = " << std::round(omega_max * 100) / 100 << ", off the plot\" at 1.6, graph 0.30 tc rgb '#aa3333'\n"
-             << R"gp(plot 'spectra.dat' using 1:2 with lines ls 1 title "JONSWAP (γ = 3.3): a fetch-limited sea", \
-     '' using 1:3 with lines ls 2 title "Pierson–Moskowitz (γ = 1): fully developed", \
+             << "set label \"one 500 m tile's longest wave\" at " << omega_min - 0.03 << ", graph 0.5 center rotate by 90 tc rgb '#aa3333'\n"
+             << "set label \"its shortest (N = 256): ω = " << std::round(omega_max * 100) / 100 << ", off the plot\" at 1.6, graph 0.22 tc rgb '#aa3333'\n"
+             << R"gp(plot 'spectra.dat' using 1:2 with lines ls 1 title "JONSWAP, 100 km fetch (γ = 3.3)", \
+     '' using 1:3 with lines ls 2 title "JONSWAP, 100 km, γ = 1: no peak enhancement", \
+     '' using 1:5 with lines ls 4 title "Pierson–Moskowitz: fully developed", \
      '' using 1:4 with lines ls 3 title "Phillips (Tessendorf)"
 )gp";
 }
@@ -271,23 +278,26 @@ void cascade_bands(const fs::path& dir) {
     const step05::SpectrumParams p = figure_sea();
     const auto sizes = step06::cascade_patch_sizes(p);
     const auto bands = step06::cascade_bands(sizes, p.resolution);
-    f.data << "# k  k F(k) (the energy per log k)\n";
+    f.data << "# k  k F(k) (the height variance per log k)  k^3 F(k) (the slope variance per log k)\n";
     for (int i = 0; i <= 800; ++i) {
-        const double k = std::pow(10.0, -3 + 5.0 * i / 800.0);
-        f.data << k << ' ' << k * step05::omnidirectional_k(p, k) << '\n';
+        const double k = std::pow(10.0, -3 + 5.0 * i / 800.0), energy = k * step05::omnidirectional_k(p, k);
+        f.data << k << ' ' << energy << ' ' << k * k * energy << '\n';
     }
     const char* colours[] = {"#1f5fa8", "#d9822b", "#3a9a5b", "#a33b8f"};
     f.script << "set title \"step06: four cascades share one spectrum, each tile carries one band (cascades.hpp)\"\n"
-             << "set xlabel \"wavenumber k (rad/m)\"\nset ylabel \"k F(k) (m²): energy per log k\"\n"
-             << "set logscale x\nset xrange [1e-3:1e2]\nset format x \"10^{%L}\"\nset key bottom left\n";
+             << "set xlabel \"wavenumber k (rad/m)\"\nset ylabel \"k F(k) (m²): height variance per log k\"\n"
+             << "set y2label \"k³ F(k): slope variance per log k\"\nset y2tics\nset ytics nomirror\n"
+             << "set logscale x\nset xrange [1e-3:1e2]\nset format x \"10^{%L}\"\nset key bottom right\n";
     for (int c = 0; c < step06::kCascades; ++c) {
         const double low = std::max(bands[std::size_t(c)].low, 1e-3), high = bands[std::size_t(c)].high;
         f.script << "set object " << c + 1 << " rect from " << low << ", graph 0 to " << high
                  << ", graph 1 fc rgb '" << colours[c] << "' fs transparent solid 0.15 noborder\n"
                  << "set label " << c + 1 << " \"cascade " << c << "\\n" << std::lround(sizes[std::size_t(c)])
-                 << " m tile\" at " << std::sqrt(low * high) << ", graph 0.9 center tc rgb '" << colours[c] << "'\n";
+                 << " m tile\" at " << std::sqrt(low * high) << ", graph " << (c % 2 == 0 ? 0.9 : 0.78)
+                 << " center tc rgb '" << colours[c] << "'\n";
     }
-    f.script << "plot 'cascade_bands.dat' using 1:2 with lines ls 1 lc rgb 'black' title \"k F(k), wind 14 m/s, 100 km\"\n";
+    f.script << "plot 'cascade_bands.dat' using 1:2 with lines ls 1 lc rgb 'black' title \"height: k F(k), wind 14 m/s, 100 km\", \\\n"
+             << "     '' using 1:3 axes x1y2 with lines ls 5 lc rgb '#aa3333' lw 2 title \"slopes: k³ F(k) (right axis): the light\"\n";
 }
 
 // Schlick's Fresnel against the exact equations for water, and the seed's slip.
@@ -313,36 +323,40 @@ plot 'fresnel.dat' using 1:2 with lines ls 1 title "exact (Fresnel's equations, 
 )gp";
 }
 
-// The data flow of an 8-point radix-2 Stockham transform (the stages fft.comp runs with radix 4
-// for larger N): stage p, thread t < N/2, k = t mod p, inputs t and t + N/2, outputs 2t - k and
-// 2t - k + p, the second input turned by e^{+i pi k / p}.
+// The data flow of a 16-point inverse FFT as fft.comp runs it: two radix-4 Stockham stages. At the
+// stage of stride p (1, then 4), thread t < N/4 with k = t mod p reads x[t + j N/4], j = 0..3,
+// twiddles them by w^(j k), w = e^{+2 pi i / (4 p)}, and writes the 4-point DFT of the four to
+// y[(t - k) 4 + k + q p], q = 0..3 (radix4_stage). The indices are the shader's own formulas.
 void butterfly(const fs::path& dir) {
     Figure f(dir, "butterfly");
-    const int n = 8;
+    const int n = 16, quarter = n / 4;
     f.data << "# x0 y0 x1 y1 (one line segment a row)\n";
     int stage = 0;
-    std::string highlighted;  // one butterfly, its four lines (stage p = 2, thread t = 1)
-    for (int p = 1; p < n; p *= 2, ++stage)
-        for (int t = 0; t < n / 2; ++t) {
-            const int k = t & (p - 1), out = 2 * t - k;
-            for (int input : {t, t + n / 2})
-                for (int output : {out, out + p}) {
-                    const std::string line = std::to_string(stage) + ' ' + std::to_string(input) + ' ' +
-                                             std::to_string(stage + 1) + ' ' + std::to_string(output) + '\n';
+    std::string highlighted;  // one radix-4 butterfly, its sixteen lines (stage p = 4, thread t = 1)
+    for (int p = 1; p < n; p *= 4, ++stage)
+        for (int t = 0; t < quarter; ++t) {
+            const int k = t & (p - 1), out = (t - k) * 4 + k;
+            for (int j = 0; j < 4; ++j)
+                for (int q = 0; q < 4; ++q) {
+                    const std::string line = std::to_string(stage) + ' ' + std::to_string(t + j * quarter) + ' ' +
+                                             std::to_string(stage + 1) + ' ' + std::to_string(out + q * p) + '\n';
                     f.data << line;
-                    if (p == 2 && t == 1) highlighted += line;
+                    if (p == 4 && t == 1) highlighted += line;
                 }
         }
-    f.data << "\n\n# the butterfly of thread t = 1 at p = 2: k = 1, w = e^{i pi 1 / 2} = i\n" << highlighted;
-    f.script << "set terminal pngcairo size 900,600 font \"DejaVu Sans,12\"\nset output 'butterfly.png'\n"
-             << "set title \"An 8-point inverse FFT, Stockham order (fft.comp): each stage pairs x[t] with x[t + N/2]\"\n"
-             << "set xlabel \"stage (p = 1, 2, 4)\"\nset ylabel \"index\"\nset xrange [-0.3:5.1]\nset yrange [-0.5:7.5]\n"
-             << "set xtics (\"input\" 0, \"p = 1\" 1, \"p = 2\" 2, \"p = 4 (output)\" 3)\nset ytics 1\nunset key\n"
-             << "set style textbox opaque noborder\n"
-             << "set label \"one butterfly (p = 2, t = 1):\\ny[1] = x[1] + i x[5]\\ny[3] = x[1] − i x[5]\" at 3.25, 6.5 front boxed tc rgb '#d9822b'\n"
-             << "plot 'butterfly.dat' index 0 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#9db8d9' lw 1.5, \\\n"
-             << "     '' index 1 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#d9822b' lw 3.5, \\\n"
-             << "     '' index 0 using 1:2 with points pt 7 ps 1.5 lc rgb '#222222', '' index 0 using 3:4 with points pt 7 ps 1.5 lc rgb '#222222'\n";
+    f.data << "\n\n# the butterfly of thread t = 1 at p = 4: k = 1, inputs 1, 5, 9, 13, outputs 1, 5, 9, 13\n"
+           << highlighted;
+    f.script << "set terminal pngcairo size 900,640 font \"DejaVu Sans,12\"\nset output 'butterfly.png'\n"
+             << "set title \"A 16-point inverse FFT as fft.comp runs it: two radix-4 Stockham stages\"\n"
+             << "set xlabel \"stage\"\nset ylabel \"index in the line\"\nset xrange [-0.3:3.6]\nset yrange [-0.5:15.5]\n"
+             << "set xtics (\"input x\" 0, \"after stage 1\\n(stride p = 1)\" 1, \"after stage 2\\n(p = 4): output\" 2)\n"
+             << "set ytics 1\nunset key\nset style textbox opaque noborder\n"
+             << "set label \"thread t, k = t mod p:\\n  a_j = x[t + 4j] w^{jk},  w = e^{2πi/4p}\\n"
+                "  y[4(t − k) + k + qp] = Σ_j a_j i^{jq}\\n\\none butterfly (stage 2, t = 1):\\n"
+                "  four inputs 1, 5, 9, 13\\n  four outputs 1, 5, 9, 13\\n  twiddles e^{2πij/16}\" at 2.15, 12.5 front boxed tc rgb '#d9822b'\n"
+             << "plot 'butterfly.dat' index 0 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#9db8d9' lw 1.2, \\\n"
+             << "     '' index 1 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#d9822b' lw 3, \\\n"
+             << "     '' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#222222', '' index 0 using 3:4 with points pt 7 ps 1.2 lc rgb '#222222'\n";
 }
 
 // The vectors of the lighting model at a point of a wave (a cut through x, y): T, N from step03's

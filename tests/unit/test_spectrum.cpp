@@ -404,3 +404,28 @@ TEST(Step05Normal, IsPerpendicularToTheTangentsAndStep03sWithoutChoppiness) {
 }
 
 }  // namespace
+
+// The fully developed sea (Pierson and Moskowitz 1964), the spectra figure's curve: it peaks at
+// 0.855 g/U (found by search), its variance is alpha g^2 / (5 omega_p^4) (integrated here by the
+// trapezoid rule), so Hs = 0.22 U^2 / g, and no fetch-limited JONSWAP sea at the same wind is
+// higher: at 14 m/s over 100 km it peaks later (0.90 rad/s against 0.60) and holds less energy.
+TEST(Step05Spectrum, PiersonMoskowitzIsTheFullyDevelopedSea) {
+    const double u = 14;
+    double best = 0, best_omega = 0, variance = 0, jonswap_variance = 0;
+    const double d_omega = 1e-4;
+    for (double omega = d_omega; omega < 20; omega += d_omega) {
+        const double s = pierson_moskowitz(omega, u);
+        if (s > best) best = s, best_omega = omega;
+        variance += s * d_omega;
+        jonswap_variance += jonswap(omega, u, 100000, 3.3) * d_omega;
+    }
+    EXPECT_NEAR(best_omega, 0.855 * kGravity / u, 2e-4);
+    EXPECT_NEAR(pierson_moskowitz_peak_omega(u), 0.599111, 1e-6);  // 0.855 * 9.81 / 14 by hand
+    const double closed_form = kPiersonMoskowitzAlpha * kGravity * kGravity / (5 * std::pow(best_omega, 4));
+    EXPECT_NEAR(variance / closed_form, 1.0, 1e-3);
+    EXPECT_NEAR(4 * std::sqrt(variance) * kGravity / (u * u), 0.2202, 1e-3);
+    EXPECT_GT(variance, jonswap_variance) << "a fetch-limited sea is lower than the fully developed one";
+    EXPECT_GT(jonswap_peak_omega(u, 100000), 0.9);
+    std::printf("Pierson-Moskowitz at %.0f m/s: peak %.4f rad/s, Hs %.2f m; JONSWAP over 100 km: peak %.4f rad/s, Hs %.2f m\n",
+                u, best_omega, 4 * std::sqrt(variance), jonswap_peak_omega(u, 100000), 4 * std::sqrt(jonswap_variance));
+}
