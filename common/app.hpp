@@ -34,7 +34,7 @@ namespace ocean {
 
 struct StepInfo {
     std::string title;          // "Sum of sines in 3D"
-    std::string seed_sections;  // "1.2.2"
+    std::string notes_sections;  // "1.2.2"
     std::string description;    // a paragraph: what the step shows and what is new
 };
 

@@ -1,5 +1,5 @@
 // step01_sine2d: a sum of sines, plotted in 2D on the GPU.
-// Seed sections 1.1, 1.2, 1.2.1.
+// Notes sections 1.1, 1.2, 1.2.1.
 // New: everything (this is the first step). Each wave is a_i sin(x w_i - t phi_i) with
 // w = 2 pi / wavelength and phi = speed * 2 pi / wavelength; the plot shows each wave in its
 // own colour and their sum in white, evaluated per pixel in plot.frag.

@@ -3,9 +3,9 @@
 //   f(x, t) = sum_i a_i sin(x w_i - t phi_i),   w = 2 pi / wavelength,   phi = speed * 2 pi / wavelength
 //
 // A crest sits where x w - t phi is constant: x = (const + t phi) / w, so it travels towards +x at
-// phi / w = speed. The seed writes + t phi, which moves its crests towards -x (see README).
+// phi / w = speed. The notes write + t phi, which moves its crests towards -x (see README).
 //
-// The seed writes w = 2 / wavelength; a sine repeats every 2 pi radians, so only 2 pi / wavelength
+// The notes write w = 2 / wavelength; a sine repeats every 2 pi radians, so only 2 pi / wavelength
 // makes the wave repeat every `wavelength` metres (see README).
 #pragma once
 

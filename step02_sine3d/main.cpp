@@ -1,5 +1,5 @@
 // step02_sine3d: a plane of vertices lifted by a sum of directional sines in the vertex shader.
-// Seed section 1.2.2.
+// Notes section 1.2.2.
 // New since step01: the waves get a direction d_i in the x-z plane, h = sum a_i sin(d_i.(x,z) w_i
 // - t phi_i); a grid of (x_quads+1)(z_quads+1) vertices is displaced on the GPU (ocean.vert);
 // an orbit/fly camera; a wireframe view.

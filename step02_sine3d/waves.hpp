@@ -3,7 +3,7 @@
 //   h(x, z, t) = sum_i a_i sin(d_i . (x, z) w_i - t phi_i),   d_i = (cos theta_i, sin theta_i)
 //
 // with w and phi as in step01 (2 pi / wavelength, speed * 2 pi / wavelength): the crests of wave i
-// travel along +d_i at `speed` (the seed's + t phi sends them along -d_i). This is the
+// travel along +d_i at `speed` (the notes' + t phi sends them along -d_i). This is the
 // reference that the vertex shader's displaced positions are tested against.
 #pragma once
 

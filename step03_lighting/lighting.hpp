@@ -4,7 +4,7 @@
 //   diffuse  = C_water * C_sun * max(N.L, 0)                      Lambert, tinted blue
 //   specular = C_sun * (max(N.H, 0))^shininess,  H = normalize(V + L)   Blinn-Phong
 //
-// The seed writes H = V + L: the halfway vector must be normalised, or (N.H)^shininess grows past
+// The notes write H = V + L: the halfway vector must be normalised, or (N.H)^shininess grows past
 // 1 and the highlight blows out. Specular is also zero where the sun is below the surface
 // (N.L <= 0), so the back of a wave does not glint.
 #pragma once

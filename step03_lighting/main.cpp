@@ -1,8 +1,8 @@
 // step03_lighting: step02's waves, lit. Normals from analytic derivatives; Lambert, Blinn-Phong
 // and ambient light.
-// Seed sections 2, 2.1-2.4.
+// Notes sections 2, 2.1-2.4.
 // New since step02: the partial derivatives of the height, summed in the same loop
-// (wave_gradient.glsl); N = normalize(-dh/dx, 1, -dh/dz); the seed's finite-difference slope as a
+// (wave_gradient.glsl); N = normalize(-dh/dx, 1, -dh/dz); the notes' finite-difference slope as a
 // switch, with a view of the angle between the two normals; diffuse + specular + ambient, each
 // alone if you like; lighting per vertex or per pixel.
 // Controls: as step02; the panel's "light" and "normals" groups.
@@ -22,7 +22,7 @@ public:
         : App({"Lighting the waves", "2, 2.1-2.4",
                "Normals from the partial derivatives dh/dx and dh/dz, summed in the same loop as the "
                "height: N = normalize(-dh/dx, 1, -dh/dz). Light = ambient + Lambert diffuse (blue) + "
-               "Blinn-Phong specular. Compare with the seed's finite-difference slope and with "
+               "Blinn-Phong specular. Compare with the notes' finite-difference slope and with "
                "per-vertex lighting."}) {
         waves_.declare(params());
         grid_params_.declare(params());
@@ -30,7 +30,7 @@ public:
         p.add_choice("normals", &normal_method_, {"analytic", "finite_difference"},
                      "normals from the analytic derivatives, or from central differences of the height")
             .in_group("normals");
-        p.add_float("fd_step", &fd_step_, 0.001f, 5, "finite-difference step, metres (the seed uses 1)")
+        p.add_float("fd_step", &fd_step_, 0.001f, 5, "finite-difference step, metres (the notes use 1)")
             .in_group("normals").logarithmic();
         p.add_float("angle_scale", &angle_scale_, 0.01f, 90,
                     "normal_difference view: degrees between the normals shown as full red")

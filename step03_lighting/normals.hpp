@@ -5,7 +5,7 @@
 //   dh/dz     = sum_i w_i a_i d_iz cos(d_i.(x,z) w_i - t phi_i)
 //   T = (1, dh/dx, 0),  B = (0, dh/dz, 1),  N = B x T = normalize(-dh/dx, 1, -dh/dz)   (y up)
 //
-// The seed writes T = <1, 0, d/dx> and B = <0, 1, d/dz>: those are the vectors of a z-up world.
+// The notes write T = <1, 0, d/dx> and B = <0, 1, d/dz>: those are the vectors of a z-up world.
 // With y up the slope goes in the y component, and N = B x T (T x B points down into the water).
 #pragma once
 
@@ -50,7 +50,7 @@ inline HeightGradient height_and_gradient(const std::vector<DirectionalWave>& wa
     return g;
 }
 
-// The seed's slope: (h(x + s) - h(x - s)) / (2 s) along each axis (it uses s = 1). Costs four
+// The notes' slope: (h(x + s) - h(x - s)) / (2 s) along each axis (it uses s = 1). Costs four
 // extra evaluations of the whole sum and is only exact as s goes to zero.
 inline HeightGradient finite_difference_gradient(const std::vector<DirectionalWave>& waves, double x, double z,
                                                  double time, double step) {

@@ -5,7 +5,7 @@
 //   amplitude a_i = a_0 gain^i,  angular wavenumber w_i = w_0 lacunarity^i   (fBm: 0.82, 1.18)
 //   a direction d_i drawn from a seeded generator, and phase rate phi_i = speed sqrt(g w_i)
 //   (deep water: short waves are slower), and a shape W: sin, or exp(sin - 1) (sharp crests).
-// Wave i is a_i W(w_i d_i.q - t phi_i): its crests travel along +d_i (the seed's + t phi would send
+// Wave i is a_i W(w_i d_i.q - t phi_i): its crests travel along +d_i (the notes' + t phi would send
 // them along -d_i). exp(sin - 1) is not centred: its mean over a period is e^-1 I0(1) = 0.4658, so
 // the step subtracts it and the water's mean level stays at y = 0 (without it, 24 waves of the
 // default fBm float the sea about 4 m up).

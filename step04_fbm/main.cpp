@@ -1,6 +1,6 @@
 // step04_fbm: many waves without the hand-tuning: fractional Brownian motion, sharper crests,
 // domain warping, and cascades of sums.
-// Seed sections 3, 3.1-3.3, and 4's cascading of sums.
+// Notes sections 3, 3.1-3.3, and 4's cascading of sums.
 // New since step03: the wave shape exp(sin - 1) with its exact derivative; fBm (wave i has
 // amplitude a0 gain^i, frequency w0 lacunarity^i, a seeded random direction, deep-water speed);
 // domain warping with an exact normal (the chain rule through the warp); up to 4 cascades.

@@ -1,10 +1,10 @@
 // step05_fft: an ocean from a wave spectrum, transformed by an FFT on the GPU.
-// Seed sections 4.1-4.5.
+// Notes sections 4.1-4.5.
 // New since step04: instead of summing waves one by one, a JONSWAP (or Phillips) spectrum gives
 // every wave of an N x N grid of wavenumbers an amplitude h0(k) (spectrum.cpp); each frame the
 // modes turn at omega(k) (evolve.comp) and an inverse FFT turns them into height, choppy
 // displacement and slope maps (fft.comp: Stockham in shared memory), which displace the grid.
-// Three transform backends to compare: the seed's naive DFT, the GPU FFT, and FFTW on the CPU.
+// Three transform backends to compare: the notes' naive DFT, the GPU FFT, and FFTW on the CPU.
 // Controls: as step02; the panel's "spectrum" group, the backend and the map views.
 #include "common/app.hpp"
 #include "common/grid.hpp"
@@ -147,7 +147,7 @@ private:
         return times.figures();
     }
 
-    // The seed's DFT against the FFT: the same sea (the DFT needs resolution 64).
+    // The notes' DFT against the FFT: the same sea (the DFT needs resolution 64).
     std::optional<SplitVariants> split_variants() const override {
         return SplitVariants{"naive DFT", "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
     }

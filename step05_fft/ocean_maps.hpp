@@ -7,12 +7,12 @@
 //   dDx/dx <- -kx^2/|k| h~,  dDz/dz <- -kz^2/|k| h~,  dDx/dz <- -kx kz/|k| h~
 //   field(x) = sum_k field~(k) e^{i k.x}                                (inverse DFT, no 1/N)
 //
-// Two signs differ from the seed (4.3, 4.5), and both matter on screen. The mode h0(k) e^{i(k.x -
+// Two signs differ from the notes (4.3, 4.5), and both matter on screen. The mode h0(k) e^{i(k.x -
 // omega t)} has its crests where k.x - omega t is constant: they travel along +k, so the energy
-// the spectrum puts around the wind's direction goes with the wind (the seed's e^{+i omega t}
+// the spectrum puts around the wind's direction goes with the wind (the notes' e^{+i omega t}
 // sends it upwind). And one mode h = A cos(theta), theta = k.x - omega t, gets D = -k/|k| A sin(theta):
 // with x' = x + lambda D the points crowd towards each crest, which sharpens (a Gerstner wave, a
-// trochoid for lambda = 1) while the troughs flatten; the seed's -i gives round crests and cusped,
+// trochoid for lambda = 1) while the troughs flatten; the notes' -i gives round crests and cusped,
 // folding troughs.
 //
 // The eight real fields travel as four complex ones: if A~ and B~ are Hermitian, the inverse

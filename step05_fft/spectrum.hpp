@@ -84,8 +84,8 @@ double growth_law_variance(double wind_speed, double fetch);
 // the Coastal Engineering Manual (II-2, eq. II-2-36, deep water): g Hm0 / u*^2 = 4.13e-2
 // (g F / u*^2)^(1/2) with u*^2 = C_D U^2, C_D = 0.001 (1.1 + 0.035 U). Metres.
 double cem_significant_height(double wind_speed, double fetch);
-// Phillips, corrected from the seed: F(k) = (alpha / 2) exp(-1 / (k L)^2) / k^3 per unit k, with
-// L = U^2 / g and alpha = 0.0081; as a 2D density that is the seed's exp(-1/(kL)^2) / k^4 shape.
+// Phillips, corrected from the notes: F(k) = (alpha / 2) exp(-1 / (k L)^2) / k^3 per unit k, with
+// L = U^2 / g and alpha = 0.0081; as a 2D density that is the notes' exp(-1/(kL)^2) / k^4 shape.
 double phillips_k(double k, double wind_speed);
 // Kitaigorodskii's depth attenuation used by the TMA spectrum (1 in deep water).
 double tma_attenuation(double omega, double depth);
@@ -134,7 +134,7 @@ struct InitialSpectrum {
 };
 
 // h0(k) = (xi_r + i xi_i) sqrt(Phi(k) dk^2 / 4) with xi standard normal. The 1/4 (not the
-// seed's 1/2) because the time evolution adds conj(h0(-k)), a second copy of every mode's energy:
+// notes' 1/2) because the time evolution adds conj(h0(-k)), a second copy of every mode's energy:
 // then E|h(k, t)|^2 = (Phi(k) + Phi(-k)) dk^2 / 2 and the height variance is sum Phi dk^2.
 InitialSpectrum initial_spectrum(const SpectrumParams& p);
 

@@ -1,5 +1,5 @@
 // step06_foam_sky: the open sea under a sky.
-// Seed sections 5, 5.1-5.6.
+// Notes sections 5, 5.1-5.6.
 // New since step05: four cascades of step05's simulation, each with its own tile and band of
 // wavenumbers, transformed together; GPU tessellation of patches around the camera with frustum
 // culling, shaded once per pixel (deferred: gbuffer.hpp); foam where the surface folds, kept and

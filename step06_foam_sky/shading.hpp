@@ -4,7 +4,7 @@
 //   colour = (1 - F)(ambient + scatter) + F sky(R) + specular
 //   F: Schlick, F0 + (1 - F0)(1 - N.V)^5 with F0 = 0.02 for water (n = 1.333 gives 0.0204)
 //   specular = L_sun D G F / (4 N.V), G = 1 / (1 + Lambda(V) + Lambda(L))  (Smith, height-correlated)
-//   scatter: the seed's subsurface terms (Acerola's): k1 crest, k2 towards the viewer, k3 Lambert,
+//   scatter: the notes' subsurface terms (Acerola's): k1 crest, k2 towards the viewer, k3 Lambert,
 //   k4 bubbles.
 #pragma once
 

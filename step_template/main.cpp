@@ -8,7 +8,7 @@
 
 namespace {
 
-// The title, the seed's sections and the paragraph the panel shows.
+// The title, the notes' sections and the paragraph the panel shows.
 ocean::StepInfo chapter_info() {
     return {"A new chapter", "-",
             "The template every chapter starts from: one travelling wave, h = a sin(w (x - c t)), drawn as a "

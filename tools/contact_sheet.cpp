@@ -1,6 +1,6 @@
 // contact_sheet OUT.png WIDTHxHEIGHT "LABEL|RENDERED.png|OWN.png" ...
 // One row per step: the picture just rendered (with the shared camera and time) and the step's
-// own screenshot beside it, the step's name and seed sections under them. ./ocean compare calls it.
+// own screenshot beside it, the step's name and notes sections under them. ./ocean compare calls it.
 #include "tools/canvas.hpp"
 #include "tools/contact_sheet_layout.hpp"
 

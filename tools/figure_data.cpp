@@ -4,16 +4,20 @@
 // them). ./ocean figures runs gnuplot on the scripts.
 #include "step03_lighting/normals.hpp"
 #include "step04_fbm/fbm.hpp"
+#include "step05_fft/frame_passes.hpp"
 #include "step05_fft/ocean_maps.hpp"
 #include "step05_fft/spectrum.hpp"
 #include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/frame_passes.hpp"
 #include "step06_foam_sky/shading.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -300,11 +304,11 @@ void cascade_bands(const fs::path& dir) {
              << "     '' using 1:3 axes x1y2 with lines ls 5 lc rgb '#aa3333' lw 2 title \"slopes: k³ F(k) (right axis): the light\"\n";
 }
 
-// Schlick's Fresnel against the exact equations for water, and the seed's slip.
+// Schlick's Fresnel against the exact equations for water, and the notes' slip.
 void fresnel(const fs::path& dir) {
     Figure f(dir, "fresnel");
     const double f0 = step06::normal_incidence_reflectance(step06::kWaterIndex);
-    f.data << "# angle from the normal (degrees)  exact  Schlick  seed (1 - cos)^5\n";
+    f.data << "# angle from the normal (degrees)  exact  Schlick  notes (1 - cos)^5\n";
     for (int i = 0; i <= 900; ++i) {
         const double degrees = 90.0 * i / 900.0, c = std::cos(degrees * kPi / 180);
         f.data << degrees << ' ' << step06::fresnel_dielectric(c, step06::kWaterIndex) << ' '
@@ -319,7 +323,7 @@ set key top left
 set label "F0 = 0.02: looking straight down, water reflects 2 %" at 5, 0.12
 plot 'fresnel.dat' using 1:2 with lines ls 1 title "exact (Fresnel's equations, unpolarised)", \
      '' using 1:3 with lines ls 2 title "Schlick, F0 + (1 − F0)(1 − cos θ)^5 (the renderer's)", \
-     '' using 1:4 with lines ls 5 title "the seed's (1 − cos θ)^5: forgets F0"
+     '' using 1:4 with lines ls 5 title "the notes' (1 − cos θ)^5: forgets F0"
 )gp";
 }
 
@@ -357,6 +361,73 @@ void butterfly(const fs::path& dir) {
              << "plot 'butterfly.dat' index 0 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#9db8d9' lw 1.2, \\\n"
              << "     '' index 1 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#d9822b' lw 3, \\\n"
              << "     '' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#222222', '' index 0 using 3:4 with points pt 7 ps 1.2 lc rgb '#222222'\n";
+}
+
+// One frame's data path, from a step's own pass table (frame_passes.hpp): the passes down the
+// page in the order they run, every buffer and texture across it, and in each cell whether the
+// pass reads it (blue), writes it (orange) or both.
+std::vector<std::string> split_resources(std::string_view list) {
+    std::vector<std::string> names;
+    std::istringstream in{std::string(list)};
+    for (std::string name; std::getline(in, name, ';');)
+        if (!name.empty()) names.push_back(name);
+    return names;
+}
+
+template <class Passes>
+void frame_path(const fs::path& dir, const std::string& name, const std::string& title, const Passes& passes) {
+    Figure f(dir, name);
+    std::vector<std::string> resources;
+    auto column = [&](const std::string& r) {
+        for (std::size_t i = 0; i < resources.size(); ++i)
+            if (resources[i] == r) return int(i);
+        resources.push_back(r);
+        return int(resources.size()) - 1;
+    };
+    for (const auto& pass : passes) {
+        for (const auto& r : split_resources(pass.reads)) column(r);
+        for (const auto& r : split_resources(pass.writes)) column(r);
+    }
+    const int rows = int(passes.size()), columns = int(resources.size());
+    const int width = 780 + 66 * columns, height = 260 + 48 * rows;
+    f.script << "set terminal pngcairo noenhanced size " << width << "," << height << " font \"DejaVu Sans,11\"\n"
+             << "set output '" << name << ".png'\nunset key\nunset border\nunset tics\nunset grid\n"
+             << "set label \"" << title << "\" at screen 0.5, screen " << 1.0 - 18.0 / height << " center font \",13\"\n"
+             << "set lmargin at screen " << 620.0 / width << "\nset rmargin at screen " << 1.0 - 160.0 / width << "\n"
+             << "set tmargin at screen " << 1.0 - 200.0 / height << "\nset bmargin at screen " << 40.0 / height << "\n"
+             << "set xrange [-0.5:" << columns - 0.5 << "]\nset yrange [" << rows - 0.5 << ":-0.5]\n";
+    int object = 1;
+    for (int c = 0; c < columns; ++c)
+        f.script << "set label \"" << resources[std::size_t(c)] << "\" at " << c << ", -0.75 rotate by 40 left font \",10\"\n";
+    for (int r = 0; r < rows; ++r) {
+        const auto& pass = passes[std::size_t(r)];
+        f.script << "set label \"" << r + 1 << ". " << pass.timer << ": " << pass.program << "\" at screen "
+                 << 10.0 / width << ", first " << r << " left font \",10\"\n";
+        const auto reads = split_resources(pass.reads), writes = split_resources(pass.writes);
+        for (int c = 0; c < columns; ++c) {
+            const bool read = std::find(reads.begin(), reads.end(), resources[std::size_t(c)]) != reads.end();
+            const bool written = std::find(writes.begin(), writes.end(), resources[std::size_t(c)]) != writes.end();
+            const char* colour = read && written ? "#a33b8f" : written ? "#d9822b" : read ? "#1f5fa8" : "#f1f1f1";
+            const char* mark = read && written ? "RW" : written ? "W" : read ? "R" : "";
+            f.script << "set object " << object++ << " rect from " << c - 0.45 << ", " << r - 0.4 << " to " << c + 0.45
+                     << ", " << r + 0.4 << " fc rgb '" << colour << "' fs solid noborder behind\n";
+            if (*mark) f.script << "set label \"" << mark << "\" at " << c << ", " << r << " center tc rgb 'white' front\n";
+        }
+    }
+    f.script << "set label \"R: the pass reads it   W: writes it   RW: both (in place)\" at screen " << 10.0 / width
+             << ", screen " << 15.0 / height << " left\n"
+             << "plot NaN\n";
+    f.data << "# drawn from the pass table; no data\n";
+}
+
+void step05_frame(const fs::path& dir) {
+    frame_path(dir, "step05_frame", "step05: one frame's passes and what each reads and writes (frame_passes.hpp)",
+               step05::kFramePasses);
+}
+
+void step06_frame(const fs::path& dir) {
+    frame_path(dir, "step06_frame", "step06: one frame's passes and what each reads and writes (frame_passes.hpp)",
+               step06::kFramePasses);
 }
 
 // The vectors of the lighting model at a point of a wave (a cut through x, y): T, N from step03's
@@ -399,14 +470,31 @@ plot 'lighting_vectors.dat' index 0 using 1:2 with lines ls 1, \
 
 }  // namespace
 
+// The timed passes of a step's table, in order, each once: what --bench must list (frame_passes.sh).
+template <class Passes>
+int print_timers(const Passes& passes) {
+    std::vector<std::string> printed;
+    for (const auto& pass : passes)
+        if (std::find(printed.begin(), printed.end(), std::string(pass.timer)) == printed.end()) {
+            printed.emplace_back(pass.timer);
+            std::printf("%s\n", printed.back().c_str());
+        }
+    return 0;
+}
+
 int main(int argc, char** argv) {
-    if (argc != 2) return std::fprintf(stderr, "usage: figure_data OUT_DIR\n"), 2;
+    if (argc == 3 && std::string(argv[1]) == "--timers") {
+        if (std::string(argv[2]) == "step05_fft") return print_timers(step05::kFramePasses);
+        if (std::string(argv[2]) == "step06_foam_sky") return print_timers(step06::kFramePasses);
+        return std::fprintf(stderr, "figure_data: no pass table for %s\n", argv[2]), 2;
+    }
+    if (argc != 2) return std::fprintf(stderr, "usage: figure_data OUT_DIR | figure_data --timers STEP\n"), 2;
     const fs::path dir = argv[1];
     std::error_code error;
     fs::create_directories(dir, error);
     if (error) return std::fprintf(stderr, "figure_data: cannot make %s: %s\n", argv[1], error.message().c_str()), 1;
     const std::vector<std::function<void(const fs::path&)>> figures{
-        wave_profiles, domain_warp, spectrum_lattice, jacobian_fold, spectra, cascade_bands, fresnel, butterfly, lighting_vectors};
+        wave_profiles, domain_warp, spectrum_lattice, jacobian_fold, spectra, cascade_bands, fresnel, butterfly, lighting_vectors, step05_frame, step06_frame};
     for (const auto& make : figures) make(dir);
     std::printf("figure_data: %zu figures' data and scripts in %s\n", figures.size(), argv[1]);
     return 0;

@@ -9,7 +9,7 @@
 #include "lighting.glsl"
 
 #ifndef NORMAL_METHOD
-#define NORMAL_METHOD 0  // 0: analytic derivatives, 1: finite differences (the seed's)
+#define NORMAL_METHOD 0  // 0: analytic derivatives, 1: finite differences (the notes')
 #endif
 #ifndef VIEW
 #define VIEW 0           // VIEW_* below

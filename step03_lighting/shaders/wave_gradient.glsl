@@ -15,7 +15,7 @@ vec3 wave_height_gradient(vec2 xz) {
     return result;
 }
 
-// The seed's slope: central differences of the height, step s metres along each axis.
+// The notes' slope: central differences of the height, step s metres along each axis.
 vec3 finite_difference_gradient(vec2 xz, float s) {
     vec2 dx = vec2(s, 0.0), dz = vec2(0.0, s);
     return vec3(wave_height(xz),

@@ -1,5 +1,5 @@
 #version 450 core
-// Chapter 4.2, the seed's "transformée de fourier inverse classique": every output value is the
+// Chapter 4.2, the notes' "transformée de fourier inverse classique": every output value is the
 // whole sum over all N^2 modes, field(x) = sum_k field~(k) e^{i k.x}. O(N^4): for N <= 64 only.
 // e^{i k.x} = e^{2 pi i (m x_index + m' z_index) / N} is exact through an integer phase index
 // into a table of the N roots of unity.

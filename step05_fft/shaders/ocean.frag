@@ -1,5 +1,5 @@
 #version 450 core
-// Normals per pixel from the slope maps (the spectral derivatives i k h~), or, as the seed's 4.2
+// Normals per pixel from the slope maps (the spectral derivatives i k h~), or, as the notes' 4.2
 // suggests, from finite differences of the height map; then step03's light.
 #include "ocean_maps.glsl"
 #include "step03_lighting/shaders/lighting.glsl"

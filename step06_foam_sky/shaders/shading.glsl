@@ -2,7 +2,7 @@
 //   colour = (1 - F) (ambient + scatter) + F sky(R) + specular
 // F: Schlick's Fresnel with F0 = 0.02 (water, n = 1.33) at the viewing angle; R = 2N(N.V) - V;
 // specular: a microfacet BRDF, GGX or Beckmann, with Smith's height-correlated masking;
-// scatter: the seed's subsurface terms (Acerola's): light through the crests (k1, needs the
+// scatter: the notes' subsurface terms (Acerola's): light through the crests (k1, needs the
 // height H), towards the viewer (k2), Lambert (k3), and bubbles (k4).
 #ifndef MICROFACET
 #define MICROFACET 0  // 0: GGX, 1: Beckmann

@@ -5,7 +5,7 @@
 // A cos(theta)): a trochoid. Its crests move along +k/|k| at omega / |k|, and the Jacobian of
 // the horizontal map is J = 1 - |k| A cos(theta), smallest at the crests. Checked on the CPU
 // reference (double) and on the GPU's assembled textures (what the renderer samples); the
-// seed's two sign slips each fail it (crests along -k; J largest at the crests).
+// notes' two sign slips each fail it (crests along -k; J largest at the crests).
 #include "step05_fft/gpu_ocean.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"

@@ -19,7 +19,7 @@ struct LongClock : ocean_test::GlTest {
 
 TEST_F(LongClock, OneFftModeAfterTenDays) {
     // h0 has one mode, k = (3, 0) * 2 pi / L; then h(x, t) = 2 |h0| cos(k x - omega t + arg h0):
-    // crests travel along +k (the seed's sign would give k x + omega t, crests along -k).
+    // crests travel along +k (the notes' sign would give k x + omega t, crests along -k).
     step05::SpectrumParams p;
     p.resolution = 64;
     p.wind_speed = 0;  // all zero, then one mode by hand

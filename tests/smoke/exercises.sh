@@ -34,12 +34,12 @@ refuses() {
   if "$exe" check "$step" "$number" "$dir" > "$dir.log" 2>&1; then echo "FAIL: $name passes $step $number"; status=1; return; fi
   [ -z "$what" ] || grep -qF "$what" "$dir.log" || { echo "FAIL: $name did not fail on $what"; cat "$dir.log"; status=1; }
 }
-# The seed's Fresnel, F = (1 - cos theta)^5, forgets F0.
-refuses seed-fresnel step06_foam_sky 1 shading.glsl '    return 0.0;' '    return pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);'
+# The notes' Fresnel, F = (1 - cos theta)^5, forgets F0.
+refuses notes-fresnel step06_foam_sky 1 shading.glsl '    return 0.0;' '    return pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);'
 # The notes' 2.2 slope, cos(x w + phase) without w a.
-refuses seed-slope step01_sine2d 2 sine_sum.glsl '    return 0.0;' '    return cos(x * u_waves[i].x + u_waves[i].z);'
+refuses notes-slope step01_sine2d 2 sine_sum.glsl '    return 0.0;' '    return cos(x * u_waves[i].x + u_waves[i].z);'
 # The notes' 2.2 gradient in 2D, cos(angle) d without w a: it must fail on the slope.
-refuses seed-gradient step03_lighting 2 wave_gradient.glsl '    return vec3(wave_height(xz), 0.0, 0.0);' \
+refuses notes-gradient step03_lighting 2 wave_gradient.glsl '    return vec3(wave_height(xz), 0.0, 0.0);' \
   '    vec3 r = vec3(0.0);\n    for (int i = 0; i < u_wave_count; ++i) {\n        float angle = dot(u_waves[i].xy, xz) * u_waves[i].z + u_wave_phases[i];\n        r += vec3(u_waves[i].w * sin(angle), cos(angle) * u_waves[i].xy);\n    }\n    return r;' \
   'wave_height_gradient(a.xy).y'
 # A facet normal not turned up: half the facets face down.
@@ -48,10 +48,10 @@ refuses unturned-facet step02_sine3d 2 facet.glsl '    return vec3(0.0, 1.0, 0.0
 refuses downward-normal step04_fbm 2 fbm.glsl '    return vec3(0.0, 1.0, 0.0);' \
   '    return normalize(cross(vec3(1.0, gradient.x, 0.0), vec3(0.0, gradient.y, 1.0)));'
 # The notes' 4.3, h0(k) e^{+i omega t}: crests upwind.
-refuses seed-evolution step05_fft 4 mode.glsl '    return h0_k;' \
+refuses notes-evolution step05_fft 4 mode.glsl '    return h0_k;' \
   '    vec2 r = vec2(cos(phase), sin(phase));\n    return complex_multiply(h0_k, r) + complex_multiply(vec2(h0_minus_k.x, -h0_minus_k.y), vec2(r.x, -r.y));'
 # The notes' 4.5, D = -i k/|k| h: folds in the troughs (the first pair, h + i Dx, shows it).
-refuses seed-choppiness step05_fft 6 mode.glsl '    vec2 pairs\[4\] = vec2\[4\](h, vec2(0.0), vec2(0.0), vec2(0.0));' \
+refuses notes-choppiness step05_fft 6 mode.glsl '    vec2 pairs\[4\] = vec2\[4\](h, vec2(0.0), vec2(0.0), vec2(0.0));' \
   '    vec2 u = k / max(length(k), 1e-9);\n    vec2 pairs[4] = vec2[4]((1.0 + u.x) * h, vec2(0.0), vec2(0.0), vec2(0.0));' \
   'packed_pairs(a.xy, 2.0 * a.zw)[0].x'
 # GGX without its 1/pi: the shape, not the normalisation.

@@ -20,7 +20,7 @@ TEST(Step04Shape, ExpSineDerivativesMatchCentralDifferences) {
             EXPECT_NEAR(v.second, (plus.first - minus.first) / (2 * h), 1e-9) << theta;
         }
     // exp(sin - 1) less its mean: 1 - mean at the crest (theta = pi/2), e^-2 - mean in the trough,
-    // so the crest stands 1 above the trough as in the seed.
+    // so the crest stands 1 above the trough as in the notes.
     const double crest = step04::wave_shape(Shape::ExpSine, 1.5707963267948966).value;
     const double trough = step04::wave_shape(Shape::ExpSine, -1.5707963267948966).value;
     EXPECT_NEAR(crest, 1.0 - step04::kExpSineMean, 1e-15);
@@ -73,7 +73,7 @@ TEST(Step04Fbm, CrestsTravelAlongTheirDirection) {
     for (double t : {0.25, 0.5}) {
         const double moved = crest_at(t) - crest_at(0);
         EXPECT_NEAR(std::remainder(moved - speed * t, 10.0), 0.0, 2e-3) << "t = " << t;
-        EXPECT_GT(std::abs(std::remainder(moved + speed * t, 10.0)), 0.5) << "not the seed's -d";
+        EXPECT_GT(std::abs(std::remainder(moved + speed * t, 10.0)), 0.5) << "not the notes' -d";
     }
 }
 

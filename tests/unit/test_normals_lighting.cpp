@@ -26,8 +26,8 @@ TEST(Step03Normals, AnalyticDerivativesMatchCentralDifferences) {
             }
 }
 
-TEST(Step03Normals, SeedsUnitStepIsOnlyApproximate) {
-    // With the seed's step of 1 m, the slope of a 1.3 m wave is badly off: that is the point of
+TEST(Step03Normals, NotesUnitStepIsOnlyApproximate) {
+    // With the notes' step of 1 m, the slope of a 1.3 m wave is badly off: that is the point of
     // the comparison view.
     const std::vector<step02::DirectionalWave> short_wave{{0, 1.3, 0.05, 0}};
     const auto analytic = step03::height_and_gradient(short_wave, 0.1, 0, 0);
@@ -64,7 +64,7 @@ TEST(Step03Lighting, HandComputedTerms) {
     EXPECT_NEAR(t.diffuse.g, 0.4 * 0.5, 1e-12);    // N.L = sin 30
     EXPECT_NEAR(t.specular.r, 1.0, 1e-4);          // mirror direction: H = N, (N.H)^2 = 1
     EXPECT_DOUBLE_EQ(t.ambient.b, 0.03);
-    // The seed's unnormalised H = V + L would give (N.H)^2 = (2 sin 30)^2 = 1 here too, but
+    // The notes' unnormalised H = V + L would give (N.H)^2 = (2 sin 30)^2 = 1 here too, but
     // (N.(V+L))^2 = 4 straight above: normalising keeps it at most 1.
     const auto above = step03::light_terms(up, up, {up, {1, 1, 1}, {0, 0, 0}, {0, 0, 0}, 2});
     EXPECT_NEAR(above.specular.r, 1.0, 1e-12);

@@ -11,7 +11,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 TEST(Step01Waves, WavenumberIsTwoPiOverWavelength) {
-    // The seed's w = 2 / wavelength would make a 4 m wave repeat every 2 pi * 4 / 2 = 12.6 m.
+    // The notes' w = 2 / wavelength would make a 4 m wave repeat every 2 pi * 4 / 2 = 12.6 m.
     const step01::Wave wave{4.0, 1.0, 0.0};
     EXPECT_DOUBLE_EQ(step01::angular_wavenumber(wave), kPi / 2);
     for (double x : {-3.3, 0.0, 0.7, 12.5})
@@ -31,7 +31,7 @@ TEST(Step01Waves, PhaseRateIsSpeedTimesWavenumber) {
 
 TEST(Step01Waves, CrestsMoveAtTheirSpeed) {
     // With x w - t phi, a crest at x0 is found at x0 + speed * t later (travel towards +x). The
-    // seed's x w + t phi would find it at x0 - speed * t.
+    // notes' x w + t phi would find it at x0 - speed * t.
     const step01::Wave wave{6.0, 1.0, 2.5};
     for (double t : {0.3, 1.7, 40.0})
         EXPECT_NEAR(step01::wave_height(wave, 1.5 + 2.5 * t, t), step01::wave_height(wave, 1.5, 0), 1e-9);
@@ -107,7 +107,7 @@ TEST(Step02Waves, CrestsTravelAlongTheirDirection) {
         EXPECT_NEAR(step02::height(waves, 1.0 + d.x * 3.0 * t, 2.0 + d.z * 3.0 * t, t),
                     step02::height(waves, 1.0, 2.0, 0.0), 1e-9);
     // And the crest itself: along d through the origin, the crest at s = 1.25 m (a quarter of
-    // 5 m) at t = 0 is found 3 t further along d at t, the seed's sign would put it 3 t behind.
+    // 5 m) at t = 0 is found 3 t further along d at t, the notes' sign would put it 3 t behind.
     for (double t : {0.1, 0.3}) {
         double best_s = 0, best_h = -1;
         for (double s = -2.0; s < 3.5; s += 1e-4) {

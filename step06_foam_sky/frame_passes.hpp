@@ -1,0 +1,34 @@
+// The passes of one step06 frame, in the order they run, and the buffers and textures each reads
+// and writes: the lesson's map of the data's path. tools/figure_data draws
+// docs/figures/step06_frame.png from this table, and tools.frame_passes holds the table's timed
+// passes to the ones --bench measures, in order, so the figure cannot drift from the code.
+#pragma once
+
+#include "step05_fft/frame_passes.hpp"
+
+#include <array>
+
+namespace step06 {
+
+using step05::FramePass;
+
+// Texture units as main.cpp binds them: 0-1 the cascades' maps, 3 foam, 4 sky, 5 the bubble
+// pattern, 6-7 the G-buffer.
+constexpr std::array<FramePass, 8> kFramePasses{{
+    {"simulation", "step05's evolve.comp, fft.comp x 2, assemble.comp: 4 cascades as layers", "h0, omega (SSBOs, once)",
+     "displacement (4 layers);slopes (4 layers)"},
+    {"foam", "foam.comp (foam_step.glsl): 3 clipmap levels", "displacement (4 layers);slopes (4 layers);foam (r32f, 3 levels)",
+     "foam (r32f, 3 levels)"},
+    {"sky", "sky_cube.comp (6 faces; sky_equirect.comp from an image), mipmaps", "", "sky (cubemap)"},
+    {"ocean", "ocean.vert, ocean.tesc, ocean.tese, ocean.frag: the G-buffer", "displacement (4 layers)",
+     "G-buffer (world RGBA32F, rest RGBA32UI);depth"},
+    {"ocean", "ocean_shade.frag where depth < far: shading.glsl, fog.glsl",
+     "G-buffer (world RGBA32F, rest RGBA32UI);depth;displacement (4 layers);slopes (4 layers);foam (r32f, 3 levels);bubble pattern;sky (cubemap)",
+     "scene (RGBA16F, HDR)"},
+    {"background", "sky.frag where depth = far: sky and sun disc", "depth;sky (cubemap)", "scene (RGBA16F, HDR)"},
+    {"bloom", "bloom_down.frag down the levels, bloom_up.frag back up", "scene (RGBA16F, HDR)", "bloom (quarter size, 5 levels)"},
+    {"tonemap", "tonemap.frag: exposure, ACES or AgX, sRGB", "scene (RGBA16F, HDR);bloom (quarter size, 5 levels)",
+     "screen (sRGB)"},
+}};
+
+}  // namespace step06
