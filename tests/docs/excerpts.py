@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""excerpts.py REPO: every ```glsl block in a step's README quotes its shaders verbatim.
+"""excerpts.py REPO: every ```glsl and ```cpp block in a step's README quotes its code verbatim.
 
-A block names its file with a line `// from shaders/FILE` (relative to the step's folder; more
-than one may follow each other); every other line, but the `//>` notes and blank lines, must be a
-line of that file (leading and trailing spaces aside). So an excerpt cannot drift from the code:
-change the shader and this test names the README line to update. Exit 0 when all hold.
+A block names its file with a line `// from FILE` (relative to the step's folder: shaders/ocean.vert,
+gpu_ocean.cpp, ../step05_fft/gpu_ocean.cpp; more than one may follow each other); every other
+line, but the `//>` notes and blank lines, must be a line of that file (leading and trailing spaces
+aside). So an excerpt, shader or host code, cannot drift from the code: change the source and this
+test names the README line to update. Exit 0 when all hold.
 """
 import pathlib
 import sys
@@ -16,7 +17,7 @@ for readme in sorted(repo.glob("step*/README.md")):
     in_block, source, lines = False, None, set()
     for number, line in enumerate(readme.read_text(encoding="utf-8").splitlines(), 1):
         if line.startswith("```"):
-            in_block = line.strip() == "```glsl" and not in_block
+            in_block = line.strip() in ("```glsl", "```cpp") and not in_block
             source = None
             continue
         if not in_block or not line.strip() or line.lstrip().startswith("//>"):
@@ -31,7 +32,7 @@ for readme in sorted(repo.glob("step*/README.md")):
                 lines = {l.strip() for l in path.read_text(encoding="utf-8").splitlines()}
             continue
         if source is None:
-            failures.append(f"{readme}:{number}: a GLSL line before any '// from shaders/FILE'")
+            failures.append(f"{readme}:{number}: a code line before any '// from FILE'")
             continue
         checked += 1
         if line.strip() not in lines:
