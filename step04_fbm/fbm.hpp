@@ -3,7 +3,7 @@
 //
 // One cascade is a sum of N waves. Wave i has
 //   amplitude a_i = a_0 gain^i,  angular wavenumber w_i = w_0 lacunarity^i   (fBm: 0.82, 1.18)
-//   a direction d_i drawn from a seeded generator, and phase rate phi_i = speed sqrt(g w_i)
+//   a direction d_i drawn from a seeded generator, and phase rate phi_i = speed_scale sqrt(g w_i)
 //   (deep water: short waves are slower), and a shape W: sin, or exp(sin - 1) (sharp crests).
 // Wave i is a_i W(w_i d_i.q - t phi_i): its crests travel along +d_i (the notes' + t phi would send
 // them along -d_i). exp(sin - 1) is not centred: its mean over a period is e^-1 I0(1) = 0.4658, so
@@ -39,9 +39,13 @@ struct ShapeValue {
 // The mean of exp(sin(theta) - 1) over a period: e^-1 I0(1), with I0 the modified Bessel function.
 constexpr double kExpSineMean = 0.46575960759364043;
 
+// The sine is scaled to the exp-sine's crest-to-trough height, 1 - e^-2 (its own is 2), so that
+// `shape` compares two seas of the same height, not a sine sea 2.3 times higher.
+constexpr double kSineScale = 0.43233235838169365;  // (1 - e^-2) / 2
+
 inline ShapeValue wave_shape(Shape shape, double theta) {
     const double s = std::sin(theta), c = std::cos(theta);
-    if (shape == Shape::Sine) return {s, c, -s};
+    if (shape == Shape::Sine) return {kSineScale * s, kSineScale * c, -kSineScale * s};
     const double e = std::exp(s - 1.0);  // in [e^-2, 1]: a crest of 1, flat troughs
     return {e - kExpSineMean, e * c, e * (c * c - s)};
 }
@@ -59,7 +63,7 @@ struct CascadeSettings {
     double base_amplitude = 1;    // metres, a_0
     double gain = 0.82;           // amplitude ratio between neighbouring waves
     double lacunarity = 1.18;     // frequency ratio between neighbouring waves
-    double speed = 1;             // 1 = deep-water phase speed
+    double speed_scale = 1;       // a factor on the phase rate: 1 = deep water
     std::uint64_t seed = 1;
 };
 
@@ -80,7 +84,7 @@ inline std::vector<FbmWave> fbm_waves(const CascadeSettings& s) {
     for (int i = 0; i < s.wave_count; ++i) {
         const double angle = kTwoPi * uniform01(state);
         waves.push_back({std::cos(angle), std::sin(angle), wavenumber, amplitude,
-                         s.speed * std::sqrt(kGravity * wavenumber)});
+                         s.speed_scale * std::sqrt(kGravity * wavenumber)});
         amplitude *= s.gain;
         wavenumber *= s.lacunarity;
     }

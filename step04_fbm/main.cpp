@@ -36,7 +36,9 @@ public:
         p.add_float("gain", &gain_, 0, 1, "amplitude ratio of neighbouring waves").in_group("fbm");
         p.add_float("lacunarity", &lacunarity_, 1, 3, "frequency ratio of neighbouring waves")
             .in_group("fbm");
-        p.add_float("speed", &speed_, 0, 5, "phase speed, 1 = deep water (phi = sqrt(g w))").in_group("fbm");
+        p.add_float("speed_scale", &speed_scale_, 0, 5,
+                    "a factor on every wave's phase rate: 1 = deep water, phi = sqrt(g w) (step01's speed is m/s)")
+            .in_group("fbm");
         p.add_int("seed", &seed_, 0, 1000000, "seed of the wave directions").in_group("fbm");
         p.add_float("warp", &warp_, 0, 10,
                     "domain warping strength s: each wave pushes the next ones' input by s a grad f")
@@ -66,7 +68,7 @@ private:
             s.base_amplitude = amplitude_;
             s.gain = gain_;
             s.lacunarity = lacunarity_;
-            s.speed = speed_;
+            s.speed_scale = speed_scale_;
             s.seed = std::uint64_t(seed_);
             cascades_ = step04::make_cascades(s, cascade_count_, cascade_ratio_);
             cascades_generation_ = params().generation();
@@ -107,7 +109,7 @@ private:
     std::vector<step04::Cascade> cascades_;
     unsigned cascades_generation_ = ~0u;
     int shape_ = int(step04::Shape::ExpSine), wave_count_ = 20, seed_ = 1, cascade_count_ = 2, view_ = 0;
-    float base_wavelength_ = 40, amplitude_ = 1.2f, gain_ = 0.82f, lacunarity_ = 1.18f, speed_ = 1;
+    float base_wavelength_ = 40, amplitude_ = 1.2f, gain_ = 0.82f, lacunarity_ = 1.18f, speed_scale_ = 1;
     float warp_ = 4, cascade_ratio_ = 0.37f;
     bool wireframe_ = false;
 };

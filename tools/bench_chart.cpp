@@ -44,14 +44,24 @@ int main(int argc, char** argv) {
     }
     if (rows.empty()) return std::fprintf(stderr, "bench_chart: no rows in %s\n", argv[1]), 1;
 
-    const std::vector<ocean_tools::Colour> palette{{86, 156, 214},  {220, 140, 60},  {110, 190, 110}, {200, 90, 160},
-                                                   {230, 200, 80},  {100, 200, 200}, {170, 130, 230}, {220, 90, 90},
-                                                   {150, 150, 150}, {40, 110, 170},  {180, 110, 60},  {90, 140, 60}};
+    // A pass keeps its colour in every chart (bench.png and sweep.png draw the same passes): the
+    // known ones by name, any other from the spare colours in order of appearance.
+    const std::map<std::string, ocean_tools::Colour> by_name{
+        {"plot", {150, 150, 150}},      {"ocean", {86, 156, 214}},     {"simulation", {220, 140, 60}},
+        {"foam", {110, 190, 110}},      {"sky", {100, 200, 200}},      {"background", {170, 130, 230}},
+        {"bloom", {230, 200, 80}},      {"tonemap", {200, 90, 160}},   {"evolve", {180, 110, 60}},
+        {"fft", {220, 90, 90}},         {"assemble", {90, 140, 60}}};
+    const std::vector<ocean_tools::Colour> spare{{40, 110, 170}, {240, 170, 120}, {160, 200, 120}, {120, 120, 200}};
     std::map<std::string, ocean_tools::Colour> colours;
     std::vector<std::string> legend;
+    std::size_t spares_used = 0;
     for (const auto& r : rows)
-        for (const auto& [name, ms] : r.passes)
-            if (colours.emplace(name, palette[colours.size() % palette.size()]).second) legend.push_back(name);
+        for (const auto& [name, ms] : r.passes) {
+            if (colours.count(name) != 0) continue;
+            const auto known = by_name.find(name);
+            colours[name] = known != by_name.end() ? known->second : spare[spares_used++ % spare.size()];
+            legend.push_back(name);
+        }
 
     double largest = 1;
     for (const auto& r : rows) largest = std::max(largest, r.total);

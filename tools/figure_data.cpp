@@ -71,11 +71,11 @@ std::vector<double> one_mode_profile(double steepness, std::vector<double>* x_ou
 
 void wave_profiles(const fs::path& dir) {
     Figure f(dir, "wave_profiles");
-    f.data << "# theta  sine  exp(sin-1)-mean\n";
+    f.data << "# theta  sin  step04's sine (scaled)  exp(sin-1)-mean\n";
     for (int i = 0; i <= 400; ++i) {
         const double theta = -2 * kPi + 4 * kPi * i / 400.0;
-        f.data << theta / kPi << ' ' << step04::wave_shape(step04::Shape::Sine, theta).value << ' '
-               << step04::wave_shape(step04::Shape::ExpSine, theta).value << '\n';
+        f.data << theta / kPi << ' ' << std::sin(theta) << ' ' << step04::wave_shape(step04::Shape::Sine, theta).value
+               << ' ' << step04::wave_shape(step04::Shape::ExpSine, theta).value << '\n';
     }
     f.data << "\n\n# x  height, for lambda k A = 0.5, 0.9, 1.3 (one mode of step05's simulation)\n";
     std::vector<std::vector<double>> xs(3), hs(3);
@@ -88,11 +88,15 @@ set output 'wave_profiles.png'
 set key top center horizontal
 set yrange [-1.2:1.9]
 set multiplot layout 2,1 title "Wave profiles: what each chapter adds to the crest"
-set title "step01-04: a sine, and exp(sin θ − 1) (step04, minus its mean 0.466): sharp crests, flat troughs"
+set title "step01-04: a sine, and step04's two shapes, of equal crest-to-trough height 1 − e⁻² = 0.86"
 set xlabel "phase θ / π"
 set ylabel "height / amplitude"
-plot 'wave_profiles.dat' index 0 using 1:2 with lines ls 1 title "sin θ", \
-     '' index 0 using 1:3 with lines ls 2 title "exp(sin θ − 1) − 0.466"
+set key at graph 0.99, graph 0.99 right top vertical font ",10"
+plot 'wave_profiles.dat' index 0 using 1:2 with lines ls 5 title "sin θ (steps 01-03)", \
+     '' index 0 using 1:3 with lines ls 1 title "0.43 sin θ (step04, shape=sine)", \
+     '' index 0 using 1:4 with lines ls 2 title "exp(sin θ − 1) − 0.466 (step04)"
+set key default
+set key top center horizontal box
 set title "step05: one FFT mode moved sideways by λD (Gerstner's trochoid), steepness λkA"
 set xlabel "x (metres, wavelength 16 m)"
 set xrange [-16:16]

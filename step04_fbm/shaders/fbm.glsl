@@ -25,7 +25,8 @@ uniform float u_warp;  // s: the point moves by s a grad f of each wave before (
 vec3 wave_shape(float theta) {
     float s = sin(theta), c = cos(theta);
 #if SHAPE == 0
-    return vec3(s, c, -s);
+    const float SINE_SCALE = 0.43233236;  // (1 - e^-2) / 2: the exp-sine's crest-to-trough height
+    return SINE_SCALE * vec3(s, c, -s);
 #else
     float e = exp(s - 1.0);
     const float MEAN = 0.46575961;  // e^-1 I0(1): subtracted so the sea's mean level is y = 0

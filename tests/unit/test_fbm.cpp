@@ -82,7 +82,7 @@ TEST(Step04Fbm, AmplitudeAndFrequencySeries) {
     s.wave_count = 64;
     s.base_wavelength = 25;
     s.base_amplitude = 0.9;
-    s.speed = 1.5;
+    s.speed_scale = 1.5;
     const auto waves = step04::fbm_waves(s);
     ASSERT_EQ(waves.size(), 64u);
     const double w0 = step04::kTwoPi / 25;
@@ -174,3 +174,17 @@ TEST(Step04Cascades, EachHasItsOwnScaleAndSeed) {
 }
 
 }  // namespace
+
+// The two shapes compare seas of the same height: found by search over a period, each spans
+// 1 - e^-2 = 0.8647 from crest to trough (an unscaled sine would span 2, 2.3 times more).
+TEST(Step04Shape, BothShapesSpanTheSameCrestToTroughHeight) {
+    for (Shape shape : {Shape::Sine, Shape::ExpSine}) {
+        double low = 1e9, high = -1e9;
+        for (int i = 0; i < 100000; ++i) {
+            const double v = step04::wave_shape(shape, 2 * M_PI * i / 100000).value;
+            low = std::min(low, v);
+            high = std::max(high, v);
+        }
+        EXPECT_NEAR(high - low, 1 - std::exp(-2.0), 1e-9) << (shape == Shape::Sine ? "sine" : "exp-sine");
+    }
+}
