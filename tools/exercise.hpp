@@ -59,12 +59,12 @@ Verdict check_values(const fs::path& work, const std::string& include, const std
                      const ValueReference& reference, double tolerance, double low, double high,
                      const SetUniforms& set_uniforms = {});
 
-// A vec3 `expression` held to `reference`, component by component as check_values does (x, then
-// y, then z): the first component that fails is the verdict.
+// A vec3 (or, with components = 2, a vec2) `expression` held to `reference`, component by
+// component as check_values does (x, then y, then z): the first component that fails is the verdict.
 using VectorReference = std::function<glm::dvec3(const glm::dvec4& a, const glm::dvec4& b)>;
 Verdict check_vector(const fs::path& work, const std::string& include, const std::string& expression,
                      const VectorReference& reference, double tolerance, double low, double high,
-                     const SetUniforms& set_uniforms = {});
+                     const SetUniforms& set_uniforms = {}, int components = 3);
 
 // step05's inverse FFT with the work folder's fft.comp, run by the chapter's own GpuOcean (its
 // buffers, twiddle table and dispatches) on random spectra at N = 64, 128, 256 and 512 (radix-4

@@ -128,9 +128,9 @@ Verdict check_values(const fs::path& work, const std::string& include, const std
 
 Verdict check_vector(const fs::path& work, const std::string& include, const std::string& expression,
                      const VectorReference& reference, double tolerance, double low, double high,
-                     const SetUniforms& set_uniforms) {
+                     const SetUniforms& set_uniforms, int components) {
     Verdict verdict;
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < components; ++c) {
         verdict = check_values(
             work, include, expression + "." + "xyz"[c],
             [&](const glm::dvec4& a, const glm::dvec4& b) { return reference(a, b)[c]; }, tolerance, low, high,
