@@ -32,7 +32,7 @@ namespace step06 {
 
 struct FoamSettings {
     // J below which foam appears (the bias). One value for every sea: with it the whitecap
-    // coverage follows the wind as observed (README, "Whitecaps"; tests/physics_check whitecaps).
+    // coverage follows the wind as observed (README, "How much foam"; tests/physics_check whitecaps).
     double threshold = 0.75;
     double injection = 8;     // foam per second per unit of (threshold - J)
     double decay_rate = 0.8;  // 1/s: foam fades as exp(-decay_rate t)
