@@ -6,11 +6,16 @@
 // the horizontal map is J = 1 - |k| A cos(theta), smallest at the crests. Checked on the CPU
 // reference (double) and on the GPU's assembled textures (what the renderer samples); the
 // notes' two sign slips each fail it (crests along -k; J largest at the crests).
+#include "common/gl.hpp"
 #include "step05_fft/gpu_ocean.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
+#include <glm/vec2.hpp>
+
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace {
 
@@ -115,6 +120,69 @@ TEST_F(GerstnerMode, GpuTexturesHoldTheTrochoid) {
                 worst, kAmplitude, smallest_j, std::remainder(theta_at_smallest, 2 * kPi));
     EXPECT_LT(worst, 1e-4 * kAmplitude);  // float phases and a float FFT
     EXPECT_LT(std::abs(std::remainder(theta_at_smallest, 2 * kPi)), 2 * kPi / 16) << "J is smallest at a crest";
+}
+
+// step05's Jacobian view (map_view.frag) on a mode steep enough to fold (|k| A = 1.2, so J runs
+// from -0.2 at the crests to 2.2): every pixel is black exactly where the closed form's J < 0,
+// whatever map_range says (u_range 0.1 here: the old view made the folded colour unreachable
+// below a range of 1, and drew J > 1.5 in the same red). The legend's bar runs from J = 0 (red,
+// bottom) to 2 (blue, top), with the black swatch below it. A tile of 64 pixels on a 64-texel
+// map: pixel (96 + i, j) reads texel (i, j) at its centre.
+TEST_F(GerstnerMode, JacobianViewIsBlackExactlyWhereTheSurfaceFolds) {
+    const std::size_t index = std::size_t(kModeJ) * kN + kModeI;
+    const double steep_amplitude = 1.2 / k;
+    spectrum.h0[index] = Complex(steep_amplitude / 2, 0);
+    GpuOcean ocean(cache.factory());
+    ocean.set_spectra({&spectrum});
+    const double t = 3.1;
+    ocean.simulate(t, Backend::GpuFft, 1.0f);
+    ocean::ShaderProgram* view = cache("map_view", {"common/shaders/fullscreen.vert", "step05_fft/shaders/map_view.frag"}, {});
+    ASSERT_NE(view, nullptr);
+    const int width = 256, height = kN;
+    ocean::Texture target = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(target.id(), 1, GL_RGBA8, width, height);
+    ocean::Framebuffer fbo = ocean::make_framebuffer();
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+    ocean::VertexArray vao = ocean::make_vertex_array();
+    GLint previous_framebuffer = 0, previous_viewport[4] = {};
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
+    glGetIntegerv(GL_VIEWPORT, previous_viewport);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glViewport(0, 0, width, height);
+    ocean.bind_maps(*view);
+    view->set("u_map", 5);  // MAP_JACOBIAN
+    view->set("u_range", 0.1f);
+    view->set("u_resolution", glm::vec2(width, height));
+    view->set("u_layer", 0);
+    view->set("u_spectrum_image", 3);  // not unit 0, which holds the displacement array
+    glUseProgram(view->id());
+    glBindVertexArray(vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    std::vector<std::uint8_t> rgba(std::size_t(width) * height * 4);
+    glGetTextureImage(target.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
+    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+    auto pixel = [&](int x, int y) { return &rgba[(std::size_t(y) * width + x) * 4]; };
+    auto black = [&](int x, int y) { return pixel(x, y)[0] == 0 && pixel(x, y)[1] == 0 && pixel(x, y)[2] == 0; };
+
+    int folded = 0, wrong = 0;
+    for (int j = 0; j < kN; ++j)
+        for (int i = 0; i < kN; ++i) {
+            const double jacobian = 1 - k * steep_amplitude * std::cos(theta(i, j, t));  // the closed form
+            if (std::abs(jacobian) < 0.02) continue;  // float's margin at the boundary
+            folded += jacobian < 0;
+            wrong += black(96 + i, j) != (jacobian < 0);
+        }
+    std::printf("Jacobian view: %d of %d texels folded (J < 0), %d drawn otherwise than black iff folded\n", folded,
+                kN * kN, wrong);
+    EXPECT_GT(folded, 100) << "the test needs folds";
+    EXPECT_EQ(wrong, 0);
+    // The legend: bar at x 178..192 from y 6.4 (J = 0) to 57.6 (J = 2); the swatch at y 1.4..4.6.
+    const std::uint8_t* bottom = pixel(184, 7);
+    const std::uint8_t* top = pixel(184, 56);
+    EXPECT_GT(bottom[0], bottom[2] + 100) << "J = 0 is red";
+    EXPECT_GT(top[2], top[0] + 100) << "J = 2 is blue";
+    EXPECT_TRUE(black(184, 3)) << "the folded swatch below the bar";
 }
 
 }  // namespace
