@@ -2,6 +2,7 @@
 // with the uniform upload that goes with them. Colours are picked in sRGB and used linear.
 #pragma once
 
+#include "common/error.hpp"
 #include "common/params.hpp"
 #include "common/shader.hpp"
 #include "step03_lighting/light_params.hpp"
@@ -15,6 +16,26 @@
 #include <string>
 
 namespace step06 {
+
+// Each effect step06 can leave out (show_<name>) or show beside its absence (split_effect),
+// named once, here.
+enum class Effect { AmbientTerm, ScatterTerm, SpecularTerm, ReflectionTerm, Foam, Fog, Bloom };
+inline constexpr const char* kEffectNames[] = {"ambient_term", "scatter_term", "specular_term", "reflection_term",
+                                               "foam", "fog", "bloom"};  // Effect's order
+inline const char* effect_name(Effect e) { return kEffectNames[int(e)]; }
+// The effect of that name; an unknown name is an error that lists the known ones.
+inline Effect effect_named(const std::string& name) {
+    std::string known;
+    for (std::size_t i = 0; i < std::size(kEffectNames); ++i) {
+        if (name == kEffectNames[i]) return Effect(i);
+        known += (i ? ", " : "") + std::string(kEffectNames[i]);
+    }
+    throw ocean::Error("unknown effect '" + name + "' (" + known + ")");
+}
+// split_effect's choices, in the order its presets and --list-params have always had them.
+inline constexpr Effect kSplitEffects[] = {Effect::Fog,          Effect::Bloom,          Effect::Foam,
+                                           Effect::ScatterTerm,  Effect::SpecularTerm,   Effect::ReflectionTerm,
+                                           Effect::AmbientTerm};
 
 class LookParams {
 public:
@@ -79,8 +100,8 @@ public:
         number("exposure").logarithmic();
         p.add_choice("tonemapper", &tonemapper, tonemapper, {"aces", "agx", "none"},
                      "filmic curve: ACES fitted, AgX, or a clamp").in_group(kPost);
-        for (std::size_t i = 0; i < std::size(kToggles); ++i)
-            p.add_bool(std::string("show_") + kToggles[i], &shown[i], std::string("draw the ") + kToggles[i])
+        for (std::size_t i = 0; i < std::size(kEffectNames); ++i)
+            p.add_bool(std::string("show_") + kEffectNames[i], &shown[i], std::string("draw the ") + kEffectNames[i])
                 .in_group("terms and passes");
     }
 
@@ -131,15 +152,15 @@ public:
         p.set("u_foam_roughness", foam_roughness);
         p.set("u_fog_density", fog_density);
         p.set("u_fog_falloff", fog_falloff);
-        p.set("u_show_ambient", int(show("ambient_term")));
-        p.set("u_show_scatter", int(show("scatter_term")));
-        p.set("u_show_specular", int(show("specular_term")));
-        p.set("u_show_reflection", int(show("reflection_term")));
-        p.set("u_show_foam", int(show("foam")));
-        p.set("u_show_fog", int(show("fog")));
+        p.set("u_show_ambient", int(show(Effect::AmbientTerm)));
+        p.set("u_show_scatter", int(show(Effect::ScatterTerm)));
+        p.set("u_show_specular", int(show(Effect::SpecularTerm)));
+        p.set("u_show_reflection", int(show(Effect::ReflectionTerm)));
+        p.set("u_show_foam", int(show(Effect::Foam)));
+        p.set("u_show_fog", int(show(Effect::Fog)));
     }
 
-    bool show(const char* name) const { return shown[index(name)]; }
+    bool show(Effect e) const { return shown[std::size_t(e)]; }
 
     // The defaults (declare() binds each to its parameter).
     float sun_azimuth = 330, sun_elevation = 11, sun_intensity = 6, cloud_cover = 0.35f, cloud_speed = 12;
@@ -155,15 +176,7 @@ private:
     static constexpr const char* kSky = "sun and sky";
     static constexpr const char* kWater = "water";
     static constexpr const char* kPost = "post";
-    // What show_<name> turns on and off: each lighting term and each pass.
-    static constexpr const char* kToggles[] = {"ambient_term", "scatter_term", "specular_term", "reflection_term",
-                                               "foam", "fog", "bloom"};
-    static std::size_t index(const std::string& name) {
-        for (std::size_t i = 0; i < std::size(kToggles); ++i)
-            if (name == kToggles[i]) return i;
-        return 0;
-    }
-    bool shown[std::size(kToggles)] = {true, true, true, true, true, true, true};
+    bool shown[std::size(kEffectNames)] = {true, true, true, true, true, true, true};  // show_<effect>
 };
 
 }  // namespace step06

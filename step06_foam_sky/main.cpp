@@ -69,8 +69,9 @@ private:
         look_.declare(p);
         p.add_choice("view", &view_, {"shaded", "normals", "foam", "jacobian", "tessellation", "cascade_map"},
                      "the final picture, or one ingredient");
-        p.add_choice("split_effect", &split_effect_,
-                     {"fog", "bloom", "foam", "scatter_term", "specular_term", "reflection_term", "ambient_term"},
+        std::vector<std::string> split_choices;
+        for (step06::Effect e : step06::kSplitEffects) split_choices.emplace_back(step06::effect_name(e));
+        p.add_choice("split_effect", &split_effect_, split_choices,
                      "split view: the effect shown on the left and left out on the right");
         p.add_int("debug_cascade", &debug_cascade_, 0, step06::kCascades - 1, "view=cascade_map: which cascade");
         p.add_choice("debug_map", &debug_map_,
@@ -282,7 +283,7 @@ private:
         post_.bind_scene();
         clear_target({0, 0, 0});
         draw_sea();
-        const bool bloom = look_.show("bloom") && view_ == 0;
+        const bool bloom = look_.show(step06::Effect::Bloom) && view_ == 0;
         if (bloom) {
             ocean::GpuScope timed(timers(), "bloom");
             ocean::ShaderProgram* first = program("bloom_first", {"fullscreen.vert", "bloom_down.frag"}, {"FIRST_LEVEL 1"});
@@ -336,9 +337,7 @@ private:
 
     // With and without one effect (split_effect).
     std::optional<SplitVariants> split_variants() const override {
-        static const char* effects[] = {"fog", "bloom", "foam", "scatter_term", "specular_term", "reflection_term",
-                                        "ambient_term"};
-        const std::string effect = effects[split_effect_];
+        const std::string effect = step06::effect_name(step06::kSplitEffects[split_effect_]);
         return SplitVariants{"with " + effect, "without " + effect, {"show_" + effect + "=true"},
                              {"show_" + effect + "=false"}};
     }

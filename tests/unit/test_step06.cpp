@@ -359,3 +359,27 @@ TEST(Step06Fog, OpticalDepthIsTheDensitySummedAlongTheRay) {
     EXPECT_GT(far, 0.999);
     EXPECT_LE(far, 1.0);
 }
+
+// One table names step06's effects (look_params.hpp): each name turns back into its effect, a
+// misspelt one is refused with the known names (it used to become the ambient term silently),
+// split_effect offers every effect exactly once, and show_<name> is a parameter for each.
+TEST(Step06Effects, OneTableOfNamesAndAMisspeltNameIsRefused) {
+    for (std::size_t i = 0; i < std::size(step06::kEffectNames); ++i)
+        EXPECT_EQ(step06::effect_named(step06::kEffectNames[i]), step06::Effect(i));
+    try {
+        step06::effect_named("fgo");
+        ADD_FAILURE() << "a misspelt effect was accepted";
+    } catch (const ocean::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown effect 'fgo'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("ambient_term"), std::string::npos) << "it lists the known names";
+    }
+    std::set<step06::Effect> split(std::begin(step06::kSplitEffects), std::end(step06::kSplitEffects));
+    EXPECT_EQ(split.size(), std::size(step06::kEffectNames)) << "split_effect offers each effect once";
+    ocean::ParamRegistry registry;
+    step06::LookParams look;
+    look.declare(registry);
+    for (const char* name : step06::kEffectNames) {
+        EXPECT_FALSE(registry.set(std::string("show_") + name, "false").has_value()) << name;
+        EXPECT_FALSE(look.show(step06::effect_named(name))) << name;
+    }
+}
