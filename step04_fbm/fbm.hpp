@@ -57,6 +57,9 @@ struct FbmWave {
     double phase_rate;   // phi, radians per second
 };
 
+constexpr int kMaxCascades = 4;            // MAX_CASCADES in fbm.glsl
+constexpr int kMaxWavesPerCascade = 64;    // MAX_WAVES_PER_CASCADE
+
 struct CascadeSettings {
     int wave_count = 24;
     double base_wavelength = 40;  // metres, of wave 0

@@ -12,9 +12,6 @@
 
 namespace step04 {
 
-constexpr int kMaxCascades = 4;            // MAX_CASCADES in fbm.glsl
-constexpr int kMaxWavesPerCascade = 64;    // MAX_WAVES_PER_CASCADE
-
 class FbmUniforms {
 public:
     FbmUniforms() {

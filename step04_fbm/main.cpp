@@ -9,6 +9,7 @@
 #include "common/grid.hpp"
 #include "step03_lighting/light_params.hpp"
 #include "step03_lighting/light_uniforms.hpp"
+#include "step04_fbm/fbm_params.hpp"
 #include "step04_fbm/fbm_uniforms.hpp"
 
 #include <imgui.h>
@@ -26,28 +27,7 @@ public:
                "moves each wave's input downhill of the waves before it, with an exact normal; cascades "
                "with different base wavelengths hide the repeats."}) {
         auto& p = params();
-        p.add_choice("shape", &shape_, {"sine", "exp_sine"},
-                     "wave shape: sin(x), or exp(sin(x) - 1) with sharp crests and flat troughs").in_group("fbm");
-        p.add_int("wave_count", &wave_count_, 1, step04::kMaxWavesPerCascade, "waves in each cascade")
-            .in_group("fbm");
-        p.add_float("base_wavelength", &base_wavelength_, 1, 500, "wavelength of wave 0, metres")
-            .in_group("fbm").logarithmic();
-        p.add_float("amplitude", &amplitude_, 0, 10, "amplitude of wave 0 (a0), metres").in_group("fbm");
-        p.add_float("gain", &gain_, 0, 1, "amplitude ratio of neighbouring waves").in_group("fbm");
-        p.add_float("lacunarity", &lacunarity_, 1, 3, "frequency ratio of neighbouring waves")
-            .in_group("fbm");
-        p.add_float("speed_scale", &speed_scale_, 0, 5,
-                    "a factor on every wave's phase rate: 1 = deep water, phi = sqrt(g w) (step01's speed is m/s)")
-            .in_group("fbm");
-        p.add_int("seed", &seed_, 0, 1000000, "seed of the wave directions").in_group("fbm");
-        p.add_float("warp", &warp_, 0, 10,
-                    "domain warping strength s: each wave pushes the next ones' input by s a grad f")
-            .in_group("fbm");
-        p.add_int("cascade_count", &cascade_count_, 1, step04::kMaxCascades, "independent sums layered")
-            .in_group("cascades");
-        p.add_float("cascade_ratio", &cascade_ratio_, 0.05f, 0.95f,
-                    "base wavelength and amplitude of cascade c: ratio^c times cascade 0's")
-            .in_group("cascades");
+        fbm_.declare(p);
         p.add_choice("view", &view_, {"lit", "diffuse", "specular", "normals"},
                      "the whole light, one term alone, or the normals as colours").in_group("light");
         light_.declare(p);
@@ -61,17 +41,9 @@ private:
 
     void update(double /*time*/, double /*dt*/) override {
         grid_params_.update(grid_);
-        if (params().generation() != cascades_generation_) {  // waves only change with the parameters
-            step04::CascadeSettings s;
-            s.wave_count = wave_count_;
-            s.base_wavelength = base_wavelength_;
-            s.base_amplitude = amplitude_;
-            s.gain = gain_;
-            s.lacunarity = lacunarity_;
-            s.speed_scale = speed_scale_;
-            s.seed = std::uint64_t(seed_);
-            cascades_ = step04::make_cascades(s, cascade_count_, cascade_ratio_);
-            cascades_generation_ = params().generation();
+        if (fbm_.waves_changed.value != waves_built_for_) {  // only a wave parameter makes new waves
+            cascades_ = fbm_.make();
+            waves_built_for_ = fbm_.waves_changed.value;
         }
     }
 
@@ -79,8 +51,8 @@ private:
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
         ocean::ShaderProgram* ocean = program("ocean", {"ocean.vert", "ocean.frag"},
-                                              {"SHAPE " + std::to_string(shape_), "VIEW " + std::to_string(view_)});
-        fbm_uniforms_->upload(*ocean, cascades_, warp_, time());
+                                              {"SHAPE " + std::to_string(fbm_.shape), "VIEW " + std::to_string(view_)});
+        fbm_uniforms_->upload(*ocean, cascades_, fbm_.warp, time());
         step03::upload_light(*ocean, light_.light());
         ocean->set("u_wireframe", int(wireframe_));
         ocean->set("u_background", step03::srgb_to_linear(clear));
@@ -89,7 +61,7 @@ private:
 
     void ui() override {
         ImGui::Separator();
-        ImGui::Text("%d waves in %d cascade(s); %d vertices", wave_count_ * cascade_count_, cascade_count_,
+        ImGui::Text("%d waves in %d cascade(s); %d vertices", fbm_.wave_count * fbm_.cascade_count, fbm_.cascade_count,
                     grid_.vertex_count());
         for (std::size_t c = 0; c < cascades_.size(); ++c) {
             const auto& w = cascades_[c].waves;
@@ -107,10 +79,9 @@ private:
     ocean::GridParams grid_params_;
     step03::LightParams light_;
     std::vector<step04::Cascade> cascades_;
-    unsigned cascades_generation_ = ~0u;
-    int shape_ = int(step04::Shape::ExpSine), wave_count_ = 20, seed_ = 1, cascade_count_ = 2, view_ = 0;
-    float base_wavelength_ = 40, amplitude_ = 1.2f, gain_ = 0.82f, lacunarity_ = 1.18f, speed_scale_ = 1;
-    float warp_ = 4, cascade_ratio_ = 0.37f;
+    step04::FbmParams fbm_;  // the waves' parameters (fbm_params.hpp)
+    unsigned waves_built_for_ = 0;  // waves_changed starts at 1: the first frame builds
+    int view_ = 0;
     bool wireframe_ = false;
 };
 

@@ -1,6 +1,7 @@
 // Chapter 3's math: the exp-sine shape and its derivatives, the fBm series, and the exact
 // gradient of the domain-warped sum.
 #include "step04_fbm/fbm.hpp"
+#include "step04_fbm/fbm_params.hpp"
 
 #include <gtest/gtest.h>
 
@@ -186,5 +187,31 @@ TEST(Step04Shape, BothShapesSpanTheSameCrestToTroughHeight) {
             high = std::max(high, v);
         }
         EXPECT_NEAR(high - low, 1 - std::exp(-2.0), 1e-9) << (shape == Shape::Sine ? "sine" : "exp-sine");
+    }
+}
+
+// A camera drag (or any parameter outside the waves: the light, the grid, the shape, the warp)
+// rebuilds no waves; each wave parameter does. The registry's own counter moves for every change,
+// which is why step04 no longer watches it (it rebuilt its cascades on every frame of a drag).
+TEST(Step04Params, OnlyWaveParametersRebuildTheWaves) {
+    ocean::ParamRegistry registry;
+    step04::FbmParams fbm;
+    fbm.declare(registry);
+    float camera_yaw = 0;
+    registry.add_float("camera_yaw", &camera_yaw, -360, 360, "a camera parameter, as App declares it");
+    const unsigned built_for = fbm.waves_changed.value;
+    for (const char* other : {"camera_yaw=42", "warp=2", "shape=sine"}) {
+        const std::string text = other;
+        const auto eq = text.find('=');
+        ASSERT_FALSE(registry.set(text.substr(0, eq), text.substr(eq + 1)).has_value()) << other;
+        EXPECT_EQ(fbm.waves_changed.value, built_for) << other << " rebuilt the waves";
+    }
+    for (const char* wave : {"wave_count=12", "base_wavelength=30", "amplitude=2", "gain=0.7", "lacunarity=1.3",
+                             "speed_scale=2", "seed=9", "cascade_count=3", "cascade_ratio=0.5"}) {
+        const unsigned before = fbm.waves_changed.value;
+        const std::string text = wave;
+        const auto eq = text.find('=');
+        ASSERT_FALSE(registry.set(text.substr(0, eq), text.substr(eq + 1)).has_value()) << wave;
+        EXPECT_GT(fbm.waves_changed.value, before) << wave << " did not rebuild the waves";
     }
 }
