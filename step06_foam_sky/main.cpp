@@ -22,6 +22,7 @@
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/surface_export.hpp"
 #include "step06_foam_sky/tessellation.hpp"
+#include "step06_foam_sky/texture_units.h"
 
 #include <imgui.h>
 
@@ -146,14 +147,13 @@ private:
         return view;
     }
 
-    // Units 0-2: the cascades' maps, 3: foam, 4: sky, 5: the foam's bubble pattern (6, 7: the G-buffer).
+    // Units (texture_units.h): 0 and 1 the cascades' maps, then foam, sky, the bubble pattern.
     void bind_cascades(const ocean::ShaderProgram& p) {
         cascade_view().upload(p);
         gpu_->bind_maps(p);
-        foam_->bind(p, 3);
-        foam_->bind_pattern(p, 5);
-        p.set("u_sky", 4);
-        glBindTextureUnit(4, sky_->cubemap());
+        foam_->bind(p, UNIT_FOAM);
+        foam_->bind_pattern(p, UNIT_FOAM_PATTERN);
+        glBindTextureUnit(UNIT_SKY, sky_->cubemap());
         p.set("u_unresolved_slope_variance", unresolved_by_level_);
     }
 
@@ -190,8 +190,7 @@ private:
         sky->set("u_sun_size", sky_settings_.sun_size);
         sky->set("u_draw_sun_disc", int(!sky_->uses_image()));
         sky->set("u_inverse_view_projection", glm::inverse(view_projection));
-        sky->set("u_sky", 3);
-        glBindTextureUnit(3, sky_->cubemap());
+        glBindTextureUnit(UNIT_SKY, sky_->cubemap());
         glUseProgram(sky->id());
         draw_at_far_plane(GL_LEQUAL);
     }
@@ -249,10 +248,8 @@ private:
         look_.upload_shading(*shade);
         shade->set("u_eye", camera().eye());
         shade->set("u_sky_max_lod", sky_->max_lod());
-        shade->set("u_gbuffer_world", 6);
-        shade->set("u_gbuffer_rest", 7);
-        glBindTextureUnit(6, gbuffer_.world_texture());
-        glBindTextureUnit(7, gbuffer_.rest_texture());
+        glBindTextureUnit(UNIT_GBUFFER_WORLD, gbuffer_.world_texture());
+        glBindTextureUnit(UNIT_GBUFFER_REST, gbuffer_.rest_texture());
         glUseProgram(shade->id());
         draw_at_far_plane(GL_GREATER);
     }

@@ -139,9 +139,7 @@ float foam_at(vec2 p, float bias) {
     return foam;
 }
 
-// Unit 5 by default (FoamSimulation::bind_pattern uses it too): a sampler2D left on unit 0 would
-// share it with the cascades' sampler2DArray, which GL refuses at the draw.
-layout(binding = 5) uniform sampler2D u_foam_pattern;  // foam_pattern.hpp: 1 on the borders of bubble cells
+layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;  // foam_pattern.hpp: 1 on the borders of bubble cells
 uniform float u_foam_pattern_size;  // metres one tile of it covers
 
 // foam_pattern.hpp's foam_cover: fresh foam (amount 1) covers everything; as it decays the cell

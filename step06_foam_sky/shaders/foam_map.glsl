@@ -4,7 +4,8 @@
 // covers u_foam_extent[l] metres around the camera with N x N texels, each level four times
 // coarser than the one before. A window moves in whole texels and is addressed toroidally (cell c
 // is texel c mod N), so the foam already made stays where it is in the world when the camera moves.
+#include "step06_foam_sky/texture_units.h"
 const int FOAM_LEVELS = 3;
-uniform sampler2DArray u_foam;              // one layer per level
+layout(binding = UNIT_FOAM) uniform sampler2DArray u_foam;              // one layer per level
 uniform vec2 u_foam_centre[FOAM_LEVELS];    // metres: the middle of each window
 uniform float u_foam_extent[FOAM_LEVELS];   // metres: the side of each window

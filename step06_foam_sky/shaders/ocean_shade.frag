@@ -3,6 +3,7 @@
 // (ocean.frag) wrote depth, shades each pixel of the sea once. Everything at a point of the sea: normal from
 // the summed slopes, foam, scatter, microfacet specular, the sky's reflection weighted by
 // Fresnel, and height fog. Output: linear HDR.
+#include "step06_foam_sky/texture_units.h"
 #include "cascades_visible.glsl"
 #include "shading.glsl"
 #include "fog.glsl"
@@ -14,13 +15,13 @@
 
 out vec4 out_colour;
 
-uniform sampler2D u_gbuffer_world;   // (surface point, tessellation level)
-uniform usampler2D u_gbuffer_rest;   // (rest position, its d/dx and d/dy as half pairs)
+layout(binding = UNIT_GBUFFER_WORLD) uniform sampler2D u_gbuffer_world;   // (surface point, tessellation level)
+layout(binding = UNIT_GBUFFER_REST) uniform usampler2D u_gbuffer_rest;   // (rest position, its d/dx and d/dy as half pairs)
 uniform vec3 u_eye;
 uniform vec3 u_to_sun;
 uniform vec3 u_sun_radiance;
 uniform vec3 u_ambient;
-uniform samplerCube u_sky;
+layout(binding = UNIT_SKY) uniform samplerCube u_sky;
 uniform float u_sky_max_lod;
 uniform float u_roughness;  // of the resolved surface; the unresolved waves add their slope variance
 uniform float u_height_scale;          // metres that count as a full crest for the scatter term

@@ -1,12 +1,13 @@
 #version 450 core
 // The background: the sky cubemap along each pixel's view ray (linear HDR, like the sea), and the
 // sun's disc, which the cubemap leaves out (sky.glsl says why).
+#include "step06_foam_sky/texture_units.h"
 #include "sky.glsl"
 
 in vec2 v_uv;
 out vec4 out_colour;
 
-uniform samplerCube u_sky;
+layout(binding = UNIT_SKY) uniform samplerCube u_sky;
 uniform mat4 u_inverse_view_projection;
 uniform bool u_draw_sun_disc;  // not over a sky image (its sun is in the picture)
 
