@@ -1,14 +1,15 @@
-# add_step(NAME SOURCES ... [LIBRARY ...] SHADERS ... [LINKS ...] [TESTS ...] [GOLDEN file])
+# add_step(NAME SOURCES ... [LIBRARY ...] SHADERS ... [LINKS ...] [TESTS ...] [GPU_TESTS ...] [GOLDEN file])
 # declares one chapter:
 #  - the executable NAME (folder, target and window title share the name),
 #  - with LIBRARY, a static library NAME_lib of the chapter's technique, which the step, the
 #    tests and later chapters link (step06 links step05_fft_lib),
 #  - its shaders and README listed in the target (IDEs show them; shaders are read from the
 #    source tree at run time, so edits hot-reload),
-#  - with TESTS, the chapter's own GoogleTest files, built into NAME_tests (linked with NAME_lib
-#    and, for tests that need GL, tests/gpu's headless context helpers) and run by ctest as
-#    NAME.<suite>.<test>, labelled unit,
-#  - its smoke test: a headless run compared with GOLDEN (default tests/smoke/golden/NAME.png),
+#  - with TESTS, the chapter's own GoogleTest files on the CPU, built into NAME_tests (linked with
+#    NAME_lib) and run by ctest as NAME.<suite>.<test>, labelled unit and NAME,
+#  - with GPU_TESTS, its GoogleTest files that need GL, built into NAME_gpu_tests with tests/gpu's
+#    headless context (gpu_main.cpp) and run as NAME.<suite>.<test>, labelled gpu and NAME,
+#  - its smoke test: a headless run compared with GOLDEN (default the folder's golden.png),
 #  - its windowed run under Xvfb,
 #  - its entry in the lists the shader, bad-input and catalogue tests walk (OCEAN_STEPS,
 #    OCEAN_SHADERS).
@@ -18,7 +19,7 @@ include(GoogleTest)
 set(OCEAN_TESTS_DIR "${CMAKE_CURRENT_LIST_DIR}/../tests")
 
 function(add_step name)
-  cmake_parse_arguments(ARG "" "GOLDEN" "SOURCES;LIBRARY;SHADERS;LINKS;TESTS" ${ARGN})
+  cmake_parse_arguments(ARG "" "GOLDEN" "SOURCES;LIBRARY;SHADERS;LINKS;TESTS;GPU_TESTS" ${ARGN})
   list(TRANSFORM ARG_SHADERS PREPEND "${CMAKE_CURRENT_SOURCE_DIR}/")
   add_executable(${name} ${ARG_SOURCES} ${ARG_SHADERS} README.md)
   target_link_libraries(${name} PRIVATE ocean_common ${ARG_LINKS})
@@ -34,34 +35,64 @@ function(add_step name)
     OCEAN_STEP_NAME="${name}" OCEAN_STEP_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
   ocean_warnings(${name})
 
-  if(ARG_TESTS)
-    add_executable(${name}_tests ${ARG_TESTS})
-    target_link_libraries(${name}_tests PRIVATE ocean_common GTest::gtest_main)
-    if(ARG_LIBRARY)
-      target_link_libraries(${name}_tests PRIVATE ${name}_lib)
+  # The chapter's test executables: NAME_tests (CPU) and NAME_gpu_tests (a headless GL context).
+  foreach(kind tests gpu_tests)
+    if(kind STREQUAL "tests")
+      set(files ${ARG_TESTS})
+      set(labels "unit;${name}")
+    else()
+      set(files ${ARG_GPU_TESTS})
+      set(labels "gpu;${name}")
     endif()
-    target_include_directories(${name}_tests PRIVATE "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
-    target_compile_definitions(${name}_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    if(NOT files)
+      continue()
+    endif()
+    set(exe ${name}_${kind})
+    if(kind STREQUAL "tests")
+      add_executable(${exe} ${files})
+      target_link_libraries(${exe} PRIVATE ocean_common GTest::gtest_main ${ARG_LINKS})
+    else()
+      add_executable(${exe} "${OCEAN_TESTS_DIR}/gpu/gpu_main.cpp" ${files})
+      target_link_libraries(${exe} PRIVATE ocean_common GTest::gtest ${ARG_LINKS})
+    endif()
+    if(ARG_LIBRARY)
+      target_link_libraries(${exe} PRIVATE ${name}_lib)
+    endif()
+    target_include_directories(${exe} PRIVATE "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
+    target_compile_definitions(${exe} PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
       OCEAN_STEP_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
-    ocean_warnings(${name}_tests)
-    gtest_discover_tests(${name}_tests TEST_PREFIX "${name}." PROPERTIES LABELS unit DISCOVERY_TIMEOUT 60)
-  endif()
+    ocean_warnings(${exe})
+    # LeakSanitizer checks the CPU tests (the asan preset turns it off where GL runs: llvmpipe's
+    # JIT-compiled code and unloaded drivers leave allocations it cannot even name).
+    if(kind STREQUAL "tests")
+      gtest_discover_tests(${exe} TEST_PREFIX "${name}." TEST_LIST ${exe}_list DISCOVERY_TIMEOUT 60
+                           PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1")
+    else()
+      gtest_discover_tests(${exe} TEST_PREFIX "${name}." TEST_LIST ${exe}_list DISCOVERY_TIMEOUT 60)
+    endif()
+    # Two labels, the kind and the chapter (ctest -L ${name}): gtest_discover_tests cannot pass a
+    # list through, so a script ctest reads after the discovered tests sets them.
+    set(label_script "${CMAKE_CURRENT_BINARY_DIR}/${exe}_labels.cmake")
+    file(WRITE "${label_script}"
+         "if(${exe}_list)\n  set_tests_properties(\${${exe}_list} PROPERTIES LABELS \"${labels}\")\nendif()\n")
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${label_script}")
+  endforeach()
 
   set_property(GLOBAL APPEND PROPERTY OCEAN_STEPS ${name})
   set_property(GLOBAL APPEND PROPERTY OCEAN_SHADERS ${ARG_SHADERS})
 
-  set(golden "${OCEAN_TESTS_DIR}/smoke/golden/${name}.png")
+  set(golden "${CMAKE_CURRENT_SOURCE_DIR}/golden.png")
   if(ARG_GOLDEN)
     set(golden "${CMAKE_CURRENT_SOURCE_DIR}/${ARG_GOLDEN}")
   endif()
   add_test(NAME smoke.${name}
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/smoke.sh" $<TARGET_FILE:${name}>
             $<TARGET_FILE:image_compare> "${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke")
-  set_tests_properties(smoke.${name} PROPERTIES LABELS "smoke;gpu" TIMEOUT 300)
+  set_tests_properties(smoke.${name} PROPERTIES LABELS "smoke;gpu;${name}" TIMEOUT 300)
 
   add_test(NAME windowed.${name}
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/windowed.sh" $<TARGET_FILE:${name}>)
   # RESOURCE_LOCK: two `xvfb-run -a` starting at once can race for the same display number.
-  set_tests_properties(windowed.${name} PROPERTIES LABELS "windowed;gpu" TIMEOUT 300 RESOURCE_LOCK xvfb
+  set_tests_properties(windowed.${name} PROPERTIES LABELS "windowed;gpu;${name}" TIMEOUT 300 RESOURCE_LOCK xvfb
     SKIP_RETURN_CODE 77)
 endfunction()

@@ -1,5 +1,5 @@
 // Chapters 5.2 and 5.6 on the CPU, in double precision: the reference that shading.glsl is held
-// to (gpu.Shading.*), and the exact Fresnel equations that Schlick's curve approximates.
+// to (step06_foam_sky.Shading.*), and the exact Fresnel equations that Schlick's curve approximates.
 //
 //   colour = (1 - F)(ambient + scatter) + F sky(R) + specular
 //   F: Schlick, F0 + (1 - F0)(1 - N.V)^5 with F0 = 0.02 for water (n = 1.333 gives 0.0204)

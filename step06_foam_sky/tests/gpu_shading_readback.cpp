@@ -57,7 +57,7 @@ TEST_F(ShadingReadback, LightOnWaterMatchesTheCpu) {
     const step06::ScatterSettings s{3.0, 0.35, 0.25, 0.3, {0.05, 0.32, 0.36}, {0.2, 0.45, 0.45}, {0.15, 0.75, 0.6}};
     const Vec3 sun{6.0, 5.5, 4.8};
     for (step06::Microfacet m : {step06::Microfacet::Ggx, step06::Microfacet::Beckmann}) {
-        ocean::ShaderProgram program("eval_shading", {std::string(OCEAN_SOURCE_DIR) + "/tests/gpu/shaders/eval_shading.comp"},
+        ocean::ShaderProgram program("eval_shading", {std::string(OCEAN_SOURCE_DIR) + "/step06_foam_sky/tests/eval_shading.comp"},
                                      {}, {"MICROFACET " + std::to_string(int(m))});
         ASSERT_FALSE(program.build()) << program.last_error();
         program.set("u_count", kSamples);

@@ -200,7 +200,7 @@ TEST_F(Step06Gpu, TheSameFoamAtSixAndSixtyFramesASecond) {
 TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     step06::FoamSimulation foam(factory());
     ocean::ShaderProgram* program =
-        cache("foam_cover", {"common/shaders/fullscreen.vert", "tests/gpu/shaders/foam_cover.frag"}, {});
+        cache("foam_cover", {"common/shaders/fullscreen.vert", "step06_foam_sky/tests/foam_cover.frag"}, {});
     ASSERT_NE(program, nullptr);
     const step06::FoamPatternSettings settings;
     const int n = settings.size;
@@ -429,7 +429,7 @@ TEST_F(Step06Gpu, CloudsAreTheSameOnEveryGpu) {
     ocean::Buffer in = ocean::make_buffer(), out = ocean::make_buffer();
     glNamedBufferStorage(in.id(), GLsizeiptr(points.size() * sizeof(glm::vec2)), points.data(), 0);
     glNamedBufferStorage(out.id(), GLsizeiptr(points.size() * sizeof(glm::vec2)), nullptr, 0);
-    ocean::ShaderProgram program("eval_clouds", {std::string(OCEAN_SOURCE_DIR) + "/tests/gpu/shaders/eval_clouds.comp"});
+    ocean::ShaderProgram program("eval_clouds", {std::string(OCEAN_SOURCE_DIR) + "/step06_foam_sky/tests/eval_clouds.comp"});
     ASSERT_FALSE(program.build()) << program.last_error();
     program.set("u_count", kPoints);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
