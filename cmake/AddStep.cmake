@@ -1,4 +1,5 @@
-# add_step(NAME SOURCES ... [LIBRARY ...] SHADERS ... [LINKS ...] [TESTS ...] [GPU_TESTS ...] [GOLDEN file])
+# add_step(NAME SOURCES ... [LIBRARY ...] SHADERS ... [LINKS ...] [TESTS ...] [GPU_TESTS ...]
+#          [EXERCISES ...] [GOLDEN file])
 # declares one chapter:
 #  - the executable NAME (folder, target and window title share the name),
 #  - with LIBRARY, a static library NAME_lib of the chapter's technique, which the step, the
@@ -9,6 +10,7 @@
 #    NAME_lib) and run by ctest as NAME.<suite>.<test>, labelled unit and NAME,
 #  - with GPU_TESTS, its GoogleTest files that need GL, built into NAME_gpu_tests with tests/gpu's
 #    headless context (gpu_main.cpp) and run as NAME.<suite>.<test>, labelled gpu and NAME,
+#  - with EXERCISES, the chapter's exercise list (STEP/exercises.cpp), compiled into tools/exercise,
 #  - its smoke test: a headless run compared with GOLDEN (default the folder's golden.png),
 #  - its windowed run under Xvfb,
 #  - its entry in the lists the shader, bad-input and catalogue tests walk (OCEAN_STEPS,
@@ -19,7 +21,7 @@ include(GoogleTest)
 set(OCEAN_TESTS_DIR "${CMAKE_CURRENT_LIST_DIR}/../tests")
 
 function(add_step name)
-  cmake_parse_arguments(ARG "" "GOLDEN" "SOURCES;LIBRARY;SHADERS;LINKS;TESTS;GPU_TESTS" ${ARGN})
+  cmake_parse_arguments(ARG "" "GOLDEN" "SOURCES;LIBRARY;SHADERS;LINKS;TESTS;GPU_TESTS;EXERCISES" ${ARGN})
   list(TRANSFORM ARG_SHADERS PREPEND "${CMAKE_CURRENT_SOURCE_DIR}/")
   add_executable(${name} ${ARG_SOURCES} ${ARG_SHADERS} README.md)
   target_link_libraries(${name} PRIVATE ocean_common ${ARG_LINKS})
@@ -76,6 +78,11 @@ function(add_step name)
     file(WRITE "${label_script}"
          "if(${exe}_list)\n  set_tests_properties(\${${exe}_list} PROPERTIES LABELS \"${labels}\")\nendif()\n")
     set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${label_script}")
+  endforeach()
+
+  # The chapter's exercises (./ocean exercise): tools/exercise compiles every chapter's list in.
+  foreach(file IN LISTS ARG_EXERCISES)
+    set_property(GLOBAL APPEND PROPERTY OCEAN_EXERCISES "${CMAKE_CURRENT_SOURCE_DIR}/${file}")
   endforeach()
 
   set_property(GLOBAL APPEND PROPERTY OCEAN_STEPS ${name})

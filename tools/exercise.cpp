@@ -11,12 +11,36 @@
 #include "common/context.hpp"
 #include "common/error.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
+
+namespace exercises {
+
+namespace {
+std::vector<std::vector<Exercise> (*)()>& chapters() {
+    static std::vector<std::vector<Exercise> (*)()> registered;  // filled before main() runs
+    return registered;
+}
+}  // namespace
+
+Registration::Registration(std::vector<Exercise> (*chapter)()) { chapters().push_back(chapter); }
+
+std::vector<Exercise> all() {
+    std::vector<Exercise> every;
+    for (auto* chapter : chapters())
+        for (Exercise& e : chapter()) every.push_back(std::move(e));
+    std::sort(every.begin(), every.end(),
+              [](const Exercise& a, const Exercise& b) { return std::tie(a.step, a.number) < std::tie(b.step, b.number); });
+    return every;
+}
+
+}  // namespace exercises
 
 namespace {
 

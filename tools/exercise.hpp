@@ -1,6 +1,6 @@
 // The exercises' pieces shared by tools/exercise.cpp (prepare, check, list), exercise_checks.cpp
-// (how a learner's GLSL is evaluated on the GPU and held to a CPU reference) and
-// exercise_table.cpp (the exercises themselves).
+// (how a learner's GLSL is evaluated on the GPU and held to a CPU reference) and each chapter's
+// STEP/exercises.cpp (the exercises themselves).
 #pragma once
 
 #include "common/shader.hpp"
@@ -37,8 +37,12 @@ struct Exercise {
     std::function<Verdict(const fs::path& work)> check;
 };
 
-// Every exercise, in the order `exercise list` prints them (exercise_table.cpp).
+// Every exercise, in step and number order (`exercise list`): the chapters' own, each
+// STEP/exercises.cpp registering its list with a Registration at start-up.
 std::vector<Exercise> all();
+struct Registration {
+    explicit Registration(std::vector<Exercise> (*chapter)());
+};
 
 using Reference = std::function<double(const Vec3& n, const Vec3& v, const Vec3& l, double alpha)>;
 using ValueReference = std::function<double(const glm::dvec4& a, const glm::dvec4& b)>;

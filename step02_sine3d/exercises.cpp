@@ -1,0 +1,56 @@
+// step02_sine3d's exercises (./ocean exercise step02_sine3d N): for each, the file and function
+// it empties, the stub, the task, the hint, and the check that holds the learner's function to
+// the chapter's CPU reference. tools/exercise gathers every chapter's (add_step's EXERCISES).
+#include "tools/exercise.hpp"
+
+#include "tools/exercise_inputs.hpp"
+#include "step02_sine3d/wave_uniforms.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <string>
+
+namespace exercises {
+
+namespace {
+
+std::vector<Exercise> chapter() {
+    return {
+        {"step02_sine3d", 1, "Waves with a direction", "waves.glsl", "float wave_height(vec2 xz) {",
+         "    // TODO (exercise 1): the sum of the directional waves at xz.\n    return 0.0;\n",
+         "Write wave_height: the sum over the u_wave_count waves of a sin(dot(d, xz) w + phase), with\n"
+         "u_waves[i] = (d.x, d.z, w, a) and the phase in u_wave_phases[i]. Without it the sea is flat.",
+         "dot(d, xz) is how far along the wave's direction the point lies: crests are lines across d. "
+         "u_waves[i].xy is d, .z is w, .w is a; the phase is its own uniform array, u_wave_phases[i].",
+         [](const fs::path& work) {
+             return check_values(
+                 work, "waves.glsl", "wave_height(a.xy)",
+                 [](const glm::dvec4& a, const glm::dvec4&) { return step02::height(kStep02Waves, a.x, a.y, kCheckTime); },
+                 1e-4, -60, 60,
+                 [](const ocean::ShaderProgram& p) { step02::upload_waves(p, kStep02Waves, kCheckTime); });
+         }},
+        {"step02_sine3d", 2, "A facet's normal", "facet.glsl", "vec3 facet_normal(vec3 along_x, vec3 along_y) {",
+         "    // TODO (exercise 2): the unit normal of the facet spanned by the two edges, facing up.\n"
+         "    return vec3(0.0, 1.0, 0.0);\n",
+         "Write facet_normal: the cross product of the two edges is perpendicular to both; normalise it, and\n"
+         "turn it up (y >= 0) whichever way round the edges come. The starter's normal is straight up: every\n"
+         "facet is shaded alike and the waves' shape is hard to read (step02 draws with facet_shading on).",
+         "normalize(cross(along_x, along_y)), then negate it when its y is negative: the order of the edges "
+         "(and the screen's orientation) decides which side the cross product points to.",
+         [](const fs::path& work) {
+             return check_vector(
+                 work, "facet.glsl", "facet_normal(a.xyz, b.xyz)",
+                 [](const glm::dvec4& a, const glm::dvec4& b) {
+                     const step02::Vector n = step02::facet_normal({a.x, a.y, a.z}, {b.x, b.y, b.z});
+                     return glm::dvec3(n.x, n.y, n.z);
+                 },
+                 1e-4, -1, 1);
+         }},
+    };
+}
+
+const Registration registered(chapter);
+
+}  // namespace
+
+}  // namespace exercises

@@ -1,0 +1,85 @@
+// step03_lighting's exercises (./ocean exercise step03_lighting N): for each, the file and function
+// it empties, the stub, the task, the hint, and the check that holds the learner's function to
+// the chapter's CPU reference. tools/exercise gathers every chapter's (add_step's EXERCISES).
+#include "tools/exercise.hpp"
+
+#include "tools/exercise_inputs.hpp"
+#include "step03_lighting/lighting.hpp"
+#include "step02_sine3d/wave_uniforms.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <string>
+
+namespace exercises {
+
+namespace {
+
+// step03's light with the sun at `sun`, a white sun, the default water and shininess 64.
+step03::Light step03_light(const Vec3& sun) {
+    step03::Light light;
+    light.to_sun = sun;
+    light.sun = {1, 1, 1};
+    light.water = {0.05, 0.25, 0.35};
+    light.ambient = {0.02, 0.04, 0.06};
+    light.shininess = 64;
+    return light;
+}
+
+// step03's light_terms on the GPU, one term: its uniforms set as step03_light says.
+Verdict check_step03_term(const fs::path& work, const std::string& term, double (*pick)(const step03::LightTerms&)) {
+    static const Vec3 sun = step03::normalize({0.4, 0.5, -0.3});
+    const step03::Light light = step03_light(sun);
+    return check_glsl(
+        work, "lighting.glsl", "light_terms(n, v)." + term,
+        [&](const Vec3& n, const Vec3& v, const Vec3&, double) { return pick(step03::light_terms(n, v, light)); }, 1e-4,
+        [&](const ocean::ShaderProgram& p) {
+            p.set("u_to_sun", glm::vec3(float(sun.x), float(sun.y), float(sun.z)));
+            p.set("u_sun_color", glm::vec3(1.0f));
+            p.set("u_water_color", glm::vec3(float(light.water.r), float(light.water.g), float(light.water.b)));
+            p.set("u_ambient_color", glm::vec3(float(light.ambient.r), float(light.ambient.g), float(light.ambient.b)));
+            p.set("u_shininess", float(light.shininess));
+        },
+        &sun);
+}
+
+std::vector<Exercise> chapter() {
+    return {
+        {"step03_lighting", 1, "Lambert and Blinn-Phong", "lighting.glsl", "LightTerms light_terms(vec3 normal, vec3 to_eye) {",
+         "    // TODO (exercise 1): ambient, Lambert diffuse and Blinn-Phong specular.\n"
+         "    LightTerms t;\n    t.ambient = u_ambient_color;\n    t.diffuse = vec3(0.0);\n    t.specular = vec3(0.0);\n"
+         "    return t;\n",
+         "Write light_terms: diffuse = water * sun * max(N.L, 0) (Lambert); specular = sun * max(N.H, 0)^shininess "
+         "with the halfway vector H = normalize(V + L), and no specular when the sun is behind the surface "
+         "(N.L <= 0). Without them the sea is flat ambient colour.",
+         "H is normalize(to_eye + to_sun), the direction halfway between eye and sun, not the reflection of either; "
+         "the specular needs N.L > 0 (a sun below the surface makes no glint) even where N.H is large.",
+         [](const fs::path& work) {
+             const Verdict diffuse = check_step03_term(work, "diffuse.y", [](const step03::LightTerms& t) { return t.diffuse.g; });
+             if (!diffuse.pass) return diffuse;
+             return check_step03_term(work, "specular.x", [](const step03::LightTerms& t) { return t.specular.r; });
+         }},
+        {"step03_lighting", 2, "The slope of the waves", "wave_gradient.glsl", "vec3 wave_height_gradient(vec2 xz) {",
+         "    // TODO (exercise 2): (h, dh/dx, dh/dz). For now the height alone: a sea lit as if flat.\n"
+         "    return vec3(wave_height(xz), 0.0, 0.0);\n",
+         "Write wave_height_gradient: in one loop over the waves, the height a sin(angle) and its two partial\n"
+         "derivatives, with angle = dot(d, xz) w + phase. The normal (and so all the light) comes from them.",
+         "The derivative of a sin(dot(d, xz) w + phase) along x is a w cos(angle) d.x (the chain rule brings out w "
+         "and the direction); the notes' 2.2 forgets the w a. u_waves[i] = (d.x, d.z, w, a).",
+         [](const fs::path& work) {
+             return check_vector(
+                 work, "wave_gradient.glsl", "wave_height_gradient(a.xy)",
+                 [](const glm::dvec4& a, const glm::dvec4&) {
+                     const auto g = step03::height_and_gradient(kStep02Waves, a.x, a.y, kCheckTime);
+                     return glm::dvec3(g.height, g.dh_dx, g.dh_dz);
+                 },
+                 1e-4, -60, 60, [](const ocean::ShaderProgram& p) { step02::upload_waves(p, kStep02Waves, kCheckTime); });
+         }},
+    };
+}
+
+const Registration registered(chapter);
+
+}  // namespace
+
+}  // namespace exercises
