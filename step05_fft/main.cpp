@@ -64,7 +64,7 @@ private:
             spectrum_ = std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(wanted));
             gpu_->set_spectra({spectrum_.get()});
             spectrum_view_.update(wanted, *spectrum_);
-            height_sigma_ = float(std::sqrt(step05::resolved_variance(wanted)));
+            height_variance_ = step05::resolved_variance(wanted);
         }
     }
 
@@ -106,7 +106,7 @@ private:
         gpu_->bind_maps(*ocean);
         // Only the grid's chunks that may be in view (the plane reaches the horizon all round, the
         // view sees a wedge of it), widened by how far a vertex can move.
-        const double margin = step05::largest_displacement(double(height_sigma_) * height_sigma_, ocean_params_.choppiness);
+        const double margin = step05::largest_displacement(height_variance_, ocean_params_.choppiness);
         draw_grid(*ocean, grid_, wireframe_, cull_ ? float(margin) : -1.0f);
     }
 
@@ -116,7 +116,7 @@ private:
         const int map = view_ - 1;
         float range = map_range_;
         if (range <= 0) {  // about 2.5 standard deviations of the height; slopes within 0.5 (J: its own scale)
-            range = map <= 2 ? std::max(2.5f * height_sigma_, 1e-3f) : 0.5f;
+            range = map <= 2 ? std::max(2.5f * float(std::sqrt(height_variance_)), 1e-3f) : 0.5f;
         }
         p->set("u_map", map);
         p->set("u_range", range);
@@ -164,7 +164,7 @@ private:
     std::vector<std::string> backend_times_;
     int backend_ = int(Backend::Auto), normals_ = 0, view_ = 0;
     float map_range_ = 0;
-    float height_sigma_ = 0;  // metres: the square root of the spectrum's resolved variance
+    double height_variance_ = 0;  // m^2: the spectrum's resolved variance (step06 keeps the same)
     bool wireframe_ = false, warned_dft_ = false;
 };
 
