@@ -127,7 +127,7 @@ int App::run_loop(const Options& options) {
     if (!options.headless && headless) std::cout << "no display: rendering headless\n";
     const std::string shader_dir = options.shader_dir.empty() ? where_.dir + "/shaders" : options.shader_dir;
     if (!fs::is_directory(shader_dir)) throw Error("shader directory '" + shader_dir + "' does not exist");
-    programs_.set_shader_dir(shader_dir);
+    programs_.set_shader_dir(where_.dir + "/shaders", shader_dir);
 
     context_ = Context::create({headless, options.width, options.height, step_name()});
     enable_gl_debug_output();

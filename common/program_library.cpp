@@ -14,7 +14,10 @@ std::vector<std::string> ProgramLibrary::stage_paths(const std::vector<std::stri
     std::vector<std::string> paths;
     for (const auto& file : stage_files) {
         if (file.find('/') != std::string::npos) {
-            paths.push_back((fs::path(OCEAN_SOURCE_DIR) / file).string());
+            const fs::path in_repository = fs::path(OCEAN_SOURCE_DIR) / file;
+            const bool own = !own_dir_.empty() && fs::path(own_dir_).lexically_normal() ==
+                                                      in_repository.parent_path().lexically_normal();
+            paths.push_back((own ? fs::path(shader_dir_) / in_repository.filename() : in_repository).string());
             continue;
         }
         const fs::path own = fs::path(shader_dir_) / file;

@@ -18,8 +18,13 @@ class ProgramLibrary {
 public:
     // Where stage files are found: a bare name in `shader_dir` (the step's shaders/, or
     // --shader-dir), else in common/shaders; "dir/file" relative to the repository (a later
-    // chapter using an earlier one's shader).
-    void set_shader_dir(std::string shader_dir) { shader_dir_ = std::move(shader_dir); }
+    // chapter using an earlier one's shader), except that a file of the step's own shaders folder
+    // (`own_dir`, as a chapter's classes name it: "step05_fft/shaders/fft.comp") is read from
+    // `shader_dir` too, so --shader-dir (and an exercise's copy) replaces every shader of the step.
+    void set_shader_dir(std::string own_dir, std::string shader_dir) {
+        own_dir_ = std::move(own_dir);
+        shader_dir_ = std::move(shader_dir);
+    }
 
     // The program `name` built from `stage_files` with `defines`. Until running() a program that
     // does not build throws ocean::Error (the step cannot start). Afterwards (the user switched
@@ -47,7 +52,7 @@ private:
     void reload(bool all);
     std::vector<std::string> stage_paths(const std::vector<std::string>& stage_files) const;
 
-    std::string shader_dir_;
+    std::string own_dir_, shader_dir_;
     std::vector<std::unique_ptr<ShaderProgram>> programs_;
     std::map<std::string, ShaderProgram*> by_key_;     // name + defines
     std::map<std::string, ShaderProgram*> last_good_;  // name -> the variant built last

@@ -32,15 +32,13 @@ step05::OceanMaps step05_cell(const glm::dvec4& a, const glm::dvec4& b) {
 Verdict check_packed_pairs(const fs::path& work) {
     Verdict verdict;
     for (int f = 0; f < 4 && (f == 0 || verdict.pass); ++f)
-        for (int part = 0; part < 2 && (part == 0 || verdict.pass); ++part)
-            verdict = check_values(
-                work, "ocean_layout.glsl,mode.glsl",
-                "packed_pairs(a.xy, 2.0 * a.zw)[" + std::to_string(f) + "]." + "xy"[part],
-                [f, part](const glm::dvec4& a, const glm::dvec4&) {
-                    const auto pairs = step05::packed_pairs({a.x, a.y}, 2 * a.z, 2 * a.w);
-                    return part == 0 ? pairs[std::size_t(f)].real() : pairs[std::size_t(f)].imag();
-                },
-                1e-4, -1, 1);
+        verdict = check_vector(
+            work, "ocean_layout.glsl,mode.glsl", "packed_pairs(a.xy, 2.0 * a.zw)[" + std::to_string(f) + "]",
+            [f](const glm::dvec4& a, const glm::dvec4&) {
+                const auto pair = step05::packed_pairs({a.x, a.y}, 2 * a.z, 2 * a.w)[std::size_t(f)];
+                return glm::dvec3(pair.real(), pair.imag(), 0.0);
+            },
+            1e-4, -1, 1, {}, 2);
     return verdict;
 }
 

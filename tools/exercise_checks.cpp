@@ -4,10 +4,8 @@
 #include "tools/exercise.hpp"
 
 #include "common/gl.hpp"
+#include "common/program_library.hpp"
 #include "step05_fft/gpu_ocean.hpp"
-
-#include <map>
-#include <memory>
 
 #include <cmath>
 #include <fstream>
@@ -141,28 +139,10 @@ Verdict check_vector(const fs::path& work, const std::string& include, const std
 }
 
 Verdict check_fft(const fs::path& work) {
-    // The chapter's programs, each stage file taken from the work folder when it is there.
-    std::map<std::string, std::unique_ptr<ocean::ShaderProgram>> programs;
-    std::string build_error;
-    const ocean::ProgramFactory factory = [&](const std::string& name, const std::vector<std::string>& files,
-                                              const std::vector<std::string>& defines) -> ocean::ShaderProgram* {
-        std::string key = name;
-        for (const auto& d : defines) key += "|" + d;
-        auto& slot = programs[key];
-        if (!slot) {
-            std::vector<std::string> paths;
-            for (const auto& f : files) {
-                const fs::path own = work / fs::path(f).filename();
-                paths.push_back(fs::exists(own) ? own.string() : std::string(OCEAN_SOURCE_DIR) + "/" + f);
-            }
-            slot = std::make_unique<ocean::ShaderProgram>(name, paths, std::vector<std::string>{}, defines);
-            if (auto error = slot->build()) {
-                build_error = *error;
-                return nullptr;
-            }
-        }
-        return slot.get();
-    };
+    // The chapter's programs as the step gets them, its own shaders read from the work folder.
+    ocean::ProgramLibrary programs;
+    programs.set_shader_dir(std::string(OCEAN_SOURCE_DIR) + "/step05_fft/shaders", work.string());
+    const ocean::ProgramFactory factory = programs.factory();
     std::ostringstream detail;
     for (int n : {64, 128, 256, 512}) {
         step05::SpectrumParams p;
@@ -178,7 +158,7 @@ Verdict check_fft(const fs::path& work) {
         try {
             ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), 1);
         } catch (const std::exception& error) {
-            return {false, "your shader does not build:\n" + (build_error.empty() ? error.what() : build_error)};
+            return {false, std::string("your shader does not build: ") + error.what()};
         }
         const std::vector<float> output = ocean.read_fields();
         step05::ComplexField field(std::size_t(n) * n);

@@ -3,10 +3,9 @@
 // surface squeezes, and fades at the rate r. Held through the frame, q and r give the exact step
 //     f(t + dt) = f e^{-r dt} + q (1 - e^{-r dt}) / r
 // so the foam is the same at any frame rate.
+#include "exp_mean.glsl"
+
 float foam_step(float foam, float injection_rate, float decay_rate, float dt) {
     float x = decay_rate * dt;
-    float decay = exp(-x);
-    // (1 - e^{-x}) / x, by its series where float would lose it to cancellation (and at x = 0)
-    float grown_fraction = x > 1e-2 ? (1.0 - decay) / x : 1.0 - x * (0.5 - x / 6.0);
-    return clamp(foam * decay + injection_rate * dt * grown_fraction, 0.0, 1.0);
+    return clamp(foam * exp(-x) + injection_rate * dt * mean_of_exp(x), 0.0, 1.0);
 }

@@ -31,6 +31,16 @@ case "$case_name" in
     sed -i '2i this is not GLSL;' "$victim"
     args=(--shader-dir "$out/shaders" --frames 1 --size 64x64)
     expect="shader program '[a-z_]+( \[[^]]*\])?' does not build: .*$(basename "$victim"):2:" ;;
+  broken_evolve_shader | broken_foam_shader)
+    # A copy of the shaders with a compute shader broken that the chapter's own classes load by its
+    # repository path (GpuOcean's evolve.comp, FoamSimulation's foam.comp): --shader-dir must
+    # replace those too, or the learner's copy (./ocean exercise) would never be run.
+    rm -rf "$out/shaders" && cp -r "$step_dir/shaders" "$out/shaders"
+    victim="$out/shaders/$([ "$case_name" = broken_evolve_shader ] && echo evolve.comp || echo foam.comp)"
+    sed -i '2i this is not GLSL;' "$victim"
+    args=(--shader-dir "$out/shaders" --frames 1 --size 64x64 --set resolution=64)
+    [ "$case_name" = broken_evolve_shader ] && args+=(--set backend=gpu_fft)
+    expect="shader program '$(basename "$victim")' does not build: .*$(basename "$victim"):2:" ;;
   resolution_100)   args=(--set resolution=100);         expect="parameter 'resolution' expects one of 64\|128\|256\|512, got '100'" ;;
   resolution_4096)  args=(--set resolution=4096);        expect="parameter 'resolution' expects one of 64\|128\|256\|512, got '4096'" ;;
   fetch_0)          args=(--set fetch=0);                  expect="parameter 'fetch' = 0 is outside its range \[1000, " ;;
