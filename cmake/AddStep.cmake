@@ -1,5 +1,5 @@
 # add_step(NAME SOURCES ... [LIBRARY ...] SHADERS ... [LINKS ...] [TESTS ...] [GPU_TESTS ...]
-#          [EXERCISES ...] [GOLDEN file])
+#          [TEST_SHADERS ...] [EXERCISES ...] [GOLDEN file])
 # declares one chapter:
 #  - the executable NAME (folder, target and window title share the name),
 #  - with LIBRARY, a static library NAME_lib of the chapter's technique, which the step, the
@@ -10,18 +10,22 @@
 #    NAME_lib) and run by ctest as NAME.<suite>.<test>, labelled unit and NAME,
 #  - with GPU_TESTS, its GoogleTest files that need GL, built into NAME_gpu_tests with tests/gpu's
 #    headless context (gpu_main.cpp) and run as NAME.<suite>.<test>, labelled gpu and NAME,
+#  - with TEST_SHADERS, the shaders only its GPU tests load (in the lists every shader must pass),
 #  - with EXERCISES, the chapter's exercise list (STEP/exercises.cpp), compiled into tools/exercise,
 #  - its smoke test: a headless run compared with GOLDEN (default the folder's golden.png),
 #  - its windowed run under Xvfb,
+#  - OCEAN_STEP set to NAME in the chapter's CMakeLists.txt, for step_test() below,
 #  - its entry in the lists the shader, bad-input and catalogue tests walk (OCEAN_STEPS,
 #    OCEAN_SHADERS).
+# Every test of a chapter is named STEP.<kind>[.<case>] and labelled STEP, so `ctest -L STEP` and
+# `ctest -R '^STEP\.'` run the same tests (tools.test_names checks it).
 # A new chapter needs nothing else: the top CMakeLists.txt finds the folder (see "Adding a
 # chapter" in the README, and step_template/).
 include(GoogleTest)
 set(OCEAN_TESTS_DIR "${CMAKE_CURRENT_LIST_DIR}/../tests")
 
 function(add_step name)
-  cmake_parse_arguments(ARG "" "GOLDEN" "SOURCES;LIBRARY;SHADERS;LINKS;TESTS;GPU_TESTS;EXERCISES" ${ARGN})
+  cmake_parse_arguments(ARG "" "GOLDEN" "SOURCES;LIBRARY;SHADERS;LINKS;TESTS;GPU_TESTS;TEST_SHADERS;EXERCISES" ${ARGN})
   list(TRANSFORM ARG_SHADERS PREPEND "${CMAKE_CURRENT_SOURCE_DIR}/")
   add_executable(${name} ${ARG_SOURCES} ${ARG_SHADERS} README.md)
   target_link_libraries(${name} PRIVATE ocean_common ${ARG_LINKS})
@@ -87,19 +91,24 @@ function(add_step name)
 
   set_property(GLOBAL APPEND PROPERTY OCEAN_STEPS ${name})
   set_property(GLOBAL APPEND PROPERTY OCEAN_SHADERS ${ARG_SHADERS})
+  list(TRANSFORM ARG_TEST_SHADERS PREPEND "${CMAKE_CURRENT_SOURCE_DIR}/")
+  set_property(GLOBAL APPEND PROPERTY OCEAN_SHADERS ${ARG_TEST_SHADERS})
 
   set(golden "${CMAKE_CURRENT_SOURCE_DIR}/golden.png")
   if(ARG_GOLDEN)
     set(golden "${CMAKE_CURRENT_SOURCE_DIR}/${ARG_GOLDEN}")
   endif()
-  add_test(NAME smoke.${name}
+  set(OCEAN_STEP ${name} PARENT_SCOPE)
+
+  add_test(NAME ${name}.smoke
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/smoke.sh" $<TARGET_FILE:${name}>
             $<TARGET_FILE:image_compare> "${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke")
-  set_tests_properties(smoke.${name} PROPERTIES LABELS "smoke;gpu;${name}" TIMEOUT 300)
+  set_tests_properties(${name}.smoke PROPERTIES LABELS "smoke;gpu;${name}" TIMEOUT 300)
 
-  add_test(NAME windowed.${name}
+  add_test(NAME ${name}.windowed
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/windowed.sh" $<TARGET_FILE:${name}>)
   # RESOURCE_LOCK: two `xvfb-run -a` starting at once can race for the same display number.
-  set_tests_properties(windowed.${name} PROPERTIES LABELS "windowed;gpu;${name}" TIMEOUT 300 RESOURCE_LOCK xvfb
+  set_tests_properties(${name}.windowed PROPERTIES LABELS "windowed;gpu;${name}" TIMEOUT 300 RESOURCE_LOCK xvfb
     SKIP_RETURN_CODE 77)
 endfunction()
+

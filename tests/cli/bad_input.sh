@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
-# bad_input.sh CASE STEP_EXE STEP_DIR OUT_DIR
+# bad_input.sh CASE STEP_EXE STEP_DIR OUT_DIR [EXPECT ARGS...]
 # Runs one step with one kind of bad input and checks the contract every step keeps: a non-zero
 # exit that is not a crash (1, 2 or 3; a signal would be 128+), exactly one line on stderr,
-# starting with "error: " and saying what was wrong.
+# starting with "error: " and saying what was wrong. The cases below are every step's; a chapter
+# adds its own from its CMakeLists.txt (step_bad_input): EXPECT, the regular expression the line
+# must match, and the ARGS that should cause it; or (step_broken_shader) a case broken_NAME_shader
+# with the shader file to break and the ARGS to run with.
 set -u
 case_name=$1 exe=$2 step_dir=$3 out=$4
+shift 4
 mkdir -p "$out"
 
 # A number parameter of this step to feed bad values to: `amplitude` where the step has one (the
@@ -22,30 +26,27 @@ case "$case_name" in
   malformed_preset)
     printf '%s = 1\nthis line is not an assignment\n' "$number" > "$out/malformed.preset"
     args=(--preset "$out/malformed.preset"); expect="malformed.preset:2: expected 'name = value'" ;;
-  broken_shader)
-    # A copy of the step's shaders with a syntax error after the first line of one the first
-    # frame uses (ocean.frag where there is one).
-    rm -rf "$out/shaders" && cp -r "$step_dir/shaders" "$out/shaders"
-    victim="$out/shaders/ocean.frag"
-    [ -f "$victim" ] || victim=$(ls "$out"/shaders/*.frag "$out"/shaders/*.vert 2>/dev/null | head -n 1)
-    sed -i '2i this is not GLSL;' "$victim"
-    args=(--shader-dir "$out/shaders" --frames 1 --size 64x64)
-    expect="shader program '[a-z_]+( \[[^]]*\])?' does not build: .*$(basename "$victim"):2:" ;;
-  broken_evolve_shader | broken_foam_shader)
-    # A copy of the shaders with a compute shader broken that the chapter's own classes load by its
-    # repository path (GpuOcean's evolve.comp, FoamSimulation's foam.comp): --shader-dir must
+  broken_shader | broken_*_shader)
+    # A copy of the step's shaders with a syntax error after the first line of one: by default one
+    # the first frame uses (ocean.frag where there is one); a chapter may name another, such as
+    # one its own classes load by repository path (GpuOcean's evolve.comp): --shader-dir must
     # replace those too, or the learner's copy (./ocean exercise) would never be run.
-    rm -rf "$out/shaders" && cp -r "$step_dir/shaders" "$out/shaders"
-    victim="$out/shaders/$([ "$case_name" = broken_evolve_shader ] && echo evolve.comp || echo foam.comp)"
+    shaders="$out/$case_name.shaders"
+    rm -rf "$shaders" && cp -r "$step_dir/shaders" "$shaders"
+    if [ $# -ge 1 ]; then
+      victim="$shaders/$1"
+      [ -f "$victim" ] || { echo "bad_input.sh: $step_dir/shaders has no $1"; exit 2; }
+    else
+      victim="$shaders/ocean.frag"
+      [ -f "$victim" ] || victim=$(ls "$shaders"/*.frag "$shaders"/*.vert 2>/dev/null | head -n 1)
+    fi
     sed -i '2i this is not GLSL;' "$victim"
-    args=(--shader-dir "$out/shaders" --frames 1 --size 64x64 --set resolution=64)
-    [ "$case_name" = broken_evolve_shader ] && args+=(--set backend=gpu_fft)
-    expect="shader program '$(basename "$victim")' does not build: .*$(basename "$victim"):2:" ;;
-  resolution_100)   args=(--set resolution=100);         expect="parameter 'resolution' expects one of 64\|128\|256\|512, got '100'" ;;
-  resolution_4096)  args=(--set resolution=4096);        expect="parameter 'resolution' expects one of 64\|128\|256\|512, got '4096'" ;;
-  fetch_0)          args=(--set fetch=0);                  expect="parameter 'fetch' = 0 is outside its range \[1000, " ;;
-  negative_depth)   args=(--set depth=-5);                 expect="parameter 'depth' = -5 is outside its range \[1, " ;;
-  *) echo "bad_input.sh: unknown case $case_name"; exit 2 ;;
+    args=(--shader-dir "$shaders" --frames 1 --size 64x64 "${@:2}")
+    expect="shader program '[a-z_]+( \[[^]]*\])?' does not build: .*$(basename "$victim"):2:"
+    [ $# -ge 1 ] && expect="shader program '$(basename "$victim")' does not build: .*$(basename "$victim"):2:" ;;
+  *)
+    [ $# -ge 2 ] || { echo "bad_input.sh: case $case_name needs EXPECT and ARGS"; exit 2; }
+    expect=$1 args=("${@:2}") ;;
 esac
 
 "$exe" --headless "${args[@]}" > "$out/$case_name.stdout" 2> "$out/$case_name.stderr"
