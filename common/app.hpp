@@ -1,6 +1,6 @@
-// The base class of every step. A step declares its parameters in its constructor, then
-// overrides a few hooks; the framework owns the context, the run loop, the clock, input, the
-// ImGui panel, shaders, screenshots and benchmarks.
+// The base class of every step. A step declares its parameters (and the services it offers) in
+// its constructor, then writes four hooks; the framework owns the context, the run loop, the
+// clock, input, the ImGui panel, shaders, screenshots and benchmarks.
 //
 //   class Chapter : public ocean::App {
 //       Chapter() : App({"Sum of sines in 3D", "1.2.2", "..."}) { params().add_float(...); }
@@ -10,6 +10,16 @@
 //       void ui() override;                          // extra panel widgets (optional)
 //   };
 //   OCEAN_MAIN(Chapter)
+//
+// One frame, in this order (App::frame in app.cpp):
+//   1. input: window events; the camera moves (mouse, keys);
+//   2. update(time, dt): once, GPU passes included;
+//   3. render(): into the target; twice with the split view, once per variant (split_view.hpp);
+//   4. the panel: the framework's widgets, then ui(), showing this frame's state; what the user
+//      changes there takes effect from the next frame's update();
+//   5. present, then the test probes (run_support.hpp).
+// Services a step opts into from its constructor: offer_split_view, offer_export,
+// offer_bench_figures.
 #pragma once
 
 #include "common/camera.hpp"
@@ -23,6 +33,7 @@
 #include "common/shader.hpp"
 #include "common/split_view.hpp"
 
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <memory>
@@ -61,25 +72,31 @@ public:
     const std::vector<std::string>& handoff() const { return handoff_; }
 
 protected:
+    // The four hooks, in the order each frame runs them (see the top of this file).
     virtual void init() {}
     // Once a frame, before the frame's render(s): advance the simulation, GPU passes included.
     virtual void update(double /*time*/, double /*dt*/) {}
     // Draws the frame into the bound target. With the split view it runs twice a frame (see
     // split_view.hpp), so per-frame state belongs in update().
     virtual void render() = 0;
+    // The step's own panel widgets, after the framework's, once the frame is drawn.
     virtual void ui() {}
-    // Steps that simulate maps write them for --export (after the last frame); throw ocean::Error
-    // on failure.
-    virtual bool supports_export() const { return false; }
-    virtual void export_results(const std::string& /*dir*/) {}
-    // Extra --bench measurements after the per-pass table, as (label, milliseconds): printed as
-    // text and carried in the machine-readable line (a step's FFT backends, say).
-    virtual std::vector<std::pair<std::string, double>> bench_extra() { return {}; }
 
-    // The split view (--split, or the panel), a service a step opts into: its two variants as
-    // parameter assignments, drawn left and right of the screen's middle (split_view.hpp).
+    // Services, offered from the constructor (the command line is checked against them before the
+    // first frame):
+    // The split view (--split, or the panel): `variants` gives its two variants as parameter
+    // assignments, drawn left and right of the screen's middle (split_view.hpp).
     using SplitVariants = ocean::SplitVariants;
-    virtual std::optional<SplitVariants> split_variants() const { return std::nullopt; }
+    void offer_split_view(std::function<SplitVariants()> variants) { split_variants_ = std::move(variants); }
+    // --export DIR: `write` saves the step's simulated maps into DIR after the last frame (throws
+    // ocean::Error on failure).
+    void offer_export(std::function<void(const std::string& dir)> write) { export_ = std::move(write); }
+    // --bench: `measure` runs after the per-pass table and returns extra figures as (label,
+    // milliseconds), printed and carried in the machine-readable line (a step's FFT backends).
+    using BenchFigures = std::vector<std::pair<std::string, double>>;
+    void offer_bench_figures(std::function<BenchFigures()> measure) { bench_figures_ = std::move(measure); }
+    // A line for the panel (a preset saved, a step that is not built): shown until the next one.
+    void show_message(std::string message) { panel_message_ = std::move(message); }
     // Every step of the repository, in order (CMake's list of stepNN_* folders).
     const std::vector<std::string>& all_steps() const { return all_steps_; }
     // Ends this step after the frame and starts `step` at the same time, size, camera and split
@@ -114,20 +131,20 @@ protected:
     // One triangle that covers the screen; pair with common/shaders/fullscreen.vert.
     void draw_fullscreen_triangle() const;
     GLuint fullscreen_vao() const { return empty_vao_.id(); }  // for passes that draw it themselves
-    // Draws `grid` with `program` from the camera (u_view_projection, u_eye set), depth-tested,
-    // timed as the "ocean" pass: the last lines of every grid-based step's render().
-    // With `cull_margin` >= 0 (metres: the most any vertex moves from rest), only the grid's
-    // chunks that may be in view are drawn.
-    void draw_grid(const ShaderProgram& program, const GridMesh& grid, bool wireframe, float cull_margin = -1);
 
 private:
     int run_loop(const Options& options);
-    void frame(const Options& options, int frame, double dt, double real_dt);
+    void frame(const class TestProbes& probes, int frame, double dt, double real_dt);
+    // Output writing (app_output.cpp): --record, the screenshot, --export, --bench.
     void write_outputs(const Options& options, const struct Image& screenshot, int frames, double bench_seconds);
-    void init_imgui(bool draw_panel);
     void record_frame(const std::string& dir, int frame);
+    // The ImGui layer (imgui_layer.cpp) and the panel (panel.cpp).
+    void init_imgui(bool draw_panel);
+    void begin_imgui_frame(double dt);
+    void end_imgui_frame();
     void shutdown_imgui();
     void draw_panel(float frame_ms);
+    // Window input (app_input.cpp).
     CameraInput read_camera_input();
     static void on_scroll(struct GLFWwindow* window, double dx, double dy);
 
@@ -153,12 +170,13 @@ private:
     double last_reload_check_ = 0;
     bool split_view_ = false;
     SplitView split_;
+    std::function<SplitVariants()> split_variants_;
+    std::function<void(const std::string&)> export_;
+    std::function<BenchFigures()> bench_figures_;
+    std::string panel_message_;
     std::vector<std::string> handoff_;
     std::vector<std::string> all_steps_;
 };
-
-// Resident memory of this process, kB (the soak test's sample).
-long resident_kilobytes();
 
 }  // namespace ocean
 

@@ -72,7 +72,7 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
         static const std::pair<const char*, bool Options::*> switches[] = {
             {"--help", &Options::help}, {"-h", &Options::help}, {"--headless", &Options::headless},
             {"--list-params", &Options::list_params}, {"--bench", &Options::bench}, {"--ui", &Options::show_ui},
-            {"--exercise-minimise", &Options::exercise_minimise}, {"--split", &Options::split}};
+            {"--simulate-minimise", &Options::simulate_minimise}, {"--split", &Options::split}};
         const auto a_switch = std::find_if(std::begin(switches), std::end(switches),
                                            [&](const auto& s) { return name == s.first; });
         if (a_switch != std::end(switches)) {
@@ -155,7 +155,7 @@ usage: )" + step + R"( [flags]
   --bench               print per-pass GPU times and frames per second after the run
   --ui                  draw the ImGui panel in headless runs too
   --resource-log N      every N frames print resident memory and live GL objects (soak tests)
-  --exercise-minimise   frames 2 and 3 run as if the window were minimised (size 0), then restored
+  --simulate-minimise   frames 2 and 3 run as if the window were minimised (size 0), then restored
   --shader-dir DIR      read this step's shaders from DIR instead of its source folder
   --record DIR          write every frame to DIR/frame_0000.png, frame_0001.png ... (with --dt
                         for a steady clock; tools/animate makes an animation of them)

@@ -33,7 +33,7 @@ struct Options {
     std::string camera;             // --camera NAME: a shared view (camera_presets())
     bool split = false;             // --split: the chapter's two variants side by side
     int resource_log = 0;           // --resource-log N: print memory and GL objects every N frames
-    bool exercise_minimise = false; // --exercise-minimise: frames 2-3 as if the window were minimised
+    bool simulate_minimise = false; // --simulate-minimise: frames 2-3 as if the window were minimised
 };
 
 struct ParseResult {

@@ -1,6 +1,9 @@
 #include "common/grid.hpp"
 
+#include "common/camera.hpp"
 #include "common/frustum.hpp"
+#include "common/gpu_timer.hpp"
+#include "common/shader.hpp"
 
 #include <algorithm>
 
@@ -92,6 +95,21 @@ std::size_t GridMesh::draw_visible(const glm::mat4& view_projection, float margi
     glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(visible.size()));
     if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     return visible.size();
+}
+
+void draw_grid(const GridMesh& grid, const ShaderProgram& program, const Camera& camera, float aspect,
+               GpuTimers& timers, bool wireframe, float cull_margin) {
+    const glm::mat4 view_projection = camera.projection(aspect) * camera.view();
+    program.set("u_view_projection", view_projection);
+    program.set("u_eye", camera.eye());
+    GpuScope timed(timers, "ocean");
+    glEnable(GL_DEPTH_TEST);
+    glUseProgram(program.id());
+    if (cull_margin >= 0)
+        grid.draw_visible(view_projection, cull_margin, wireframe);
+    else
+        grid.draw(wireframe);
+    glDisable(GL_DEPTH_TEST);
 }
 
 }  // namespace ocean

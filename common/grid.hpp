@@ -54,6 +54,17 @@ private:
     std::vector<GridChunk> chunks_;
 };
 
+class Camera;
+class GpuTimers;
+class ShaderProgram;
+
+// Draws `grid` with `program` as `camera` sees it (u_view_projection and u_eye set), depth-tested,
+// timed as the "ocean" pass: the last lines of every grid-based step's render(). With
+// `cull_margin` >= 0 (metres: the most any vertex moves from rest), only the chunks that may be in
+// view are drawn.
+void draw_grid(const GridMesh& grid, const ShaderProgram& program, const Camera& camera, float aspect,
+               GpuTimers& timers, bool wireframe, float cull_margin = -1);
+
 // The grid's size and resolution as parameters (plane_size, x_quads, z_quads), for the steps that
 // draw one plane.
 class GridParams {
@@ -62,17 +73,16 @@ public:
     explicit GridParams(float size = 80, int quads = 160) : plane_size_(size), x_quads_(quads), z_quads_(quads) {}
 
     void declare(ParamRegistry& p) {
-        p.add_float("plane_size", &plane_size_, 1, 5000, "side of the square plane, metres").in_group("grid");
-        p.add_int("x_quads", &x_quads_, 1, 2048, "grid cells along x (vertices: x_quads + 1)").in_group("grid");
-        p.add_int("z_quads", &z_quads_, 1, 2048, "grid cells along z (vertices: z_quads + 1)").in_group("grid");
+        p.add_float("plane_size", &plane_size_, 1, 5000, "side of the square plane, metres").in_group("grid").bumps(changes_);
+        p.add_int("x_quads", &x_quads_, 1, 2048, "grid cells along x (vertices: x_quads + 1)").in_group("grid").bumps(changes_);
+        p.add_int("z_quads", &z_quads_, 1, 2048, "grid cells along z (vertices: z_quads + 1)").in_group("grid").bumps(changes_);
     }
 
     // Rebuilds the mesh only when its size or resolution changed.
     void update(GridMesh& grid) {
-        const std::array<float, 3> wanted{plane_size_, float(x_quads_), float(z_quads_)};
-        if (wanted == built_for_) return;
+        if (built_for_ == changes_.value) return;
         grid.build({plane_size_, plane_size_}, x_quads_, z_quads_);
-        built_for_ = wanted;
+        built_for_ = changes_.value;
     }
 
     int triangle_count() const { return 2 * x_quads_ * z_quads_; }
@@ -80,7 +90,8 @@ public:
 private:
     float plane_size_;
     int x_quads_, z_quads_;
-    std::array<float, 3> built_for_{-1, -1, -1};
+    Generation changes_;
+    unsigned built_for_ = 0;
 };
 
 }  // namespace ocean

@@ -52,7 +52,7 @@ bool param_widget(Param& p) {
         }
         case ParamType::Color:
             changed = ImGui::ColorEdit3(label, &p.color_value()->x);
-            if (changed) p.changed();
+            if (changed) p.bump_generations();
             break;
         case ParamType::Text: {
             std::array<char, 1025> buffer{};
@@ -87,7 +87,6 @@ bool param_widgets(ParamRegistry& params) {
         if (!group_open || !p->visible()) continue;
         if (param_widget(*p)) changed = true;
     }
-    if (changed) params.mark_changed();
     return changed;
 }
 
@@ -100,7 +99,6 @@ void App::draw_panel(float frame_ms) {
             programs_.rebuild_all();
         if (camera_enabled_ && ImGui::IsKeyPressed(GLFW_KEY_C)) {
             camera_.mode = camera_.mode == Camera::Orbit ? Camera::Fly : Camera::Orbit;
-            params_.mark_changed();
         }
     }
     if (!panel_visible_) return;
@@ -142,17 +140,18 @@ void App::draw_panel(float frame_ms) {
     ImGui::SameLine();
     ImGui::Checkbox("pause", &paused_);
 
-    if (const auto variants = split_variants()) {
+    if (split_variants_) {
+        const SplitVariants variants = split_variants_();
         ImGui::Checkbox("split view", &split_view_);
         if (split_view_) {
             ImGui::SameLine();
-            ImGui::TextDisabled("left: %s | right: %s", variants->left_label.c_str(), variants->right_label.c_str());
+            ImGui::TextDisabled("left: %s | right: %s", variants.left_label.c_str(), variants.right_label.c_str());
             // Labels on the picture itself, at the top of each half.
             ImDrawList* draw = ImGui::GetBackgroundDrawList();
             const float middle = 0.5f * float(framebuffer_size_.x);
-            draw->AddText(ImVec2(middle - 8 - ImGui::CalcTextSize(variants->left_label.c_str()).x, 8),
-                          IM_COL32(255, 255, 255, 255), variants->left_label.c_str());
-            draw->AddText(ImVec2(middle + 8, 8), IM_COL32(255, 255, 255, 255), variants->right_label.c_str());
+            draw->AddText(ImVec2(middle - 8 - ImGui::CalcTextSize(variants.left_label.c_str()).x, 8),
+                          IM_COL32(255, 255, 255, 255), variants.left_label.c_str());
+            draw->AddText(ImVec2(middle + 8, 8), IM_COL32(255, 255, 255, 255), variants.right_label.c_str());
         }
     }
     ImGui::Separator();
@@ -163,20 +162,23 @@ void App::draw_panel(float frame_ms) {
     if (ImGui::InputText("preset file", path.data(), path.size())) preset_path_ = path.data();
     if (ImGui::Button("load preset")) {
         const auto error = params_.load_preset(preset_path_);
-        programs_.set_message(error ? *error : "loaded " + preset_path_);
+        show_message(error ? *error : "loaded " + preset_path_);
     }
     ImGui::SameLine();
     if (ImGui::Button("save preset")) {
         const auto error = params_.save_preset(preset_path_, step_name() + " preset");
-        programs_.set_message(error ? *error : "saved " + preset_path_);
+        show_message(error ? *error : "saved " + preset_path_);
     }
 
     ui();
 
-    if (!programs_.message().empty()) {
+    // Two channels: the shaders' build problems (ProgramLibrary's own state, cleared when they
+    // build again) and the framework's last message (show_message).
+    for (const std::string* message : std::array<const std::string*, 2>{&programs_.message(), &panel_message_}) {
+        if (message->empty()) continue;
         ImGui::Separator();
         ImGui::PushTextWrapPos(0);
-        ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", programs_.message().c_str());
+        ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", message->c_str());
         ImGui::PopTextWrapPos();
     }
     ImGui::End();

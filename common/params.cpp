@@ -65,35 +65,41 @@ std::string Param::range_text() const {
     return "";
 }
 
-std::string Param::value_text() const {
+std::string Param::format(const ParamValue& v) const {
     switch (type_) {
-        case ParamType::Float: return format_number(get_());
-        case ParamType::Int: return std::to_string(static_cast<long long>(get_()));
-        case ParamType::Bool: return get_() != 0 ? "true" : "false";
-        case ParamType::Choice: return choices_.at(static_cast<std::size_t>(get_()));
+        case ParamType::Float: return format_number(v.number);
+        case ParamType::Int: return std::to_string(static_cast<long long>(v.number));
+        case ParamType::Bool: return v.number != 0 ? "true" : "false";
+        case ParamType::Choice: return choices_.at(static_cast<std::size_t>(v.number));
         case ParamType::Color:
-            return format_number(color_->r) + "," + format_number(color_->g) + "," +
-                   format_number(color_->b);
-        case ParamType::Text: return *text_;
+            return format_number(v.color.r) + "," + format_number(v.color.g) + "," + format_number(v.color.b);
+        case ParamType::Text: return v.text;
     }
     return "";
 }
 
-std::string Param::default_text() const {
-    switch (type_) {
-        case ParamType::Float:
-        case ParamType::Int: return format_number(default_number_);
-        case ParamType::Bool: return default_number_ != 0 ? "true" : "false";
-        case ParamType::Choice: return choices_.at(static_cast<std::size_t>(default_number_));
-        case ParamType::Color:
-            return format_number(default_color_.r) + "," + format_number(default_color_.g) + "," +
-                   format_number(default_color_.b);
-        case ParamType::Text: return default_text_;
-    }
-    return "";
+std::string Param::value_text() const { return format(value()); }
+std::string Param::default_text() const { return format(default_); }
+
+// The one place a value meets its storage: a number through the accessors, or the bound colour or
+// text.
+ParamValue Param::value() const {
+    ParamValue v;
+    if (get_) v.number = get_();
+    if (color_ != nullptr) v.color = *color_;
+    if (text_ != nullptr) v.text = *text_;
+    return v;
 }
 
-std::optional<std::string> Param::parse(const std::string& text, Parsed& out) const {
+void Param::store(const ParamValue& value) {
+    const std::string before = value_text();
+    if (put_) put_(value.number);
+    if (color_ != nullptr) *color_ = value.color;
+    if (text_ != nullptr) *text_ = value.text;
+    if (value_text() != before) bump_generations();
+}
+
+std::optional<std::string> Param::parse(const std::string& text, ParamValue& out) const {
     const std::string shown = "'" + ellipsize(text, 40) + "'";
     bool non_finite = false;
     switch (type_) {
@@ -157,48 +163,23 @@ std::optional<std::string> Param::parse(const std::string& text, Parsed& out) co
 }
 
 std::optional<std::string> Param::check_text(const std::string& text) const {
-    Parsed parsed;
+    ParamValue parsed;
     return parse(text, parsed);
 }
 
 std::optional<std::string> Param::set_from_text(const std::string& text) {
-    Parsed parsed;
+    ParamValue parsed;
     if (auto error = parse(text, parsed)) return error;
-    const std::string before = value_text();
-    switch (type_) {
-        case ParamType::Float:
-        case ParamType::Int:
-        case ParamType::Choice:
-        case ParamType::Bool: put_(parsed.number); break;
-        case ParamType::Color: *color_ = parsed.color; break;
-        case ParamType::Text: *text_ = parsed.text; break;
-    }
-    if (value_text() != before) changed();
+    store(parsed);
     return std::nullopt;
 }
 
 void Param::set_number(double value) {
-    const double clamped = std::clamp(value, min_, max_);
-    if (clamped == get_()) return;
-    put_(clamped);
-    changed();
+    store({std::clamp(value, min_, max_), glm::vec3(0.0f), ""});
 }
 
-void Param::changed() const {
+void Param::bump_generations() const {
     for (Generation* g : generations_) ++g->value;
-}
-
-void Param::reset() {
-    const std::string before = value_text();
-    switch (type_) {
-        case ParamType::Float:
-        case ParamType::Int:
-        case ParamType::Choice:
-        case ParamType::Bool: put_(default_number_); break;
-        case ParamType::Color: *color_ = default_color_; break;
-        case ParamType::Text: *text_ = default_text_; break;
-    }
-    if (value_text() != before) changed();
 }
 
 Param& ParamRegistry::add(std::unique_ptr<Param> param) {
@@ -214,7 +195,7 @@ Param& ParamRegistry::add_number(const std::string& name, ParamType type, std::f
                                  std::vector<std::string> choices) {
     auto p = std::make_unique<Param>();
     p->name_ = name; p->help_ = help; p->type_ = type;
-    p->default_number_ = get();
+    p->default_.number = get();
     p->get_ = std::move(get); p->put_ = std::move(put);
     p->min_ = min; p->max_ = max; p->choices_ = std::move(choices);
     return add(std::move(p));
@@ -235,20 +216,12 @@ Param& ParamRegistry::bind(const std::string& name, ParamType type, T* value, do
     }
 }
 
-Param& ParamRegistry::add_float(const std::string& name, float* value, float def, float min, float max,
-                                const std::string& help) {
-    return add_float(name, &(*value = def), min, max, help);
-}
 Param& ParamRegistry::add_float(const std::string& name, float* value, float min, float max, const std::string& help) {
     return bind(name, ParamType::Float, value, min, max, help);
 }
 Param& ParamRegistry::add_float(const std::string& name, double* value, double min, double max,
                                 const std::string& help) {
     return bind(name, ParamType::Float, value, min, max, help);
-}
-Param& ParamRegistry::add_int(const std::string& name, int* value, int def, int min, int max,
-                              const std::string& help) {
-    return add_int(name, &(*value = def), min, max, help);
 }
 Param& ParamRegistry::add_int(const std::string& name, int* value, int min, int max, const std::string& help) {
     return bind(name, ParamType::Int, value, min, max, help);
@@ -257,17 +230,9 @@ Param& ParamRegistry::add_int(const std::string& name, std::uint64_t* value, int
                               const std::string& help) {
     return bind(name, ParamType::Int, value, min, max, help);
 }
-Param& ParamRegistry::add_bool(const std::string& name, bool* value, bool def, const std::string& help) {
-    return add_bool(name, &(*value = def), help);
-}
 Param& ParamRegistry::add_bool(const std::string& name, bool* value, const std::string& help) {
     return add_number(name, ParamType::Bool, [value] { return *value ? 1.0 : 0.0; },
                       [value](double v) { *value = v != 0; }, 0, 1, help);
-}
-
-Param& ParamRegistry::add_choice(const std::string& name, int* value, int def, std::vector<std::string> choices,
-                                 const std::string& help) {
-    return add_choice(name, &(*value = def), std::move(choices), help);
 }
 
 Param& ParamRegistry::add_choice(const std::string& name, int* value, std::vector<std::string> choices,
@@ -290,23 +255,17 @@ Param& ParamRegistry::add_value_choice(const std::string& name, int* value, cons
                       double(values.size()) - 1, help, std::move(names));
 }
 
-Param& ParamRegistry::add_color(const std::string& name, glm::vec3* value, glm::vec3 def,
-                                const std::string& help) {
-    return add_color(name, &(*value = def), help);
-}
-
 Param& ParamRegistry::add_color(const std::string& name, glm::vec3* value, const std::string& help) {
     auto p = std::make_unique<Param>();
     p->name_ = name; p->help_ = help; p->type_ = ParamType::Color; p->color_ = value;
-    p->default_color_ = *value; p->min_ = 0; p->max_ = 1;
+    p->default_.color = *value; p->min_ = 0; p->max_ = 1;
     return add(std::move(p));
 }
 
-Param& ParamRegistry::add_text(const std::string& name, std::string* value, const std::string& def,
-                               const std::string& help) {
+Param& ParamRegistry::add_text(const std::string& name, std::string* value, const std::string& help) {
     auto p = std::make_unique<Param>();
     p->name_ = name; p->help_ = help; p->type_ = ParamType::Text; p->text_ = value;
-    p->default_text_ = def;
+    p->default_.text = *value;
     return add(std::move(p));
 }
 
@@ -331,9 +290,7 @@ std::string ParamRegistry::unknown_name_message(const std::string& name) const {
 std::optional<std::string> ParamRegistry::set(const std::string& name, const std::string& value) {
     Param* p = find(name);
     if (p == nullptr) return unknown_name_message(name);
-    if (auto error = p->set_from_text(value)) return error;
-    mark_changed();
-    return std::nullopt;
+    return p->set_from_text(value);
 }
 
 std::optional<std::string> ParamRegistry::set_assignment(const std::string& assignment) {
@@ -345,68 +302,6 @@ std::optional<std::string> ParamRegistry::set_assignment(const std::string& assi
 
 void ParamRegistry::reset_all() {
     for (auto& p : params_) p->reset();
-    mark_changed();
-}
-
-std::optional<std::string> ParamRegistry::apply_preset_text(const std::string& text,
-                                                            const std::string& origin) {
-    if (text.find('\0') != std::string::npos) return origin + ": not a text file";
-    // Editors that save UTF-8 with a byte-order mark put EF BB BF before the first name.
-    const std::string_view bom = "\xEF\xBB\xBF";
-    std::istringstream lines(text.compare(0, bom.size(), bom) == 0 ? text.substr(bom.size()) : text);
-    std::vector<std::pair<Param*, std::string>> assignments;
-    std::string line;
-    int number = 0;
-    while (std::getline(lines, line)) {
-        ++number;
-        const std::string where = origin + ":" + std::to_string(number) + ": ";
-        const std::string content = trim(line.substr(0, line.find('#')));
-        if (content.empty()) continue;
-        const auto eq = content.find('=');
-        if (eq == std::string::npos || trim(content.substr(0, eq)).empty())
-            return where + "expected 'name = value', got '" + ellipsize(content, 40) + "'";
-        const std::string name = trim(content.substr(0, eq));
-        const std::string value = trim(content.substr(eq + 1));
-        Param* p = find(name);
-        if (p == nullptr) return where + unknown_name_message(name);
-        if (auto error = p->check_text(value)) return where + *error;
-        assignments.emplace_back(p, value);
-    }
-    for (auto& [param, value] : assignments) param->set_from_text(value);
-    mark_changed();
-    return std::nullopt;
-}
-
-std::optional<std::string> ParamRegistry::load_preset(const std::string& path) {
-    std::string text;
-    if (auto error = read_text_file(path, &text)) return "cannot read preset " + *error;
-    return apply_preset_text(text, path);
-}
-
-std::string ParamRegistry::preset_text(const std::string& header) const {
-    std::ostringstream out;
-    out << "# " << header << "\n"
-        << "# One 'name = value' per line; '#' starts a comment. Missing names keep their\n"
-        << "# defaults; unknown names and out-of-range values are refused.\n";
-    std::string group;
-    for (const auto& p : params_) {
-        if (p->group() != group) {
-            group = p->group();
-            out << "\n# " << group << "\n";
-        }
-        out << p->name() << " = " << p->value_text() << "    # " << p->range_text() << " "
-            << p->help() << "\n";
-    }
-    return out.str();
-}
-
-std::optional<std::string> ParamRegistry::save_preset(const std::string& path,
-                                                      const std::string& header) const {
-    std::ofstream file(path);
-    if (!file) return "cannot write preset '" + path + "'";
-    file << preset_text(header);
-    if (!file.flush()) return "cannot write preset '" + path + "'";
-    return std::nullopt;
 }
 
 std::string ParamRegistry::list_text() const {

@@ -18,9 +18,19 @@ namespace ocean {
 
 enum class ParamType { Float, Int, Bool, Choice, Color, Text };
 
-// A change counter: a parameter declared with `.bumps(counter)` increments it whenever its value
-// changes through the registry (--set, a preset, reset, the panel). A step compares the counter
-// with the one it last built for, instead of comparing structs field by field.
+// A parameter's value in the slot its type uses: `number` for Float, Int, Bool (0/1) and Choice
+// (the index), `color`, or `text`. What text parses to, the default, and what the split view saves
+// and puts back.
+struct ParamValue {
+    double number = 0;
+    glm::vec3 color{0.0f};
+    std::string text;
+};
+
+// A change counter, the one way a step notices that parameters changed: a parameter declared with
+// `.bumps(counter)` increments it whenever its value changes through the registry (--set, a
+// preset, reset, the panel). A step compares the counter with the one it last built for, instead
+// of comparing structs field by field; what no parameter bumps (the camera) rebuilds nothing.
 struct Generation {
     unsigned value = 1;  // a step's "built for" starts at 0: the first frame always builds
 };
@@ -50,7 +60,11 @@ public:
     std::optional<std::string> set_from_text(const std::string& text);
     // Parses and validates without storing (presets check every line before applying any).
     std::optional<std::string> check_text(const std::string& text) const;
-    void reset();
+    void reset() { store(default_); }
+    // The value as it is, and storing one (already valid: from value() or parsed); storing bumps
+    // the generations when the value changed.
+    ParamValue value() const;
+    void store(const ParamValue& value);
 
     // The bound value, for the UI: numbers (Float, Int, Bool as 0/1, Choice as its index) read and
     // written through one accessor whatever the storage (float, double, int, uint64, enum).
@@ -58,15 +72,15 @@ public:
     void set_number(double value);  // clamped to the range; bumps the generations when it changed
     glm::vec3* color_value() const { return color_; }
     std::string* text_value() const { return text_; }
-    void changed() const;  // bumps every Generation this parameter feeds
+    void bump_generations() const;  // a change made behind the registry's back (a colour widget)
     double min() const { return min_; }
     double max() const { return max_; }
     const std::vector<std::string>& choices() const { return choices_; }
 
 private:
     friend class ParamRegistry;
-    struct Parsed { double number = 0; glm::vec3 color{0.0f}; std::string text; };
-    std::optional<std::string> parse(const std::string& text, Parsed& out) const;
+    std::optional<std::string> parse(const std::string& text, ParamValue& out) const;
+    std::string format(const ParamValue& value) const;  // the text form of a value of this type
 
     std::string name_, help_, group_;
     ParamType type_ = ParamType::Float;
@@ -74,9 +88,7 @@ private:
     std::function<void(double)> put_;
     glm::vec3* color_ = nullptr;
     std::string* text_ = nullptr;
-    std::string default_text_;
-    double default_number_ = 0;
-    glm::vec3 default_color_{0.0f};
+    ParamValue default_;
     double min_ = 0, max_ = 0;
     std::vector<std::string> choices_;
     std::function<bool()> visible_;
@@ -86,22 +98,14 @@ private:
 
 class ParamRegistry {
 public:
-    // Each declaration binds a parameter to the variable the math uses. With a `def` argument it
-    // stores the default into *value at once; without, the variable's current value is the default
-    // (the struct's own initialiser, or what the step set just before: the default is written
-    // once). Names are snake_case, unique.
-    Param& add_float(const std::string& name, float* value, float def, float min, float max,
-                     const std::string& help);
+    // Each declaration binds a parameter to the variable the math uses; the variable's value when
+    // it is declared is the default (the struct's own initialiser: the default is written once).
+    // Names are snake_case, unique.
     Param& add_float(const std::string& name, float* value, float min, float max, const std::string& help);
     Param& add_float(const std::string& name, double* value, double min, double max, const std::string& help);
-    Param& add_int(const std::string& name, int* value, int def, int min, int max,
-                   const std::string& help);
     Param& add_int(const std::string& name, int* value, int min, int max, const std::string& help);
     Param& add_int(const std::string& name, std::uint64_t* value, int min, int max, const std::string& help);
-    Param& add_bool(const std::string& name, bool* value, bool def, const std::string& help);
     Param& add_bool(const std::string& name, bool* value, const std::string& help);
-    Param& add_choice(const std::string& name, int* value, int def,
-                      std::vector<std::string> choices, const std::string& help);
     Param& add_choice(const std::string& name, int* value, std::vector<std::string> choices, const std::string& help);
     // An enum bound directly: choice i is the enumerator with value i.
     template <class Enum>
@@ -112,12 +116,9 @@ public:
     }
     // An int that takes one of a few values (a resolution: 64, 128, ...), shown by value.
     Param& add_value_choice(const std::string& name, int* value, const std::vector<int>& values, const std::string& help);
-    Param& add_color(const std::string& name, glm::vec3* value, glm::vec3 def,
-                     const std::string& help);
     Param& add_color(const std::string& name, glm::vec3* value, const std::string& help);
     // Free text on one line (a file name): at most 1024 characters, no '#' (presets' comments).
-    Param& add_text(const std::string& name, std::string* value, const std::string& def,
-                    const std::string& help);
+    Param& add_text(const std::string& name, std::string* value, const std::string& help);
 
     Param* find(const std::string& name);
     const std::vector<std::unique_ptr<Param>>& all() const { return params_; }
@@ -136,11 +137,6 @@ public:
 
     std::string list_text() const;  // the table --list-params prints
 
-    // Bumped on every change through the registry (set, preset, reset, UI), so a step can
-    // rebuild what depends on its parameters only when one changed.
-    unsigned generation() const { return generation_; }
-    void mark_changed() { ++generation_; }
-
 private:
     Param& add(std::unique_ptr<Param> param);
     template <class T>  // float, double, int, uint64 storage
@@ -152,7 +148,6 @@ private:
     std::string unknown_name_message(const std::string& name) const;
 
     std::vector<std::unique_ptr<Param>> params_;
-    unsigned generation_ = 0;
 };
 
 }  // namespace ocean

@@ -45,7 +45,6 @@ public:
     void set_running() { running_ = true; }
     // The last build problem (for the panel), "" when none.
     const std::string& message() const { return message_; }
-    void set_message(std::string message) { message_ = std::move(message); }
     void clear() { programs_.clear(); by_key_.clear(); last_good_.clear(); failed_.clear(); }
 
 private:

@@ -1,6 +1,7 @@
 #include "common/run_support.hpp"
 
 #include "common/error.hpp"
+#include "common/gl.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -8,6 +9,9 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <unistd.h>
 
 namespace ocean {
 
@@ -72,13 +76,27 @@ std::string prepare_export_dir(const std::string& dir) {
     return dir;
 }
 
-glm::ivec2 exercise_minimise(Context& context, int frame, glm::ivec2 size) {
-    if (frame != 2 && frame != 3) return size;
+glm::ivec2 TestProbes::framebuffer_size(Context& context, int frame, glm::ivec2 size) const {
+    if (!minimise_ || (frame != 2 && frame != 3)) return size;
     if (GLFWwindow* window = context.window(); window != nullptr) {
         if (frame == 2) glfwIconifyWindow(window);
         if (frame == 3) glfwRestoreWindow(window);
     }
     return glm::ivec2(0);
+}
+
+void TestProbes::after_frame(int frame) const {
+    if (resource_log_ > 0 && (frame + 1) % resource_log_ == 0)
+        std::cout << "resources: frame " << frame + 1 << " rss_kb " << resident_kilobytes() << " gl_objects "
+                  << live_gl_objects() << std::endl;
+}
+
+long resident_kilobytes() {
+    // /proc/self/statm: size, resident, ... in pages.
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * (sysconf(_SC_PAGESIZE) / 1024);
 }
 
 std::string bench_csv_line(const std::string& step, glm::ivec2 size, GpuTimers& timers, double wall_seconds,

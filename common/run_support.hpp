@@ -1,6 +1,6 @@
 // The run loop's collaborators (App::run_loop in app.cpp strings them together): the frame
 // clock, closing on Ctrl-C, capturing and writing the last frame, the --export folder, the
-// test hook that plays a minimised window, and the machine-readable --bench line.
+// hooks only the tests use, and the machine-readable --bench line.
 #pragma once
 
 #include "common/cli.hpp"
@@ -57,9 +57,25 @@ std::string save_screenshot(const Image& image, const std::string& path);
 // Creates the --export folder; returns it. Throws ocean::Error.
 std::string prepare_export_dir(const std::string& dir);
 
-// --exercise-minimise: frames 2 and 3 get a 0x0 framebuffer, as a minimised window reports (and
-// a real window is iconified and restored). Returns the size the frame should use.
-glm::ivec2 exercise_minimise(Context& context, int frame, glm::ivec2 size);
+// The hooks only the tests use, kept out of the run loop's own logic: --simulate-minimise (frames
+// 2 and 3 get a 0x0 framebuffer, as a minimised window reports, and a real window is iconified and
+// restored) and --resource-log N (resident memory and live GL objects every N frames, the soak).
+class TestProbes {
+public:
+    explicit TestProbes(const Options& options)
+        : minimise_(options.simulate_minimise), resource_log_(options.resource_log) {}
+    // The framebuffer size frame `frame` should use.
+    glm::ivec2 framebuffer_size(Context& context, int frame, glm::ivec2 size) const;
+    // After frame `frame` was presented.
+    void after_frame(int frame) const;
+
+private:
+    bool minimise_;
+    int resource_log_;
+};
+
+// Resident memory of this process, kB (the soak test's sample).
+long resident_kilobytes();
 
 // The --bench results as one CSV row, the format ./ocean bench collects (said here only):
 //   bench-csv-header: step,size,fps,total_ms,passes,<extra labels>

@@ -1,7 +1,8 @@
-// The split view, a framework service a step opts into by returning its two variants from
-// App::split_variants(): the whole frame is rendered once per variant (the step's render() runs
-// twice a frame, each time with that variant's parameters set), the left half of the first is
-// kept and put over the second, and the parameters are restored. Work that must happen once a
+// The split view, a framework service a step opts into with App::offer_split_view: the whole frame
+// is rendered once per variant (the step's render() runs twice a frame, each time with that
+// variant's parameters set), the left half of the first is kept and put over the second, and the
+// parameters the variants set are put back as they were (their values kept typed: nothing else
+// is touched). Work that must happen once a
 // frame, whatever is shown (advancing a simulation, accumulating foam), belongs in update(),
 // which runs once before the frame's renders.
 #pragma once
@@ -12,6 +13,7 @@
 #include <glm/vec2.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,9 +27,9 @@ struct SplitVariants {
 class SplitView {
 public:
     // Renders `render_frame` once per variant into `target` (of `size`), composed left | right.
-    // A variant assignment the registry refuses is reported in *message.
-    void render(ParamRegistry& params, const SplitVariants& variants, glm::ivec2 size, GLuint target,
-                const std::function<void()>& render_frame, std::string* message);
+    // Returns the message for a variant assignment the registry refuses (the frame is still drawn).
+    std::optional<std::string> render(ParamRegistry& params, const SplitVariants& variants, glm::ivec2 size,
+                                      GLuint target, const std::function<void()>& render_frame);
 
 private:
     Renderbuffer colour_;

@@ -45,6 +45,9 @@ public:
         p.add_bool("show_waves", &show_waves_, "draw each wave in its own colour").in_group("view");
         p.add_bool("show_sum", &show_sum_, "draw the sum of the waves in white").in_group("view");
         p.add_float("line_width", &line_width_, 0.5f, 10, "width of a wave's line, pixels").in_group("view");
+        offer_split_view([] {
+            return SplitVariants{"each wave", "their sum", {"show_sum=false"}, {"show_waves=false"}};
+        });
     }
 
 private:
@@ -88,22 +91,16 @@ private:
         ImGui::Separator();
         if (ImGui::Button("add a wave") && wave_count_ < kMaxWaves) {
             ++wave_count_;
-            params().mark_changed();
         }
         ImGui::SameLine();
         if (ImGui::Button("remove a wave") && wave_count_ > 1) {
             --wave_count_;
-            params().mark_changed();
         }
         for (int i = 0; i < wave_count_; ++i)
             ImGui::TextColored(ImVec4(kWaveColors[i].r, kWaveColors[i].g, kWaveColors[i].b, 1),
                                "wave %d: w = %.3f rad/m, phi = %.3f rad/s", i,
                                step01::kTwoPi / double(waves_[i].wavelength),
                                double(waves_[i].speed) * step01::kTwoPi / double(waves_[i].wavelength));
-    }
-
-    std::optional<SplitVariants> split_variants() const override {
-        return SplitVariants{"each wave", "their sum", {"show_sum=false"}, {"show_waves=false"}};
     }
 
     ocean::ShaderProgram* plot_ = nullptr;

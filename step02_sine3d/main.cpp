@@ -25,6 +25,9 @@ public:
         params().add_bool("facet_shading", &facet_shading_, "darken faces turned from a fixed direction")
             .in_group("view");
         use_camera(ocean::camera_view("overview"));
+        offer_split_view([this] {
+            return SplitVariants{"solid", "wireframe", {"wireframe=false"}, {"wireframe=true"}};
+        });
     }
 
 private:
@@ -33,21 +36,17 @@ private:
 
     void render() override {
         clear_target({0.06f, 0.07f, 0.09f});
-        ocean::ShaderProgram* ocean = program("ocean", {"ocean.vert", "ocean.frag"});
-        step02::upload_waves(*ocean, waves_.waves(), time());
-        ocean->set("u_height_extent", float(waves_.height_extent()));
-        ocean->set("u_facet_shading", int(facet_shading_));
-        ocean->set("u_wireframe", int(wireframe_));
-        draw_grid(*ocean, grid_, wireframe_);
+        ocean::ShaderProgram* ocean_program = program("ocean", {"ocean.vert", "ocean.frag"});
+        step02::upload_waves(*ocean_program, waves_.waves(), time());
+        ocean_program->set("u_height_extent", float(waves_.height_extent()));
+        ocean_program->set("u_facet_shading", int(facet_shading_));
+        ocean_program->set("u_wireframe", int(wireframe_));
+        ocean::draw_grid(grid_, *ocean_program, camera(), aspect(), timers(), wireframe_);
     }
 
     void ui() override {
         ImGui::Separator();
         ImGui::Text("%d vertices, %d triangles", grid_.vertex_count(), grid_params_.triangle_count());
-    }
-
-    std::optional<SplitVariants> split_variants() const override {
-        return SplitVariants{"solid", "wireframe", {"wireframe=false"}, {"wireframe=true"}};
     }
 
     ocean::GridMesh grid_;

@@ -43,6 +43,10 @@ public:
         light_.declare(p);
         p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         use_camera(ocean::camera_view("overview"));
+        offer_split_view([this] {
+            return SplitVariants{"analytic normals", "finite differences", {"normals=analytic"},
+                                 {"normals=finite_difference"}};
+        });
     }
 
 private:
@@ -60,14 +64,14 @@ private:
     void render() override {
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
-        ocean::ShaderProgram* ocean = ocean_variant();
-        step02::upload_waves(*ocean, waves_.waves(), time());
-        step03::upload_light(*ocean, light_.light());
-        ocean->set("u_fd_step", fd_step_);
-        ocean->set("u_angle_scale", angle_scale_);
-        ocean->set("u_wireframe", int(wireframe_));
-        ocean->set("u_background", step03::srgb_to_linear(clear));
-        draw_grid(*ocean, grid_, wireframe_);
+        ocean::ShaderProgram* ocean_program = ocean_variant();
+        step02::upload_waves(*ocean_program, waves_.waves(), time());
+        step03::upload_light(*ocean_program, light_.light());
+        ocean_program->set("u_fd_step", fd_step_);
+        ocean_program->set("u_angle_scale", angle_scale_);
+        ocean_program->set("u_wireframe", int(wireframe_));
+        ocean_program->set("u_background", step03::srgb_to_linear(clear));
+        ocean::draw_grid(grid_, *ocean_program, camera(), aspect(), timers(), wireframe_);
     }
 
     void ui() override {
@@ -75,11 +79,6 @@ private:
         ImGui::Text("%d vertices, %d triangles", grid_.vertex_count(), grid_params_.triangle_count());
         const auto l = light_.light().to_sun;
         ImGui::Text("L = (%.2f, %.2f, %.2f)", l.x, l.y, l.z);
-    }
-
-    std::optional<SplitVariants> split_variants() const override {
-        return SplitVariants{"analytic normals", "finite differences", {"normals=analytic"},
-                             {"normals=finite_difference"}};
     }
 
     ocean::GridMesh grid_;

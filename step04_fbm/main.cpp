@@ -34,6 +34,9 @@ public:
         grid_params_.declare(p);
         p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         use_camera(ocean::camera_view("overview"));
+        offer_split_view([this] {
+            return SplitVariants{"sine", "exp(sin - 1)", {"shape=sine"}, {"shape=exp_sine"}};
+        });
     }
 
 private:
@@ -50,13 +53,13 @@ private:
     void render() override {
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
-        ocean::ShaderProgram* ocean = program("ocean", {"ocean.vert", "ocean.frag"},
+        ocean::ShaderProgram* ocean_program = program("ocean", {"ocean.vert", "ocean.frag"},
                                               {"SHAPE " + std::to_string(fbm_.shape), "VIEW " + std::to_string(view_)});
-        fbm_uniforms_->upload(*ocean, cascades_, fbm_.warp, time());
-        step03::upload_light(*ocean, light_.light());
-        ocean->set("u_wireframe", int(wireframe_));
-        ocean->set("u_background", step03::srgb_to_linear(clear));
-        draw_grid(*ocean, grid_, wireframe_);
+        fbm_uniforms_->upload(*ocean_program, cascades_, fbm_.warp, time());
+        step03::upload_light(*ocean_program, light_.light());
+        ocean_program->set("u_wireframe", int(wireframe_));
+        ocean_program->set("u_background", step03::srgb_to_linear(clear));
+        ocean::draw_grid(grid_, *ocean_program, camera(), aspect(), timers(), wireframe_);
     }
 
     void ui() override {
@@ -68,10 +71,6 @@ private:
             ImGui::Text("cascade %zu: wavelengths %.2f m .. %.3f m", c, step04::kTwoPi / w.front().wavenumber,
                         step04::kTwoPi / w.back().wavenumber);
         }
-    }
-
-    std::optional<SplitVariants> split_variants() const override {
-        return SplitVariants{"sine", "exp(sin - 1)", {"shape=sine"}, {"shape=exp_sine"}};
     }
 
     std::unique_ptr<step04::FbmUniforms> fbm_uniforms_;  // made once the GL context exists

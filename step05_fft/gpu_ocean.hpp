@@ -9,6 +9,7 @@
 #include "step05_fft/cpu_simulation.hpp"
 #include "step05_fft/ocean_maps.hpp"
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -25,6 +26,18 @@ namespace step05 {
 // until the resolution changes. No frame is spent only on timing, so a step starts as fast as
 // before. On llvmpipe the "GPU" is the CPU, and FFTW wins; on a real GPU the GPU FFT does.
 enum class Backend { Dft = 0, GpuFft = 1, Fftw = 2, Auto = 3 };
+// Each backend's name, written once (Backend's order): the `backend` parameters' choices.
+inline const std::vector<std::string>& backend_names() {
+    static const std::vector<std::string> names = {"dft", "gpu_fft", "fftw", "auto"};
+    return names;
+}
+// The names of `offered`, in that order (a step that offers some of the backends).
+template <std::size_t N>
+std::vector<std::string> backend_names(const std::array<Backend, N>& offered) {
+    std::vector<std::string> names;
+    for (Backend b : offered) names.push_back(backend_names()[std::size_t(b)]);
+    return names;
+}
 constexpr int kAutoTrialFrames = 3;
 constexpr int kMaxDftSize = 64;  // the naive DFT is O(N^4)
 constexpr int kMaxCascades = 4;

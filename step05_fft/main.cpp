@@ -33,7 +33,7 @@ public:
                "shared memory) gives heights, choppy displacements and slopes."}) {
         auto& p = params();
         ocean_params_.declare(p);
-        p.add_choice("backend", &backend_, {"dft", "gpu_fft", "fftw", "auto"},
+        p.add_choice("backend", &backend_, step05::backend_names(),
                      "inverse transform: naive DFT on the GPU (N <= 64), GPU FFT, FFTW on the CPU, or auto "
                      "(the faster of the last two, timed on the first frames)");
         p.add_choice("normals", &normals_, {"slopes", "finite_difference"},
@@ -49,6 +49,19 @@ public:
         p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         p.add_bool("frustum_culling", &cull_, "draw only the grid's chunks that may be in view").in_group("grid");
         use_camera(ocean::camera_view("deck"));  // an open sea, seen from a ship's deck (12 m up)
+        // The notes' DFT against the FFT: the same sea (the DFT needs resolution 64).
+        offer_export([this](const std::string& dir) {
+            step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
+                                ocean_params_.sea.patch_size, time(), ocean_params_.choppiness, params());
+        });
+        offer_bench_figures([this] {
+            const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 9);
+            for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
+            return times.figures();
+        });
+        offer_split_view([this] {
+            return SplitVariants{"naive DFT", "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
+        });
     }
 
 private:
@@ -97,17 +110,17 @@ private:
             draw_map_view();
             return;
         }
-        ocean::ShaderProgram* ocean = program("ocean", {"ocean.vert", "ocean.frag"}, {"NORMALS " + std::to_string(normals_)});
-        step03::upload_light(*ocean, light_.light());
-        ocean->set("u_patch_size", float(ocean_params_.sea.patch_size));
-        ocean->set("u_resolution", ocean_params_.sea.resolution);
-        ocean->set("u_wireframe", int(wireframe_));
-        ocean->set("u_background", step03::srgb_to_linear(clear));
-        gpu_->bind_maps(*ocean);
+        ocean::ShaderProgram* ocean_program = program("ocean", {"ocean.vert", "ocean.frag"}, {"NORMALS " + std::to_string(normals_)});
+        step03::upload_light(*ocean_program, light_.light());
+        ocean_program->set("u_patch_size", float(ocean_params_.sea.patch_size));
+        ocean_program->set("u_resolution", ocean_params_.sea.resolution);
+        ocean_program->set("u_wireframe", int(wireframe_));
+        ocean_program->set("u_background", step03::srgb_to_linear(clear));
+        gpu_->bind_maps(*ocean_program);
         // Only the grid's chunks that may be in view (the plane reaches the horizon all round, the
         // view sees a wedge of it), widened by how far a vertex can move.
         const double margin = step05::largest_displacement(height_variance_, ocean_params_.choppiness);
-        draw_grid(*ocean, grid_, wireframe_, cull_ ? float(margin) : -1.0f);
+        ocean::draw_grid(grid_, *ocean_program, camera(), aspect(), timers(), wireframe_, cull_ ? float(margin) : -1.0f);
     }
 
     void draw_map_view() {
@@ -133,23 +146,6 @@ private:
         spectrum_view_.draw_ui();
         if (ImGui::Button("compare the backends")) backend_times_ = step05::time_backends(*gpu_, time(), 3).lines();
         for (const auto& line : backend_times_) ImGui::TextUnformatted(line.c_str());
-    }
-
-    bool supports_export() const override { return true; }
-    void export_results(const std::string& dir) override {
-        step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
-                            ocean_params_.sea.patch_size, time(), ocean_params_.choppiness, params());
-    }
-
-    std::vector<std::pair<std::string, double>> bench_extra() override {
-        const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 9);
-        for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
-        return times.figures();
-    }
-
-    // The notes' DFT against the FFT: the same sea (the DFT needs resolution 64).
-    std::optional<SplitVariants> split_variants() const override {
-        return SplitVariants{"naive DFT", "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
     }
 
     step05::OceanParams ocean_params_;

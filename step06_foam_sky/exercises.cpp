@@ -85,7 +85,7 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 4): how many segments the edge from a to b (x, z, at y = 0) is cut into.\n"
          "    return 16.0;\n",
          "Write edge_level: the level falls as 1 / distance from the eye (u_eye) to the edge's midpoint, so that\n"
-         "a segment covers about the same part of the screen near and far: u_tess_scale * u_patch_size /\n"
+         "a segment covers about the same part of the screen near and far: u_tess_scale * u_tess_patch_size /\n"
          "distance, clamped to [1, 64]. The starter cuts every edge into 16: too coarse near the camera, wasted far\n"
          "away (view=tessellation shows it).",
          "Use the midpoint of the edge (so the two patches that share it compute the same level and no crack "
@@ -100,7 +100,7 @@ std::vector<Exercise> chapter() {
                  },
                  1e-4, -1, 1, [](const ocean::ShaderProgram& p) {
                      p.set("u_eye", glm::vec3(kTessEye));
-                     p.set("u_patch_size", float(kTessPatch));
+                     p.set("u_tess_patch_size", float(kTessPatch));
                      p.set("u_tess_scale", float(kTessScale));
                  });
          }},

@@ -81,13 +81,13 @@ public:
         };
         const auto colour = [&](const char* name) {
             for (const Colour& c : colours)
-                if (std::string(name) == c.name) p.add_color(c.name, &(this->*c.member), this->*c.member, c.help).in_group(c.group);
+                if (std::string(name) == c.name) p.add_color(c.name, &(this->*c.member), c.help).in_group(c.group);
         };
         for (const char* name : {"sun_azimuth", "sun_elevation", "sun_intensity"}) number(name);
         for (const char* name : {"sun_colour", "zenith_colour", "horizon_colour"}) colour(name);
         for (const char* name : {"cloud_cover", "cloud_speed"}) number(name);
-        p.add_text("sky_image", &sky_image, sky_image, "equirectangular sky image (.hdr, .png); empty: procedural").in_group(kSky);
-        p.add_choice("microfacet", &microfacet, microfacet, {"ggx", "beckmann"}, "specular microfacet distribution")
+        p.add_text("sky_image", &sky_image, "equirectangular sky image (.hdr, .png); empty: procedural").in_group(kSky);
+        p.add_choice("microfacet", &microfacet, {"ggx", "beckmann"}, "specular microfacet distribution")
             .in_group(kWater);
         number("roughness");
         for (const char* name : {"scatter_colour", "crest_colour", "bubble_colour"}) colour(name);
@@ -98,7 +98,7 @@ public:
         for (const char* name : {"foam_roughness", "fog_density", "fog_falloff", "bloom_threshold", "bloom_strength"})
             number(name);
         number("exposure").logarithmic();
-        p.add_choice("tonemapper", &tonemapper, tonemapper, {"aces", "agx", "none"},
+        p.add_choice("tonemapper", &tonemapper, {"aces", "agx", "none"},
                      "filmic curve: ACES fitted, AgX, or a clamp").in_group(kPost);
         for (std::size_t i = 0; i < std::size(kEffectNames); ++i)
             p.add_bool(std::string("show_") + kEffectNames[i], &shown[i], std::string("draw the ") + kEffectNames[i])

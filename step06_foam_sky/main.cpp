@@ -56,11 +56,11 @@ private:
         step06::declare_foam_params(p, foam_settings_);
         p.add_float("tess_scale", &tess_scale_, 0.5f, 64, "edge level = tess_scale * patch / distance")
             .in_group("geometry");
-        p.add_float("tess_patch_size", &patch_size_, 2, 200, "side of a tessellated patch, metres").in_group("geometry");
+        p.add_float("tess_patch_size", &tess_patch_size_, 2, 200, "side of a tessellated patch, metres").in_group("geometry");
         p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").in_group("geometry");
         p.add_bool("frustum_culling", &cull_, "discard patches outside the view").in_group("geometry");
         p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level").in_group("geometry");
-        p.add_choice("fft_backend", &fft_backend_, {"auto", "gpu_fft", "fftw"},
+        p.add_choice("backend", &backend_, step05::backend_names(kBackends),
                      "the simulation's transforms: auto times both on the first frames (again when the "
                      "resolution changes) and keeps the faster")
             .in_group("geometry");
@@ -79,6 +79,23 @@ private:
                      {"height", "displacement_x", "displacement_z", "slope_x", "slope_z", "jacobian"},
                      "view=cascade_map: which map");
         use_camera(ocean::camera_view("low"));  // 5 m above the water, level with the crests
+        offer_bench_figures([this] {
+            const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 5);  // all 4 cascades' maps
+            for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
+            return times.figures();
+        });
+        // The rendered surface (all cascades) and the foam, on one grid around the camera.
+        offer_export([this](const std::string& dir) {
+            ocean::ProgramFactory programs = program_factory();
+            step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view(), time(), ocean_params_.choppiness,
+                                   params());
+        });
+        // With and without one effect (split_effect).
+        offer_split_view([this] {
+            const std::string effect = step06::effect_name(step06::kSplitEffects[split_effect_]);
+            return SplitVariants{"with " + effect, "without " + effect, {"show_" + effect + "=true"},
+                                 {"show_" + effect + "=false"}};
+        });
     }
 
     void init() override {
@@ -112,7 +129,7 @@ private:
             sky_image_loaded_ = look_.sky_image;
             if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
         }
-        patches_.build(patch_count_, patch_size_);
+        patches_.build(patch_count_, tess_patch_size_);
         // Once a frame, whatever the split view shows: the sea, its foam and the sky move on.
         simulate();
         update_foam(dt);
@@ -121,14 +138,12 @@ private:
         sky_->render(sky_settings_);
     }
 
-    // fft_backend: the chosen one, or for auto the faster at this resolution (found on the first
+    // backend: the chosen one, or for auto the faster at this resolution (found on the first
     // frames, printed once: on llvmpipe FFTW wins, on a real GPU the GPU FFT).
     void simulate() {
-        static constexpr step05::Backend kChoices[] = {step05::Backend::Auto, step05::Backend::GpuFft,
-                                                       step05::Backend::Fftw};  // fft_backend's order
         ocean::GpuScope timed(timers(), "simulation");
-        gpu_->simulate(time(), kChoices[fft_backend_], ocean_params_.choppiness);
-        if (auto decision = gpu_->take_auto_decision()) std::cout << "fft_backend auto " << *decision << "\n";
+        gpu_->simulate(time(), kBackends[std::size_t(backend_)], ocean_params_.choppiness);
+        if (auto decision = gpu_->take_auto_decision()) std::cout << "backend auto " << *decision << "\n";
     }
 
     void update_foam(double dt) {
@@ -220,8 +235,8 @@ private:
         const glm::vec3 eye = camera().eye();
         mesh->set("u_view_projection", view_projection);
         mesh->set("u_eye", eye);
-        mesh->set("u_grid_offset", glm::floor(glm::vec2(eye.x, eye.z) / patch_size_) * patch_size_);
-        mesh->set("u_patch_size", patch_size_);
+        mesh->set("u_grid_offset", glm::floor(glm::vec2(eye.x, eye.z) / tess_patch_size_) * tess_patch_size_);
+        mesh->set("u_tess_patch_size", tess_patch_size_);
         mesh->set("u_tess_scale", tess_scale_);
         mesh->set("u_frustum", ocean::frustum_planes(view_projection));
         // The patches' boxes widened by how far the sea can move them (the choppiness may change
@@ -314,29 +329,8 @@ private:
                         bands[std::size_t(c)].high > 0 ? 2 * step05::kPi / bands[std::size_t(c)].high : 0.0,
                         bands[std::size_t(c)].low > 0 ? 2 * step05::kPi / bands[std::size_t(c)].low
                                                       : std::numeric_limits<double>::infinity());
-        ImGui::Text("%d patches of %.0f m; sky %s", patches_.patch_count(), double(patch_size_),
+        ImGui::Text("%d patches of %.0f m; sky %s", patches_.patch_count(), double(tess_patch_size_),
                     sky_->uses_image() ? "from an image" : "procedural");
-    }
-
-    std::vector<std::pair<std::string, double>> bench_extra() override {
-        const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 5);  // all 4 cascades' maps
-        for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
-        return times.figures();
-    }
-
-    bool supports_export() const override { return true; }
-    void export_results(const std::string& dir) override {
-        // The rendered surface (all cascades) and the foam, on one grid around the camera.
-        ocean::ProgramFactory programs = program_factory();
-        step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view(), time(), ocean_params_.choppiness,
-                               params());
-    }
-
-    // With and without one effect (split_effect).
-    std::optional<SplitVariants> split_variants() const override {
-        const std::string effect = step06::effect_name(step06::kSplitEffects[split_effect_]);
-        return SplitVariants{"with " + effect, "without " + effect, {"show_" + effect + "=true"},
-                             {"show_" + effect + "=false"}};
     }
 
     step05::OceanParams ocean_params_;
@@ -351,7 +345,7 @@ private:
     std::string sky_image_loaded_;
     step06::FoamSettings foam_settings_;
     unsigned spectrum_built_for_ = 0;
-    float tess_scale_ = 12, patch_size_ = 16;
+    float tess_scale_ = 12, tess_patch_size_ = 16;
     double height_variance_ = 0;         // m^2, of the summed cascades
     std::vector<float> unresolved_by_level_;  // kMaxMipLevels per cascade
     step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with
@@ -360,7 +354,11 @@ private:
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
     int anisotropy_ = 4;
-    int fft_backend_ = 0;  // auto
+    // The backends step06 offers (not the naive DFT: its cascades are larger than it can do), in
+    // the `backend` parameter's order; the first, auto, is the default.
+    static constexpr std::array<step05::Backend, 3> kBackends = {step05::Backend::Auto, step05::Backend::GpuFft,
+                                                                 step05::Backend::Fftw};
+    int backend_ = 0;
 };
 
 }  // namespace

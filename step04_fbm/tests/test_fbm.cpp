@@ -1,5 +1,6 @@
 // Chapter 3's math: the exp-sine shape and its derivatives, the fBm series, and the exact
 // gradient of the domain-warped sum.
+#include "common/camera.hpp"
 #include "step04_fbm/fbm.hpp"
 #include "step04_fbm/fbm_params.hpp"
 
@@ -197,10 +198,16 @@ TEST(Step04Params, OnlyWaveParametersRebuildTheWaves) {
     ocean::ParamRegistry registry;
     step04::FbmParams fbm;
     fbm.declare(registry);
-    float camera_yaw = 0;
-    registry.add_float("camera_yaw", &camera_yaw, -360, 360, "a camera parameter, as App declares it");
+    ocean::Camera camera;  // declared as App::use_camera declares it, then dragged and scrolled
+    camera.declare_params(registry, ocean::camera_view("deck"));
     const unsigned built_for = fbm.waves_changed.value;
-    for (const char* other : {"camera_yaw=42", "warp=2", "shape=sine"}) {
+    ocean::CameraInput drag;
+    drag.drag = {40.0f, -12.0f};
+    drag.scroll = 2.0f;
+    drag.move = {1.0f, 0.0f, 1.0f};
+    for (int frame = 0; frame < 10; ++frame) camera.apply(drag, 1.0f / 60.0f);
+    EXPECT_EQ(fbm.waves_changed.value, built_for) << "a camera drag rebuilt the waves";
+    for (const char* other : {"camera_yaw=42", "camera_mode=fly", "warp=2", "shape=sine"}) {
         const std::string text = other;
         const auto eq = text.find('=');
         ASSERT_FALSE(registry.set(text.substr(0, eq), text.substr(eq + 1)).has_value()) << other;

@@ -288,7 +288,7 @@ struct Tessellated : Step06Gpu {
         program->set("u_view_projection", vp);
         program->set("u_eye", eye);
         program->set("u_grid_offset", glm::vec2(0));
-        program->set("u_patch_size", 16.0f);
+        program->set("u_tess_patch_size", 16.0f);
         program->set("u_tess_scale", tess_scale);
         program->set("u_frustum", ocean::frustum_planes(vp));
         program->set("u_max_displacement", 1.0f);

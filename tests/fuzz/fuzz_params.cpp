@@ -10,17 +10,17 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     ocean::ParamRegistry params;
-    float amplitude = 0;
-    int count = 0, mode = 0;
+    float amplitude = 1;
+    int count = 3, mode = 0;
     bool flag = false;
-    glm::vec3 colour{0.0f};
+    glm::vec3 colour{0.5f};
     std::string text;
-    params.add_float("amplitude", &amplitude, 1, 0, 10, "");
-    params.add_int("wave_count", &count, 3, 1, 64, "");
-    params.add_choice("mode", &mode, 0, {"orbit", "fly"}, "");
-    params.add_bool("wireframe", &flag, false, "");
-    params.add_color("colour", &colour, {0.5f, 0.5f, 0.5f}, "");
-    params.add_text("sky_image", &text, "", "");
+    params.add_float("amplitude", &amplitude, 0, 10, "");
+    params.add_int("wave_count", &count, 1, 64, "");
+    params.add_choice("mode", &mode, {"orbit", "fly"}, "");
+    params.add_bool("wireframe", &flag, "");
+    params.add_color("colour", &colour, "");
+    params.add_text("sky_image", &text, "");
     const std::string input(reinterpret_cast<const char*>(data), size);
     params.apply_preset_text(input, "fuzz");
     params.set_assignment(input);

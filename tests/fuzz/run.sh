@@ -10,7 +10,7 @@ fi
 mkdir -p "$out/corpus"
 sources=("$repo/tests/fuzz/$target.cpp" "$repo/common/text.cpp")
 case "$target" in
-  fuzz_params) sources+=("$repo/common/params.cpp") ;;
+  fuzz_params) sources+=("$repo/common/params.cpp" "$repo/common/presets.cpp") ;;
   fuzz_cli) sources+=("$repo/common/cli.cpp") ;;
 esac
 if ! clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \

@@ -15,8 +15,8 @@ namespace {
 class ProbeStep : public ocean::App {
 public:
     ProbeStep() : App({"probe", "-", "a step for testing the framework"}) {
-        params().add_float("level", &level_, 0.25f, 0, 1, "grey level of the clear colour");
-        params().add_bool("make_gl_error", &make_gl_error_, false, "call GL with a bad enum once");
+        params().add_float("level", &level_, 0, 1, "grey level of the clear colour");
+        params().add_bool("make_gl_error", &make_gl_error_, "call GL with a bad enum once");
     }
     std::vector<double> times;
     std::string hand_over_after_first_frame;
@@ -43,7 +43,7 @@ private:
         glDisable(GL_SCISSOR_TEST);
         if (make_gl_error_) glEnable(GL_TEXTURE_1D_ARRAY);  // not a capability: GL_INVALID_ENUM
     }
-    float level_ = 0;
+    float level_ = 0.25f;  // its default
     bool make_gl_error_ = false;
 };
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # windowed.sh STEP_EXE: runs the step in a real GLFW window on a virtual X server (Xvfb) for a
-# few frames, minimising the window at frame 2 and restoring it at frame 3 (--exercise-minimise:
+# few frames, minimising the window at frame 2 and restoring it at frame 3 (--simulate-minimise:
 # the frames in between see a 0 x 0 framebuffer). No GL error allowed. Exit 77 (ctest: skipped)
 # with the reason printed when xvfb-run is missing.
 set -u
@@ -11,7 +11,7 @@ if ! command -v xvfb-run > /dev/null; then
 fi
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-xvfb-run -a -s "-screen 0 1024x768x24" "$exe" --frames 6 --size 320x180 --time 1.5 --exercise-minimise \
+xvfb-run -a -s "-screen 0 1024x768x24" "$exe" --frames 6 --size 320x180 --time 1.5 --simulate-minimise \
   --screenshot "$out/window.png" > "$out/log" 2>&1
 status=$?
 cat "$out/log"
