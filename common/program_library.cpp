@@ -47,9 +47,14 @@ ShaderProgram* ProgramLibrary::get(const std::string& name, const std::vector<st
     if (auto error = program->build()) {
         if (!running_) throw Error("shader program '" + label + "' does not build: " + first_line_summary(*error));
         std::cerr << "shader program '" << label << "' does not build:\n" << *error;
-        message_ = "'" + label + "' does not build (previous program kept):\n" + *error;
+        // What is drawn instead is said, not left to be guessed: it may be another variant.
+        ShaderProgram* instead = fallback();
+        message_ = "'" + label + "' does not build; " +
+                   (instead != nullptr ? "drawing '" + instead->name() + "' (the last that built) until it does"
+                                       : "nothing to draw in its place") +
+                   ":\n" + *error;
         failed_[key] = std::move(program);
-        return fallback();
+        return instead;
     }
     programs_.push_back(std::move(program));
     return last_good_[name] = by_key_[key] = programs_.back().get();

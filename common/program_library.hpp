@@ -29,8 +29,8 @@ public:
     // The program `name` built from `stage_files` with `defines`. Until running() a program that
     // does not build throws ocean::Error (the step cannot start). Afterwards (the user switched
     // to a variant after breaking a shader) the error goes to message() and the last good program
-    // of the same name is returned, so the step keeps drawing; nullptr only when no program of
-    // that name ever built.
+    // of the same name is returned, so the step keeps drawing; message() names it, as it may be
+    // another variant. nullptr only when no program of that name ever built.
     ShaderProgram* get(const std::string& name, const std::vector<std::string>& stage_files,
                        const std::vector<std::string>& defines = {});
     ProgramFactory factory() {

@@ -86,7 +86,9 @@ public:
         for (const char* name : {"sun_azimuth", "sun_elevation", "sun_intensity"}) number(name);
         for (const char* name : {"sun_colour", "zenith_colour", "horizon_colour"}) colour(name);
         for (const char* name : {"cloud_cover", "cloud_speed"}) number(name);
-        p.add_text("sky_image", &sky_image, "equirectangular sky image (.hdr, .png); empty: procedural").in_group(kSky);
+        p.add_text("sky_image", &sky_image, "equirectangular sky image (.hdr, .png); empty: procedural")
+            .in_group(kSky)
+            .bumps(sky_image_changes);
         p.add_choice("microfacet", &microfacet, {"ggx", "beckmann"}, "specular microfacet distribution")
             .in_group(kWater);
         number("roughness");
@@ -166,6 +168,7 @@ public:
     float sun_azimuth = 330, sun_elevation = 11, sun_intensity = 6, cloud_cover = 0.35f, cloud_speed = 12;
     glm::vec3 sun_colour{1.0f, 0.92f, 0.8f}, zenith_colour{0.16f, 0.36f, 0.7f}, horizon_colour{0.6f, 0.7f, 0.8f};
     std::string sky_image;
+    ocean::Generation sky_image_changes;  // bumped when sky_image changes: the image is loaded again
     int microfacet = 0, tonemapper = 0;
     float roughness = 0.08f;
     glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, crest_colour{0.15f, 0.75f, 0.6f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};

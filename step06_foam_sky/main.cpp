@@ -87,7 +87,7 @@ private:
         // The rendered surface (all cascades) and the foam, on one grid around the camera.
         offer_export([this](const std::string& dir) {
             ocean::ProgramFactory programs = program_factory();
-            step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view(), time(), ocean_params_.choppiness,
+            step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view_, time(), ocean_params_.choppiness,
                                    params());
         });
         // With and without one effect (split_effect).
@@ -124,9 +124,11 @@ private:
             }
             gpu_->set_spectra(pointers);
             foam_->resize(ocean_params_.spectrum().resolution);
+            describe_cascades();
         }
-        if (look_.sky_image != sky_image_loaded_) {
-            sky_image_loaded_ = look_.sky_image;
+        cascade_view_ = cascade_view();  // once a frame: the passes below and render() read it
+        if (sky_image_loaded_for_ != look_.sky_image_changes.value) {
+            sky_image_loaded_for_ = look_.sky_image_changes.value;
             if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
         }
         patches_.build(patch_count_, tess_patch_size_);
@@ -149,7 +151,21 @@ private:
     void update_foam(double dt) {
         ocean::GpuScope timed(timers(), "foam");
         const glm::vec3 eye = camera().eye(), forward = camera().forward();
-        foam_->update(*gpu_, cascade_view(), {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
+        foam_->update(*gpu_, cascade_view_, {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
+    }
+
+    // What the panel says of each cascade, made when the spectra are (not every frame in ui()).
+    void describe_cascades() {
+        cascade_lines_.clear();
+        const auto sizes = step06::cascade_patch_sizes(ocean_params_.spectrum());
+        const auto bands = step06::cascade_bands(sizes, ocean_params_.spectrum().resolution);
+        for (std::size_t c = 0; c < std::size_t(step06::kCascades); ++c) {
+            char line[128];
+            std::snprintf(line, sizeof line, "cascade %zu: tile %.1f m, waves %.2f m .. %.2f m", c, sizes[c],
+                          bands[c].high > 0 ? 2 * step05::kPi / bands[c].high : 0.0,
+                          bands[c].low > 0 ? 2 * step05::kPi / bands[c].low : std::numeric_limits<double>::infinity());
+            cascade_lines_.push_back(line);
+        }
     }
 
     // The tiles of the simulated spectra (made in update()) and the cascade switches.
@@ -164,7 +180,7 @@ private:
 
     // Units (texture_units.h): 0 and 1 the cascades' maps, then foam, sky, the bubble pattern.
     void bind_cascades(const ocean::ShaderProgram& p) {
-        cascade_view().upload(p);
+        cascade_view_.upload(p);
         gpu_->bind_maps(p);
         foam_->bind(p, UNIT_FOAM);
         foam_->bind_pattern(p, UNIT_FOAM_PATTERN);
@@ -230,7 +246,7 @@ private:
     void draw_mesh(const std::string& name, const std::vector<std::string>& defines, const glm::mat4& view_projection) {
         ocean::ShaderProgram* mesh = program(name, {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"}, defines);
         if (mesh == nullptr) return;
-        cascade_view().upload(*mesh);
+        cascade_view_.upload(*mesh);
         gpu_->bind_maps(*mesh);
         const glm::vec3 eye = camera().eye();
         mesh->set("u_view_projection", view_projection);
@@ -322,13 +338,7 @@ private:
 
     void ui() override {
         ImGui::Separator();
-        const auto sizes = step06::cascade_patch_sizes(ocean_params_.spectrum());
-        const auto bands = step06::cascade_bands(sizes, ocean_params_.spectrum().resolution);
-        for (int c = 0; c < step06::kCascades; ++c)
-            ImGui::Text("cascade %d: tile %.1f m, waves %.2f m .. %.2f m", c, sizes[std::size_t(c)],
-                        bands[std::size_t(c)].high > 0 ? 2 * step05::kPi / bands[std::size_t(c)].high : 0.0,
-                        bands[std::size_t(c)].low > 0 ? 2 * step05::kPi / bands[std::size_t(c)].low
-                                                      : std::numeric_limits<double>::infinity());
+        for (const auto& line : cascade_lines_) ImGui::TextUnformatted(line.c_str());
         ImGui::Text("%d patches of %.0f m; sky %s", patches_.patch_count(), double(tess_patch_size_),
                     sky_->uses_image() ? "from an image" : "procedural");
     }
@@ -342,9 +352,11 @@ private:
     std::unique_ptr<step06::Sky> sky_;
     std::vector<std::unique_ptr<step05::InitialSpectrum>> spectra_;
     std::unique_ptr<step06::FoamSimulation> foam_;
-    std::string sky_image_loaded_;
+    unsigned sky_image_loaded_for_ = 0;
     step06::FoamSettings foam_settings_;
     unsigned spectrum_built_for_ = 0;
+    step06::CascadeView cascade_view_;         // this frame's, made in update()
+    std::vector<std::string> cascade_lines_;  // the panel's description, made with the spectra
     float tess_scale_ = 12, tess_patch_size_ = 16;
     double height_variance_ = 0;         // m^2, of the summed cascades
     std::vector<float> unresolved_by_level_;  // kMaxMipLevels per cascade

@@ -2,6 +2,8 @@
 // (add_step's SHADERS and the tests' own); programs are formed by file stem: ocean.vert +
 // ocean.frag is the program "ocean"; a fragment shader with no vertex shader of its stem is a
 // fullscreen pass and links with common/shaders/fullscreen.vert; a .comp links alone.
+#include "common/error.hpp"
+#include "common/program_library.hpp"
 #include "common/shader.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 
@@ -82,6 +84,27 @@ TEST_F(ShaderBuild, ABrokenEditKeepsTheLastGoodProgram) {
     EXPECT_FALSE(program.build());
     EXPECT_NE(program.id(), 0u);
     EXPECT_TRUE(program.last_error().empty());
+    fs::remove_all(dir);
+}
+
+// A variant that does not build once the step runs: the library keeps drawing the last program of
+// that name that built, which may be another variant, and its message says which.
+TEST_F(ShaderBuild, AVariantThatDoesNotBuildSaysWhichProgramIsDrawnInstead) {
+    const fs::path dir = fs::temp_directory_path() / ("ocean_variant_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "pass.frag") << "#version 450 core\nout vec4 c;\n"
+                                        "void main() {\n#if VIEW == 1\n c = oops;\n#else\n c = vec4(1);\n#endif\n}\n";
+    ocean::ProgramLibrary library;
+    library.set_shader_dir(dir.string(), dir.string());
+    ocean::ShaderProgram* good = library.get("pass", {"fullscreen.vert", "pass.frag"}, {"VIEW 0"});
+    ASSERT_NE(good, nullptr);
+    EXPECT_THROW(library.get("pass", {"fullscreen.vert", "pass.frag"}, {"VIEW 1"}), ocean::Error)
+        << "before the first frame a program that does not build stops the step";
+    library.set_running();
+    ocean::ShaderProgram* drawn = library.get("pass", {"fullscreen.vert", "pass.frag"}, {"VIEW 1"});
+    EXPECT_EQ(drawn, good) << "the last program of that name that built";
+    EXPECT_NE(library.message().find("'pass [VIEW 1]' does not build; drawing 'pass [VIEW 0]'"), std::string::npos)
+        << library.message();
     fs::remove_all(dir);
 }
 
