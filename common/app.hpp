@@ -27,7 +27,7 @@
 #include "common/context.hpp"
 #include "common/gpu_timer.hpp"
 #include "common/grid.hpp"
-#include "common/handoff.hpp"
+#include "common/hand_over.hpp"
 #include "common/params.hpp"
 #include "common/program_library.hpp"
 #include "common/shader.hpp"
@@ -69,7 +69,7 @@ public:
     const StepInfo& info() const { return info_; }
     const std::string& step_name() const { return where_.name; }
     // The command that starts the neighbouring step the user chose (Prev/Next), or nothing.
-    const std::vector<std::string>& handoff() const { return handoff_; }
+    const std::vector<std::string>& next_step_command() const { return next_step_command_; }
 
 protected:
     // The four hooks, in the order each frame runs them (see the top of this file).
@@ -113,7 +113,7 @@ protected:
                            const std::vector<std::string>& defines = {}) {
         return programs_.get(name, stage_files, defines);
     }
-    // The same, for a chapter's technique classes (GpuOcean, Sky, ...).
+    // The same, for a chapter's technique classes (OceanSimulation, Sky, ...).
     ProgramFactory program_factory() { return programs_.factory(); }
     // Declares the camera_* parameters and turns on mouse/keyboard camera control.
     void use_camera(const CameraView& view);
@@ -174,7 +174,7 @@ private:
     std::function<void(const std::string&)> export_;
     std::function<BenchFigures()> bench_figures_;
     std::string panel_message_;
-    std::vector<std::string> handoff_;
+    std::vector<std::string> next_step_command_;
     std::vector<std::string> all_steps_;
 };
 
@@ -187,7 +187,7 @@ private:
         {                                                                       \
             StepClass app;                                                      \
             status = app.run(argc, argv, {OCEAN_STEP_NAME, OCEAN_STEP_DIR});     \
-            next = app.handoff();                                               \
+            next = app.next_step_command();                                               \
         }                                                                       \
-        return ocean::hand_off(status, next);                                   \
+        return ocean::run_next_step(status, next);                                   \
     }

@@ -47,7 +47,7 @@ void App::hand_over_to(const std::string& step) {
         show_message(step + " is not built next to this step");
         return;
     }
-    handoff_ = handoff_command(executable, time_, framebuffer_size_, params_, split_view_);
+    next_step_command_ = hand_over_command(executable, time_, framebuffer_size_, params_, split_view_);
     context_->request_close();
 }
 

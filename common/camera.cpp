@@ -16,22 +16,17 @@ void Camera::declare_params(ParamRegistry& params, const CameraView& view) {
     distance = view.distance;
     yaw_deg = view.yaw_deg;
     pitch_deg = view.pitch_deg;
-    struct Number { const char* name; float* value; float min, max; const char* help; };
-    const Number numbers[] = {
-        {"camera_yaw", &yaw_deg, -360, 360, "heading of the view, degrees (0 looks along -z)"},
-        {"camera_pitch", &pitch_deg, -89, 89, "how far the view looks down, degrees"},
-        {"camera_distance", &distance, 0.5f, 1000, "eye-to-target distance, metres"},
-        {"camera_target_x", &target.x, -10000, 10000, "point looked at, x (metres)"},
-        {"camera_target_y", &target.y, -1000, 1000, "point looked at, y (metres, up)"},
-        {"camera_target_z", &target.z, -10000, 10000, "point looked at, z (metres)"},
-        {"camera_fov", &fov_deg, 10, 120, "vertical field of view, degrees"},
-    };
     params.add_choice("camera_mode", &mode, {"orbit", "fly"}, "orbit turns around the target; fly moves the eye (WASD, Q/E)")
         .in_group(kCameraGroup);
-    for (const Number& n : numbers) {
-        Param& p = params.add_float(n.name, n.value, n.min, n.max, n.help).in_group(kCameraGroup);
-        if (n.value == &distance) p.logarithmic();
-    }
+    params.add_float("camera_yaw", &yaw_deg, -360, 360, "heading of the view, degrees (0 looks along -z)")
+        .in_group(kCameraGroup);
+    params.add_float("camera_pitch", &pitch_deg, -89, 89, "how far the view looks down, degrees").in_group(kCameraGroup);
+    params.add_float("camera_distance", &distance, 0.5f, 1000, "eye-to-target distance, metres")
+        .in_group(kCameraGroup).logarithmic();
+    params.add_float("camera_target_x", &target.x, -10000, 10000, "point looked at, x (metres)").in_group(kCameraGroup);
+    params.add_float("camera_target_y", &target.y, -1000, 1000, "point looked at, y (metres, up)").in_group(kCameraGroup);
+    params.add_float("camera_target_z", &target.z, -10000, 10000, "point looked at, z (metres)").in_group(kCameraGroup);
+    params.add_float("camera_fov", &fov_deg, 10, 120, "vertical field of view, degrees").in_group(kCameraGroup);
 }
 
 glm::vec3 Camera::forward() const {

@@ -29,6 +29,8 @@ public:
         : App({"A sum of sines, in 2D", "1.1, 1.2, 1.2.1",
                "f(x,t) = sum of a_i sin(x w_i - t phi_i), with w = 2 pi / wavelength and "
                "phi = speed * 2 pi / wavelength. Each wave has its own colour; white is the sum."}) {
+        // The parameters: the sum's (here), each wave's (step01::declare_wave, wave_params.hpp), the
+        // plot's view (here).
         auto& p = params();
         p.add_int("wave_count", &wave_count_, 1, kMaxWaves, "number of waves in the sum");
         p.add_float("amplitude", &amplitude_, 0, 10, "scale applied to every wave's amplitude");

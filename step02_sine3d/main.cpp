@@ -19,6 +19,8 @@ public:
                "A plane of (x_quads+1)(z_quads+1) vertices, each lifted in the vertex shader by "
                "h = sum of a_i sin(d_i.(x,z) w_i - t phi_i). Every wave has a direction d_i. "
                "Shading is only height colour and flat facets: light comes in step03."}) {
+        // The parameters: the waves (wave_params.hpp), the grid (common/grid.hpp), the view (here),
+        // the camera (common/camera.cpp, by use_camera).
         waves_.declare(params());
         grid_params_.declare(params());
         params().add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");

@@ -24,6 +24,8 @@ public:
                "height: N = normalize(-dh/dx, 1, -dh/dz). Light = ambient + Lambert diffuse (blue) + "
                "Blinn-Phong specular. Compare with the notes' finite-difference slope and with "
                "per-vertex lighting."}) {
+        // The parameters: step02's waves (step02_sine3d/wave_params.hpp) and the grid (common/grid.hpp);
+        // the normals and the view (here); the light (light_params.hpp); the camera (common/camera.cpp).
         waves_.declare(params());
         grid_params_.declare(params());
         auto& p = params();

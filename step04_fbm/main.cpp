@@ -26,6 +26,8 @@ public:
                "random direction and deep-water speed; exp(sin - 1) sharpens the crests; domain warping "
                "moves each wave's input downhill of the waves before it, with an exact normal; cascades "
                "with different base wavelengths hide the repeats."}) {
+        // The parameters: the fBm and its cascades (fbm_params.hpp), the view (here), step03's light
+        // (step03_lighting/light_params.hpp), the grid (common/grid.hpp), the camera (common/camera.cpp).
         auto& p = params();
         fbm_.declare(p);
         p.add_choice("view", &view_, {"lit", "diffuse", "specular", "normals"},

@@ -1,4 +1,4 @@
-// The simulation on the CPU, fast: the FFTW backend of GpuOcean. The double-precision reference
+// The simulation on the CPU, fast: the FFTW backend of OceanSimulation. The double-precision reference
 // (ocean_maps.hpp) is what the tests hold every path to; this is the same evolution and the same
 // transforms in single precision, laid out as the GPU's buffers are, so that one upload hands
 // the GPU exactly what its own FFT would have made:
@@ -36,7 +36,7 @@ public:
 
     void set_spectra(const std::vector<const InitialSpectrum*>& cascades);
     // Evolves to `time` and transforms: fields() then holds cascades x 4 x n x n complex values
-    // (interleaved re, im), the layout of GpuOcean's fields buffer.
+    // (interleaved re, im), the layout of OceanSimulation's fields buffer.
     void run(double time);
     const float* fields() const;
     std::size_t float_count() const { return std::size_t(layers_) * n_ * n_ * 2; }

@@ -16,7 +16,7 @@ struct FramePass {
     std::string_view writes;
 };
 
-// Resources: the SSBOs of gpu_ocean.hpp (binding points as the dispatch sets them) and its two
+// Resources: the SSBOs of ocean_simulation.hpp (binding points as the dispatch sets them) and its two
 // RGBA32F 2D-array textures, one layer per cascade (step05 has one).
 constexpr std::array<FramePass, 6> kFramePasses{{
     {"evolve", "evolve.comp (N/8 x N/8 x cascades groups of 8 x 8)", "h0 (SSBO, once);omega (SSBO, double, once)",

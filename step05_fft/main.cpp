@@ -11,7 +11,7 @@
 #include "step03_lighting/light_params.hpp"
 #include "step03_lighting/light_uniforms.hpp"
 #include "step05_fft/export.hpp"
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum_view.hpp"
 
@@ -31,6 +31,9 @@ public:
                "A JONSWAP spectrum gives each of N x N waves an amplitude; every frame the modes turn "
                "at omega = sqrt(g k tanh(k h)) and one inverse FFT per map (on the GPU, all stages in "
                "shared memory) gives heights, choppy displacements and slopes."}) {
+        // The parameters: the spectrum (ocean_params.hpp), the backend, normals and views (here),
+        // step03's light (step03_lighting/light_params.hpp), the grid (common/grid.hpp), the camera
+        // (common/camera.cpp).
         auto& p = params();
         ocean_params_.declare(p);
         p.add_choice("backend", &backend_, step05::backend_names(),
@@ -52,7 +55,7 @@ public:
         // The notes' DFT against the FFT: the same sea (the DFT needs resolution 64).
         offer_export([this](const std::string& dir) {
             step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
-                                ocean_params_.sea.patch_size, time(), ocean_params_.choppiness, params());
+                                ocean_params_.spectrum.patch_size, time(), ocean_params_.choppiness, params());
         });
         offer_bench_figures([this] {
             const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 9);
@@ -66,14 +69,14 @@ public:
 
 private:
     void init() override {
-        gpu_ = std::make_unique<step05::GpuOcean>(program_factory());
+        gpu_ = std::make_unique<step05::OceanSimulation>(program_factory());
     }
 
     void update(double /*time*/, double /*dt*/) override {
         grid_params_.update(grid_);
         if (spectrum_built_for_ != ocean_params_.changes.value) {  // a spectrum parameter moved
             spectrum_built_for_ = ocean_params_.changes.value;
-            const step05::SpectrumParams& wanted = ocean_params_.spectrum();
+            const step05::SpectrumParams& wanted = ocean_params_.spectrum;
             spectrum_ = std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(wanted));
             gpu_->set_spectra({spectrum_.get()});
             spectrum_view_.update(wanted, *spectrum_);
@@ -112,8 +115,8 @@ private:
         }
         ocean::ShaderProgram* ocean_program = program("ocean", {"ocean.vert", "ocean.frag"}, {"NORMALS " + std::to_string(normals_)});
         step03::upload_light(*ocean_program, light_.light());
-        ocean_program->set("u_patch_size", float(ocean_params_.sea.patch_size));
-        ocean_program->set("u_resolution", ocean_params_.sea.resolution);
+        ocean_program->set("u_patch_size", float(ocean_params_.spectrum.patch_size));
+        ocean_program->set("u_resolution", ocean_params_.spectrum.resolution);
         ocean_program->set("u_wireframe", int(wireframe_));
         ocean_program->set("u_background", step03::srgb_to_linear(clear));
         gpu_->bind_maps(*ocean_program);
@@ -151,7 +154,7 @@ private:
     step05::OceanParams ocean_params_;
     step03::LightParams light_;
     ocean::GridParams grid_params_{800, 400};  // several tiles: the sea reaches the horizon
-    std::unique_ptr<step05::GpuOcean> gpu_;
+    std::unique_ptr<step05::OceanSimulation> gpu_;
     std::unique_ptr<step05::InitialSpectrum> spectrum_;
     unsigned spectrum_built_for_ = 0;
     step05::SpectrumView spectrum_view_;

@@ -42,7 +42,7 @@ void FoamSimulation::fill(float value) {
     warm_start_ = false;
 }
 
-void FoamSimulation::update(const step05::GpuOcean& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
+void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
                             glm::dvec2 forward_xz, double dt, const FoamSettings& s) {
     ocean::ShaderProgram* p = programs_("foam.comp", {"step06_foam_sky/shaders/foam.comp"}, {});
     if (p == nullptr) throw ocean::Error("foam.comp does not build");

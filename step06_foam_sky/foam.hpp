@@ -19,7 +19,7 @@
 
 #include "common/gl.hpp"
 #include "common/params.hpp"
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/cascades.hpp"
 
 #include <glm/vec2.hpp>
@@ -95,7 +95,7 @@ public:
     void resize(int n);
     void fill(float value);  // every texel (tests)
     // One step of dt seconds around the camera (eye and view direction projected on x, z).
-    void update(const step05::GpuOcean& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
+    void update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
                 glm::dvec2 forward_xz, double dt, const FoamSettings& settings);
     // The windows and the texture, for the renderer (foam_map.glsl's uniforms) and --export.
     void bind(const ocean::ShaderProgram& program, int unit) const;

@@ -12,7 +12,6 @@
 
 #include <algorithm>
 
-#include <stdexcept>
 #include <string>
 
 namespace step06 {
@@ -39,67 +38,47 @@ inline constexpr Effect kSplitEffects[] = {Effect::Fog,          Effect::Bloom, 
 
 class LookParams {
 public:
-    // Every look parameter from one table each: name, the member it fills (whose initialiser
-    // below is its default), range, meaning, panel group.
+    // Every look parameter, declared once, in the order the panel and presets list them; the
+    // member's initialiser (below) is its default.
     void declare(ocean::ParamRegistry& p) {
-        struct Number { const char* name; float LookParams::*member; float min, max; const char* help; const char* group; };
-        static const Number numbers[] = {
-            {"sun_azimuth", &LookParams::sun_azimuth, 0, 360, "sun heading, degrees (0 = +x, 90 = +z)", kSky},
-            {"sun_elevation", &LookParams::sun_elevation, -5, 90, "sun height above the horizon, degrees", kSky},
-            {"sun_intensity", &LookParams::sun_intensity, 0, 100, "sunlight, linear units (the disc is brighter)", kSky},
-            {"cloud_cover", &LookParams::cloud_cover, 0, 1, "fraction of the sky under cloud", kSky},
-            {"cloud_speed", &LookParams::cloud_speed, 0, 100, "cloud drift, metres per second", kSky},
-            {"roughness", &LookParams::roughness, 0.01f, 1, "alpha of the resolved surface (finer waves add theirs)", kWater},
-            {"scatter_crest", &LookParams::k1, 0, 10, "k1: light through the crests (times wave height)", kWater},
-            {"scatter_view", &LookParams::k2, 0, 10, "k2: scatter towards the viewer", kWater},
-            {"scatter_lambert", &LookParams::k3, 0, 10, "k3: Lambert term of the scattered light", kWater},
-            {"scatter_bubbles", &LookParams::k4, 0, 10, "k4: bubbles (where there is foam)", kWater},
-            {"height_scale", &LookParams::height_scale, 0.01f, 50, "metres of height that count as a full crest", kWater},
-            {"ambient", &LookParams::ambient, 0, 10, "skylight reaching the water, linear", kWater},
-            {"foam_roughness", &LookParams::foam_roughness, 0.01f, 1, "microfacet roughness of foam", kWater},
-            {"fog_density", &LookParams::fog_density, 0, 0.1f, "fog per metre at sea level", kPost},
-            {"fog_falloff", &LookParams::fog_falloff, 0.0001f, 1, "how fast fog thins with height, per metre", kPost},
-            {"bloom_threshold", &LookParams::bloom_threshold, 0, 100, "linear brightness where bloom starts", kPost},
-            {"bloom_strength", &LookParams::bloom_strength, 0, 2, "how much of the glow is added", kPost},
-            {"exposure", &LookParams::exposure, 0.01f, 20, "scale before the tonemapper", kPost},
-        };
-        struct Colour { const char* name; glm::vec3 LookParams::*member; const char* help; const char* group; };
-        static const Colour colours[] = {
-            {"sun_colour", &LookParams::sun_colour, "colour of the sunlight (sRGB)", kSky},
-            {"zenith_colour", &LookParams::zenith_colour, "sky straight up (sRGB)", kSky},
-            {"horizon_colour", &LookParams::horizon_colour, "sky at the horizon (sRGB)", kSky},
-            {"scatter_colour", &LookParams::scatter_colour, "colour of light scattered in the water (sRGB)", kWater},
-            {"crest_colour", &LookParams::crest_colour, "colour of sunlight through thin crests, backlit (sRGB)", kWater},
-            {"bubble_colour", &LookParams::bubble_colour, "colour of light scattered by bubbles (sRGB)", kWater},
-            {"foam_colour", &LookParams::foam_colour, "foam albedo (sRGB)", kWater},
-        };
-        // In the order the panel and presets have always listed them.
-        const auto number = [&](const char* name) -> ocean::Param& {
-            for (const Number& n : numbers)
-                if (std::string(name) == n.name) return p.add_float(n.name, &(this->*n.member), n.min, n.max, n.help).in_group(n.group);
-            throw std::logic_error(name);
-        };
-        const auto colour = [&](const char* name) {
-            for (const Colour& c : colours)
-                if (std::string(name) == c.name) p.add_color(c.name, &(this->*c.member), c.help).in_group(c.group);
-        };
-        for (const char* name : {"sun_azimuth", "sun_elevation", "sun_intensity"}) number(name);
-        for (const char* name : {"sun_colour", "zenith_colour", "horizon_colour"}) colour(name);
-        for (const char* name : {"cloud_cover", "cloud_speed"}) number(name);
+        p.add_float("sun_azimuth", &sun_azimuth, 0, 360, "sun heading, degrees (0 = +x, 90 = +z)").in_group(kSky);
+        p.add_float("sun_elevation", &sun_elevation, -5, 90, "sun height above the horizon, degrees").in_group(kSky);
+        p.add_float("sun_intensity", &sun_intensity, 0, 100, "sunlight, linear units (the disc is brighter)")
+            .in_group(kSky);
+        p.add_color("sun_colour", &sun_colour, "colour of the sunlight (sRGB)").in_group(kSky);
+        p.add_color("zenith_colour", &zenith_colour, "sky straight up (sRGB)").in_group(kSky);
+        p.add_color("horizon_colour", &horizon_colour, "sky at the horizon (sRGB)").in_group(kSky);
+        p.add_float("cloud_cover", &cloud_cover, 0, 1, "fraction of the sky under cloud").in_group(kSky);
+        p.add_float("cloud_speed", &cloud_speed, 0, 100, "cloud drift, metres per second").in_group(kSky);
         p.add_text("sky_image", &sky_image, "equirectangular sky image (.hdr, .png); empty: procedural")
             .in_group(kSky)
             .bumps(sky_image_changes);
+
         p.add_choice("microfacet", &microfacet, {"ggx", "beckmann"}, "specular microfacet distribution")
             .in_group(kWater);
-        number("roughness");
-        for (const char* name : {"scatter_colour", "crest_colour", "bubble_colour"}) colour(name);
-        for (const char* name : {"scatter_crest", "scatter_view", "scatter_lambert", "scatter_bubbles", "height_scale",
-                                 "ambient"})
-            number(name);
-        colour("foam_colour");
-        for (const char* name : {"foam_roughness", "fog_density", "fog_falloff", "bloom_threshold", "bloom_strength"})
-            number(name);
-        number("exposure").logarithmic();
+        p.add_float("roughness", &roughness, 0.01f, 1, "alpha of the resolved surface (finer waves add theirs)")
+            .in_group(kWater);
+        p.add_color("scatter_colour", &scatter_colour, "colour of light scattered in the water (sRGB)").in_group(kWater);
+        p.add_color("crest_colour", &crest_colour, "colour of sunlight through thin crests, backlit (sRGB)")
+            .in_group(kWater);
+        p.add_color("bubble_colour", &bubble_colour, "colour of light scattered by bubbles (sRGB)").in_group(kWater);
+        p.add_float("scatter_crest", &scatter_crest, 0, 10, "k1: light through the crests (times wave height)")
+            .in_group(kWater);
+        p.add_float("scatter_view", &scatter_view, 0, 10, "k2: scatter towards the viewer").in_group(kWater);
+        p.add_float("scatter_lambert", &scatter_lambert, 0, 10, "k3: Lambert term of the scattered light")
+            .in_group(kWater);
+        p.add_float("scatter_bubbles", &scatter_bubbles, 0, 10, "k4: bubbles (where there is foam)").in_group(kWater);
+        p.add_float("height_scale", &height_scale, 0.01f, 50, "metres of height that count as a full crest")
+            .in_group(kWater);
+        p.add_float("ambient", &ambient, 0, 10, "skylight reaching the water, linear").in_group(kWater);
+        p.add_color("foam_colour", &foam_colour, "foam albedo (sRGB)").in_group(kWater);
+        p.add_float("foam_roughness", &foam_roughness, 0.01f, 1, "microfacet roughness of foam").in_group(kWater);
+
+        p.add_float("fog_density", &fog_density, 0, 0.1f, "fog per metre at sea level").in_group(kPost);
+        p.add_float("fog_falloff", &fog_falloff, 0.0001f, 1, "how fast fog thins with height, per metre").in_group(kPost);
+        p.add_float("bloom_threshold", &bloom_threshold, 0, 100, "linear brightness where bloom starts").in_group(kPost);
+        p.add_float("bloom_strength", &bloom_strength, 0, 2, "how much of the glow is added").in_group(kPost);
+        p.add_float("exposure", &exposure, 0.01f, 20, "scale before the tonemapper").in_group(kPost).logarithmic();
         p.add_choice("tonemapper", &tonemapper, {"aces", "agx", "none"},
                      "filmic curve: ACES fitted, AgX, or a clamp").in_group(kPost);
         for (std::size_t i = 0; i < std::size(kEffectNames); ++i)
@@ -147,10 +126,10 @@ public:
         p.set("u_bubble_colour", step03::srgb_to_linear(bubble_colour));
         p.set("u_crest_colour", step03::srgb_to_linear(crest_colour));
         p.set("u_foam_colour", step03::srgb_to_linear(foam_colour));
-        p.set("u_k1", k1);
-        p.set("u_k2", k2);
-        p.set("u_k3", k3);
-        p.set("u_k4", k4);
+        p.set("u_scatter_crest", scatter_crest);
+        p.set("u_scatter_view", scatter_view);
+        p.set("u_scatter_lambert", scatter_lambert);
+        p.set("u_scatter_bubbles", scatter_bubbles);
         p.set("u_foam_roughness", foam_roughness);
         p.set("u_fog_density", fog_density);
         p.set("u_fog_falloff", fog_falloff);
@@ -172,7 +151,8 @@ public:
     int microfacet = 0, tonemapper = 0;
     float roughness = 0.08f;
     glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, crest_colour{0.15f, 0.75f, 0.6f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
-    float k1 = 3.0f, k2 = 0.35f, k3 = 0.25f, k4 = 0.3f, height_scale = 2, ambient = 0.6f, foam_roughness = 0.6f;
+    float scatter_crest = 3.0f, scatter_view = 0.35f, scatter_lambert = 0.25f, scatter_bubbles = 0.3f;  // the notes' k1 .. k4
+    float height_scale = 2, ambient = 0.6f, foam_roughness = 0.6f;
     float fog_density = 0.0012f, fog_falloff = 0.02f, bloom_threshold = 2.5f, bloom_strength = 0.06f, exposure = 0.9f;
 
 private:

@@ -11,7 +11,7 @@
 #include "common/frustum.hpp"
 #include "common/text.hpp"
 #include "step05_fft/export.hpp"
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "step05_fft/ocean_params.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
@@ -47,6 +47,9 @@ private:
                "Fresnel; a sky with sun and clouds; fog, bloom and a filmic tonemapper."};
     }
 
+    // The parameters: step05's spectrum (step05_fft/ocean_params.hpp), the cascades' switches (here),
+    // the foam (foam.hpp), the geometry and the backend (here), the look (look_params.hpp), the views
+    // (here), the camera (common/camera.cpp).
     void declare(ocean::ParamRegistry& p) {
         step06::use_default_sea(ocean_params_);  // step05's spectrum, over a 500 m first tile, in a fresh breeze
         ocean_params_.declare(p);
@@ -99,7 +102,7 @@ private:
     }
 
     void init() override {
-        gpu_ = std::make_unique<step05::GpuOcean>(program_factory());
+        gpu_ = std::make_unique<step05::OceanSimulation>(program_factory());
         sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
         foam_ = std::make_unique<step06::FoamSimulation>(program_factory());
     }
@@ -111,7 +114,7 @@ private:
             std::vector<const step05::InitialSpectrum*> pointers;
             height_variance_ = 0;
             unresolved_by_level_.assign(std::size_t(step06::kCascades * step06::kMaxMipLevels), 0.0f);
-            for (const auto& p : step06::cascade_spectra(ocean_params_.spectrum())) {
+            for (const auto& p : step06::cascade_spectra(ocean_params_.spectrum)) {
                 spectra_.push_back(std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(p)));
                 pointers.push_back(spectra_.back().get());
                 height_variance_ += step05::resolved_variance(p);
@@ -123,7 +126,7 @@ private:
                     unresolved_by_level_[base + l] = float(by_level[std::min(l, by_level.size() - 1)]);
             }
             gpu_->set_spectra(pointers);
-            foam_->resize(ocean_params_.spectrum().resolution);
+            foam_->resize(ocean_params_.spectrum.resolution);
             describe_cascades();
         }
         cascade_view_ = cascade_view();  // once a frame: the passes below and render() read it
@@ -136,7 +139,7 @@ private:
         simulate();
         update_foam(dt);
         ocean::GpuScope timed(timers(), "sky");
-        sky_settings_ = look_.sky(time(), ocean_params_.spectrum().wind_direction);
+        sky_settings_ = look_.sky(time(), ocean_params_.spectrum.wind_direction);
         sky_->render(sky_settings_);
     }
 
@@ -157,8 +160,8 @@ private:
     // What the panel says of each cascade, made when the spectra are (not every frame in ui()).
     void describe_cascades() {
         cascade_lines_.clear();
-        const auto sizes = step06::cascade_patch_sizes(ocean_params_.spectrum());
-        const auto bands = step06::cascade_bands(sizes, ocean_params_.spectrum().resolution);
+        const auto sizes = step06::cascade_patch_sizes(ocean_params_.spectrum);
+        const auto bands = step06::cascade_bands(sizes, ocean_params_.spectrum.resolution);
         for (std::size_t c = 0; c < std::size_t(step06::kCascades); ++c) {
             char line[128];
             std::snprintf(line, sizeof line, "cascade %zu: tile %.1f m, waves %.2f m .. %.2f m", c, sizes[c],
@@ -348,7 +351,7 @@ private:
     step06::PatchGrid patches_;
     step06::PostProcess post_;
     step06::GBuffer gbuffer_;
-    std::unique_ptr<step05::GpuOcean> gpu_;
+    std::unique_ptr<step05::OceanSimulation> gpu_;
     std::unique_ptr<step06::Sky> sky_;
     std::vector<std::unique_ptr<step05::InitialSpectrum>> spectra_;
     std::unique_ptr<step06::FoamSimulation> foam_;

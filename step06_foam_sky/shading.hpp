@@ -4,8 +4,8 @@
 //   colour = (1 - F)(ambient + scatter) + F sky(R) + specular
 //   F: Schlick, F0 + (1 - F0)(1 - N.V)^5 with F0 = 0.02 for water (n = 1.333 gives 0.0204)
 //   specular = L_sun D G F / (4 N.V), G = 1 / (1 + Lambda(V) + Lambda(L))  (Smith, height-correlated)
-//   scatter: the notes' subsurface terms (Acerola's): k1 crest, k2 towards the viewer, k3 Lambert,
-//   k4 bubbles.
+//   scatter: the notes' subsurface terms (Acerola's, their k1 .. k4): scatter_crest, scatter_view
+//   (towards the viewer), scatter_lambert, scatter_bubbles.
 #pragma once
 
 #include "common/constants.hpp"
@@ -72,7 +72,7 @@ inline double specular_factor(const Vec3& n, const Vec3& v, const Vec3& l, doubl
 }
 
 struct ScatterSettings {
-    double k1, k2, k3, k4;          // crest, view, Lambert, bubbles
+    double scatter_crest, scatter_view, scatter_lambert, scatter_bubbles;  // the notes' k1 .. k4
     Vec3 scatter_colour, bubble_colour, crest_colour;
 };
 
@@ -80,11 +80,11 @@ struct ScatterSettings {
 inline Vec3 scatter_term(const Vec3& n, const Vec3& v, const Vec3& l, double height, double alpha, double bubbles,
                          const ScatterSettings& s, const Vec3& sun, Microfacet m) {
     const double back = 0.5 - 0.5 * step03::dot(l, n);
-    const double crest = s.k1 * std::clamp(height, 0.0, 1.0) * std::pow(std::max(-step03::dot(l, v), 0.0), 4.0) *
+    const double crest = s.scatter_crest * std::clamp(height, 0.0, 1.0) * std::pow(std::max(-step03::dot(l, v), 0.0), 4.0) *
                          back * back * back;
-    const double towards_viewer = s.k2 * std::pow(std::max(step03::dot(v, n), 0.0), 2.0);
+    const double towards_viewer = s.scatter_view * std::pow(std::max(step03::dot(v, n), 0.0), 2.0);
     const double shadowing = 1.0 / (1.0 + smith_lambda(step03::dot(n, l), alpha, m));
-    const double lambert = s.k3 * std::max(step03::dot(l, n), 0.0), bubble = s.k4 * bubbles;
+    const double lambert = s.scatter_lambert * std::max(step03::dot(l, n), 0.0), bubble = s.scatter_bubbles * bubbles;
     auto channel = [&](double crest_c, double scatter_c, double bubble_c, double sun_c) {
         return (crest * crest_c + towards_viewer * scatter_c) * sun_c * shadowing + lambert * scatter_c * sun_c +
                bubble * bubble_c * sun_c;

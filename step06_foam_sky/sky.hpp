@@ -4,7 +4,7 @@
 #pragma once
 
 #include "common/gl.hpp"
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

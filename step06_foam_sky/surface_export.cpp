@@ -6,7 +6,7 @@
 
 namespace step06 {
 
-void export_surface(const std::string& dir, ocean::ProgramFactory& programs, const step05::GpuOcean& ocean,
+void export_surface(const std::string& dir, ocean::ProgramFactory& programs, const step05::OceanSimulation& ocean,
                     const FoamSimulation& foam, const CascadeView& cascades, double time, double choppiness,
                     const ocean::ParamRegistry& params) {
     ocean::ShaderProgram* p = programs("surface_grid.comp", {"step06_foam_sky/shaders/surface_grid.comp"}, {});

@@ -6,7 +6,7 @@
 
 #include "common/params.hpp"
 #include "common/shader.hpp"
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/foam.hpp"
 
 #include <string>
@@ -15,7 +15,7 @@ namespace step06 {
 
 constexpr int kExportedFoamLevel = 1;  // 256 m around the camera: several peak wavelengths
 
-void export_surface(const std::string& dir, ocean::ProgramFactory& programs, const step05::GpuOcean& ocean,
+void export_surface(const std::string& dir, ocean::ProgramFactory& programs, const step05::OceanSimulation& ocean,
                     const FoamSimulation& foam, const CascadeView& cascades, double time, double choppiness,
                     const ocean::ParamRegistry& params);
 

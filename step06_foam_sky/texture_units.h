@@ -2,7 +2,7 @@
 // main.cpp binds each texture to its unit, and each shader's sampler starts on it
 // (layout(binding = ...)), so no sampler is left on unit 0 beside the cascades' 2D arrays (GL
 // refuses a draw where two sampler types share a unit). Units 0 and 1 hold the cascades' maps
-// (step05's GpuOcean::bind_maps). Plain #defines: the one form both languages read.
+// (step05's OceanSimulation::bind_maps). Plain #defines: the one form both languages read.
 #ifndef STEP06_TEXTURE_UNITS_H
 #define STEP06_TEXTURE_UNITS_H
 #define UNIT_FOAM 3           // the foam clipmap (foam_map.glsl's u_foam)

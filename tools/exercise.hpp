@@ -70,7 +70,7 @@ Verdict check_vector(const fs::path& work, const std::string& include, const std
                      const VectorReference& reference, double tolerance, double low, double high,
                      const SetUniforms& set_uniforms = {}, int components = 3);
 
-// step05's inverse FFT with the work folder's fft.comp, run by the chapter's own GpuOcean (its
+// step05's inverse FFT with the work folder's fft.comp, run by the chapter's own OceanSimulation (its
 // buffers, twiddle table and dispatches) on random spectra at N = 64, 128, 256 and 512 (radix-4
 // stages, and a radix-2 stage last where log2 N is odd), against the CPU reference transform.
 Verdict check_fft(const fs::path& work);

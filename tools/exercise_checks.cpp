@@ -5,7 +5,7 @@
 
 #include "common/gl.hpp"
 #include "common/program_library.hpp"
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -148,7 +148,7 @@ Verdict check_fft(const fs::path& work) {
         step05::SpectrumParams p;
         p.resolution = n;
         const step05::InitialSpectrum sizes = step05::initial_spectrum(p);  // only to size the buffers
-        step05::GpuOcean ocean(factory);
+        step05::OceanSimulation ocean(factory);
         ocean.set_spectra({&sizes});
         std::mt19937 random{unsigned(n)};
         std::uniform_real_distribution<float> uniform(-1, 1);

@@ -2,7 +2,7 @@
 // floats, so after ten days of simulated time the waves are still exact. One mode alone makes it
 // checkable: its height repeats every period T = 2 pi / omega, and matches the closed form.
 #include "step02_sine3d/wave_uniforms.hpp"
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 #include "tests/gpu/vertex_capture.hpp"

@@ -9,7 +9,7 @@
 //     y[(t - k) r + k + q p] = sum_j a_j e^{+2 pi i j q / r},  q = 0 .. r - 1
 // (radix 2 is the butterfly u0 + u1, u0 - u1; radix 4 needs no multiplication beyond the
 // twiddles, e^{+2 pi i j q / 4} being 1, i, -1, -i). The twiddles come from a table of
-// e^{+2 pi i m / N} computed once in double on the CPU (GpuOcean::twiddles_), not from sin and
+// e^{+2 pi i m / N} computed once in double on the CPU (OceanSimulation::twiddles_), not from sin and
 // cos per butterfly. The result is sum_m X[m] e^{+2 pi i m n / N}, unnormalised, like
 // FFTW_BACKWARD.
 #ifndef FFT_SIZE

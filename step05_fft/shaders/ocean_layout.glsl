@@ -1,4 +1,4 @@
-// How the simulation's buffers are laid out, shared by every compute pass (and gpu_ocean.cpp).
+// How the simulation's buffers are laid out, shared by every compute pass (and ocean_simulation.cpp).
 // A "line" is one row (fixed z) or column (fixed x) of one N x N complex field. The buffers hold
 // u_layer_count cascades x 4 packed complex fields x N x N values, row (z) major:
 //     index = ((cascade * 4 + field) * N + j) * N + i

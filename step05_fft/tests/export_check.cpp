@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
             if (auto error = registry.set(key, value)) return std::fprintf(stderr, "export_check: %s\n", error->c_str()), 1;
     const double time = std::stod(values.at("export.time"));
     const double choppiness = std::stod(values.at("export.choppiness"));
-    const step05::SpectrumParams params = ocean_params.spectrum();
+    const step05::SpectrumParams params = ocean_params.spectrum;
     if (std::stoi(values.at("export.resolution")) != params.resolution)
         return std::fprintf(stderr, "export_check: resolution in export.txt disagrees with the parameter\n"), 1;
 

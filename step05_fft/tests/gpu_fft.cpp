@@ -1,7 +1,7 @@
 // step05 on the GPU: the Stockham FFT against FFTW on random input, and the three backends'
 // ocean fields against the CPU reference (spectrum, h0, time evolution in double, FFTW).
 // Relative error = max |gpu - reference| / max |reference|, per field; limit 1e-4.
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
@@ -17,14 +17,14 @@ using namespace step05;
 struct FftTest : ocean_test::GlTest {
     ocean_test::ProgramCache cache;
     ocean::ProgramFactory factory() { return cache.factory(); }
-    // The default sea at resolution n, and a GpuOcean holding it (the spectrum must outlive it).
+    // The default sea at resolution n, and a OceanSimulation holding it (the spectrum must outlive it).
     static InitialSpectrum sea(int n) {
         SpectrumParams p;
         p.resolution = n;
         return initial_spectrum(p);
     }
-    std::unique_ptr<GpuOcean> ocean_of(const InitialSpectrum& s) {
-        auto ocean = std::make_unique<GpuOcean>(factory());
+    std::unique_ptr<OceanSimulation> ocean_of(const InitialSpectrum& s) {
+        auto ocean = std::make_unique<OceanSimulation>(factory());
         ocean->set_spectra({&s});
         return ocean;
     }
@@ -45,7 +45,7 @@ TEST_F(FftTest, GpuFftMatchesFftwOnRandomInput) {
         SpectrumParams p;
         p.resolution = n;
         const InitialSpectrum s = initial_spectrum(p);  // only to size the buffers
-        GpuOcean ocean(factory());
+        OceanSimulation ocean(factory());
         ocean.set_spectra({&s});
         std::mt19937 random{unsigned(n)};
         std::uniform_real_distribution<float> uniform(-1, 1);
@@ -119,7 +119,7 @@ TEST_F(FftTest, BackendsMatchTheCpuReference) {
         p.resolution = n;
         p.seed = 7;
         const InitialSpectrum s = initial_spectrum(p);
-        GpuOcean ocean(factory());
+        OceanSimulation ocean(factory());
         ocean.set_spectra({&s});
         for (double t : {0.0, 2.5, 86400.0 * 3 + 0.25}) {
             const OceanMaps reference = simulate_cpu(s, t);
@@ -159,7 +159,7 @@ TEST_F(FftTest, BackendsMatchTheCpuReference) {
 TEST_F(FftTest, AutoBackendDecidesOnceAndEveryFrameIsTheSea) {
     const InitialSpectrum s = sea(64);
     const auto owned = ocean_of(s);
-    GpuOcean& ocean = *owned;
+    OceanSimulation& ocean = *owned;
     int decisions = 0;
     for (int frame = 0; frame < 2 * kAutoTrialFrames + 2; ++frame) {
         const double t = 0.5 * frame;

@@ -7,7 +7,7 @@
 // reference (double) and on the GPU's assembled textures (what the renderer samples); the
 // notes' two sign slips each fail it (crests along -k; J largest at the crests).
 #include "common/gl.hpp"
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
@@ -95,7 +95,7 @@ TEST_F(GerstnerMode, CpuProfileIsTheTrochoidAndJIsSmallestAtTheCrest) {
 }
 
 TEST_F(GerstnerMode, GpuTexturesHoldTheTrochoid) {
-    GpuOcean ocean(cache.factory());
+    OceanSimulation ocean(cache.factory());
     ocean.set_spectra({&spectrum});
     const double t = 7.3;
     ocean.simulate(t, Backend::GpuFft, 1.0f);
@@ -132,7 +132,7 @@ TEST_F(GerstnerMode, JacobianViewIsBlackExactlyWhereTheSurfaceFolds) {
     const std::size_t index = std::size_t(kModeJ) * kN + kModeI;
     const double steep_amplitude = 1.2 / k;
     spectrum.h0[index] = Complex(steep_amplitude / 2, 0);
-    GpuOcean ocean(cache.factory());
+    OceanSimulation ocean(cache.factory());
     ocean.set_spectra({&spectrum});
     const double t = 3.1;
     ocean.simulate(t, Backend::GpuFft, 1.0f);

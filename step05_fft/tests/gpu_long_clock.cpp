@@ -2,7 +2,7 @@
 // floats, so after ten days of simulated time the waves are still exact. One mode alone makes it
 // checkable: its height repeats every period T = 2 pi / omega, and matches the closed form.
 #include "step02_sine3d/wave_uniforms.hpp"
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 #include "tests/gpu/vertex_capture.hpp"
@@ -28,7 +28,7 @@ TEST_F(LongClock, OneFftModeAfterTenDays) {
     s.h0[3] = amplitude;
     const double k = 2 * step05::kPi * 3 / p.patch_size, omega = s.omega[3];
     const double period = 2 * step05::kPi / omega;
-    step05::GpuOcean ocean(cache.factory());
+    step05::OceanSimulation ocean(cache.factory());
     ocean.set_spectra({&s});
     auto heights_at = [&](double t) {
         ocean.evolve(t);

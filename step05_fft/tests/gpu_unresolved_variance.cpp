@@ -3,7 +3,7 @@
 // what the GPU's mipmaps actually keep: at level l the mean over texels of the mean slope squared
 // is the variance left, so the full-resolution variance less it is what step06 turns into
 // roughness. One sea's mipmaps against the expectation: within its luck.
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
@@ -34,7 +34,7 @@ TEST_F(UnresolvedVariance, MipmapsAverageAwayWhatTheSpectrumPredicts) {
     p.resolution = 128;
     p.wind_speed = 14;
     const InitialSpectrum s = initial_spectrum(p);
-    GpuOcean ocean(cache.factory());
+    OceanSimulation ocean(cache.factory());
     ocean.set_spectra({&s});
     ocean.simulate(3.0, Backend::GpuFft, 1.0f);
     const std::vector<double> predicted = unresolved_slope_variance_by_level(p);

@@ -26,7 +26,7 @@ uniform float u_sky_max_lod;
 uniform float u_roughness;  // of the resolved surface; the unresolved waves add their slope variance
 uniform float u_height_scale;          // metres that count as a full crest for the scatter term
 uniform vec3 u_scatter_colour, u_bubble_colour, u_foam_colour, u_crest_colour;
-uniform float u_k1, u_k2, u_k3, u_k4;
+uniform float u_scatter_crest, u_scatter_view, u_scatter_lambert, u_scatter_bubbles;
 uniform float u_foam_roughness;
 // Toggles, so every term can be seen alone or left out.
 uniform bool u_show_ambient, u_show_scatter, u_show_specular, u_show_reflection, u_show_foam, u_show_fog;
@@ -71,7 +71,7 @@ void main() {
     r.y = abs(r.y);  // a reflection pointing into the sea sees the sky it mirrors
     vec3 sky = textureLod(u_sky, r, alpha * u_sky_max_lod).rgb;
 
-    ScatterSettings s = ScatterSettings(u_k1, u_k2, u_k3, u_k4, u_scatter_colour, u_bubble_colour, u_crest_colour);
+    ScatterSettings s = ScatterSettings(u_scatter_crest, u_scatter_view, u_scatter_lambert, u_scatter_bubbles, u_scatter_colour, u_bubble_colour, u_crest_colour);
     float height = surface_point.y / u_height_scale;
     vec3 water = vec3(0.0);
     if (u_show_ambient) water += (1.0 - fresnel) * u_ambient * u_scatter_colour;

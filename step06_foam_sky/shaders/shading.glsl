@@ -2,8 +2,9 @@
 //   colour = (1 - F) (ambient + scatter) + F sky(R) + specular
 // F: Schlick's Fresnel with F0 = 0.02 (water, n = 1.33) at the viewing angle; R = 2N(N.V) - V;
 // specular: a microfacet BRDF, GGX or Beckmann, with Smith's height-correlated masking;
-// scatter: the notes' subsurface terms (Acerola's): light through the crests (k1, needs the
-// height H), towards the viewer (k2), Lambert (k3), and bubbles (k4).
+// scatter: the notes' subsurface terms (Acerola's, their k1 .. k4): light through the crests
+// (scatter_crest, needs the height H), towards the viewer (scatter_view), Lambert (scatter_lambert),
+// and bubbles (scatter_bubbles).
 #ifndef MICROFACET
 #define MICROFACET 0  // 0: GGX, 1: Beckmann
 #endif
@@ -60,16 +61,16 @@ vec3 specular_term(vec3 n, vec3 v, vec3 l, float alpha, float f0, vec3 sun) {
 }
 
 struct ScatterSettings {
-    float k1, k2, k3, k4;  // crest, view, Lambert, bubbles
+    float scatter_crest, scatter_view, scatter_lambert, scatter_bubbles;  // the notes' k1 .. k4
     vec3 scatter_colour, bubble_colour;
     vec3 crest_colour;  // sunlight through a thin crest: brighter and greener than the deep water
 };
 
 // height: metres above the mean level, scaled to about [0, 1] by the caller.
 vec3 scatter_term(vec3 n, vec3 v, vec3 l, float height, float alpha, float bubbles, ScatterSettings s, vec3 sun) {
-    float crest = s.k1 * clamp(height, 0.0, 1.0) * pow(max(dot(l, -v), 0.0), 4.0) * pow(0.5 - 0.5 * dot(l, n), 3.0);
-    float towards_viewer = s.k2 * pow(max(dot(v, n), 0.0), 2.0);
+    float crest = s.scatter_crest * clamp(height, 0.0, 1.0) * pow(max(dot(l, -v), 0.0), 4.0) * pow(0.5 - 0.5 * dot(l, n), 3.0);
+    float towards_viewer = s.scatter_view * pow(max(dot(v, n), 0.0), 2.0);
     vec3 scatter = (crest * s.crest_colour + towards_viewer * s.scatter_colour) * sun / (1.0 + smith_lambda(dot(n, l), alpha));
-    scatter += s.k3 * max(dot(l, n), 0.0) * s.scatter_colour * sun + s.k4 * bubbles * s.bubble_colour * sun;
+    scatter += s.scatter_lambert * max(dot(l, n), 0.0) * s.scatter_colour * sun + s.scatter_bubbles * bubbles * s.bubble_colour * sun;
     return scatter;
 }

@@ -61,7 +61,7 @@ TEST_F(ShadingReadback, LightOnWaterMatchesTheCpu) {
                                      {}, {"MICROFACET " + std::to_string(int(m))});
         ASSERT_FALSE(program.build()) << program.last_error();
         program.set("u_count", kSamples);
-        program.set("u_k", glm::vec4(float(s.k1), float(s.k2), float(s.k3), float(s.k4)));
+        program.set("u_k", glm::vec4(float(s.scatter_crest), float(s.scatter_view), float(s.scatter_lambert), float(s.scatter_bubbles)));
         auto to_glm = [](const Vec3& c) { return glm::vec3(float(c.x), float(c.y), float(c.z)); };
         program.set("u_scatter_colour", to_glm(s.scatter_colour));
         program.set("u_bubble_colour", to_glm(s.bubble_colour));

@@ -29,7 +29,7 @@ struct Step06Gpu : ocean_test::GlTest {
     ocean::ProgramFactory factory() { return cache.factory(); }
     // A calm sea (all maps zero, J = 1) of 4 cascades at N = 64.
     std::vector<step05::InitialSpectrum> calm = std::vector<step05::InitialSpectrum>(4);
-    std::unique_ptr<step05::GpuOcean> calm_ocean() {
+    std::unique_ptr<step05::OceanSimulation> calm_ocean() {
         step05::SpectrumParams p;
         p.resolution = 64;
         p.wind_speed = 0;
@@ -38,7 +38,7 @@ struct Step06Gpu : ocean_test::GlTest {
             s = step05::initial_spectrum(p);
             pointers.push_back(&s);
         }
-        auto ocean = std::make_unique<step05::GpuOcean>(factory());
+        auto ocean = std::make_unique<step05::OceanSimulation>(factory());
         ocean->set_spectra(pointers);
         ocean->simulate(0, step05::Backend::GpuFft, 1);
         return ocean;
@@ -74,7 +74,7 @@ TEST_F(Step06Gpu, FoamImpulseDecaysAsExpOfRateTimesTimeAtAnyFrameRate) {
 struct WindySea {
     std::vector<step05::InitialSpectrum> spectra;
     std::vector<step05::OceanMaps> cpu;
-    std::unique_ptr<step05::GpuOcean> gpu;
+    std::unique_ptr<step05::OceanSimulation> gpu;
 };
 
 WindySea windy_sea(ocean::ProgramFactory factory, double time, float choppiness) {
@@ -89,7 +89,7 @@ WindySea windy_sea(ocean::ProgramFactory factory, double time, float choppiness)
         pointers.push_back(&s);
         sea.cpu.push_back(step05::simulate_cpu(s, time));
     }
-    sea.gpu = std::make_unique<step05::GpuOcean>(std::move(factory));
+    sea.gpu = std::make_unique<step05::OceanSimulation>(std::move(factory));
     sea.gpu->set_spectra(pointers);
     sea.gpu->simulate(time, step05::Backend::GpuFft, choppiness);
     return sea;
@@ -270,7 +270,7 @@ TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {
 }
 
 struct Tessellated : Step06Gpu {
-    std::unique_ptr<step05::GpuOcean> ocean = calm_ocean();
+    std::unique_ptr<step05::OceanSimulation> ocean = calm_ocean();
     ocean::ShaderProgram* program = nullptr;
     void SetUp() override {
         Step06Gpu::SetUp();

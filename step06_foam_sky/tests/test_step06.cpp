@@ -89,7 +89,7 @@ TEST(Step06Cascades, SummedVarianceMatchesTheSingleSpectrumIntegral) {
 void check_cascade_variances(const char* name, double wind, double fetch, double tolerance0) {
     step05::OceanParams params;
     step06::use_default_sea(params);  // as the step declares it
-    step05::SpectrumParams shared = params.spectrum();
+    step05::SpectrumParams shared = params.spectrum;
     shared.wind_speed = wind;
     shared.fetch = fetch;
     const auto cascades = step06::cascade_spectra(shared);
@@ -265,11 +265,11 @@ TEST(Step06Presets, AStormIsAtLeastTwiceAsHighAsABreeze) {
         const auto error = registry.load_preset(std::string(OCEAN_SOURCE_DIR) + "/step06_foam_sky/presets/" + name + ".preset");
         ASSERT_FALSE(error) << *error;
         double variance = 0;
-        for (const auto& p : step06::cascade_spectra(ocean.spectrum())) variance += step05::resolved_variance(p);
+        for (const auto& p : step06::cascade_spectra(ocean.spectrum)) variance += step05::resolved_variance(p);
         hs[name] = 4 * std::sqrt(variance);
         std::printf("%-8s U %4.1f m/s, fetch %5.0f km, swell %.1f m: Hs of the drawn sea %.2f m, first tile %.0f m\n",
-                    name, ocean.sea.wind_speed, ocean.sea.fetch / 1000, ocean.sea.swell_height, hs[name],
-                    step06::largest_tile(ocean.spectrum()));
+                    name, ocean.spectrum.wind_speed, ocean.spectrum.fetch / 1000, ocean.spectrum.swell_height, hs[name],
+                    step06::largest_tile(ocean.spectrum));
     }
     EXPECT_GE(hs["stormy"], 2 * hs["breezy"]);
     EXPECT_LT(hs["calm"], hs["breezy"]);

@@ -29,7 +29,7 @@ case "$case_name" in
   broken_shader | broken_*_shader)
     # A copy of the step's shaders with a syntax error after the first line of one: by default one
     # the first frame uses (ocean.frag where there is one); a chapter may name another, such as
-    # one its own classes load by repository path (GpuOcean's evolve.comp): --shader-dir must
+    # one its own classes load by repository path (OceanSimulation's evolve.comp): --shader-dir must
     # replace those too, or the learner's copy (./ocean exercise) would never be run.
     shaders="$out/$case_name.shaders"
     rm -rf "$shaders" && cp -r "$step_dir/shaders" "$shaders"

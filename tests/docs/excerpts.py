@@ -2,7 +2,7 @@
 """excerpts.py REPO: every ```glsl and ```cpp block in a step's README quotes its code verbatim.
 
 A block names its file with a line `// from FILE` (relative to the step's folder: shaders/ocean.vert,
-gpu_ocean.cpp, ../step05_fft/gpu_ocean.cpp; more than one may follow each other); every other
+ocean_simulation.cpp, ../step05_fft/ocean_simulation.cpp; more than one may follow each other); every other
 line, but the `//>` notes and blank lines, must be a line of that file (leading and trailing spaces
 aside). So an excerpt, shader or host code, cannot drift from the code: change the source and this
 test names the README line to update. Exit 0 when all hold.

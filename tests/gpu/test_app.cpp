@@ -112,14 +112,14 @@ TEST(App, NextStepStartsAtTheSameTimeSizeAndView) {
     step.hand_over_after_first_frame = "step02_sine3d";
     ASSERT_EQ(step.run({"--headless", "--size", "48x32", "--frames", "5", "--time", "2.5", "--split"}, kWhere), 0);
     EXPECT_EQ(step.rendered, 1) << "the step ends after the frame that chose its neighbour";
-    const auto& next = step.handoff();
+    const auto& next = step.next_step_command();
     ASSERT_FALSE(next.empty());
     EXPECT_NE(next[0].find("step02_sine3d/step02_sine3d"), std::string::npos) << next[0];
     const std::string args = [&] { std::string a; for (const auto& s : next) a += s + " "; return a; }();
     EXPECT_NE(args.find("--start-at 2.500000"), std::string::npos) << args;
     EXPECT_NE(args.find("--size 48x32"), std::string::npos) << args;
     EXPECT_NE(args.find("--split"), std::string::npos) << args;
-    EXPECT_EQ(ocean::hand_off(3, {}), 3) << "no neighbour chosen: the status passes through";
+    EXPECT_EQ(ocean::run_next_step(3, {}), 3) << "no neighbour chosen: the status passes through";
 }
 
 TEST(App, CarriedParametersApplyOnlyWhereTheStepHasThem) {

@@ -11,7 +11,10 @@ cp "$victim" "$out/good.frag"
 "$exe" --headless --frames 100000000 --size 96x54 --shader-dir "$out/shaders" --screenshot "$out/last.png" \
   > "$out/run.log" 2>&1 &
 pid=$!
-sleep 2
+# Break it only once the step is drawing: its context line is printed before its programs build;
+# then a few seconds for the first frames (a loaded machine is slow to start a step).
+for _ in $(seq 60); do grep -q "OpenGL [0-9]" "$out/run.log" 2> /dev/null && break; sleep 0.5; done
+sleep 3
 printf '#version 450 core\nthis is not GLSL;\n' > "$victim"   # break it while the step runs
 sleep 2
 cp "$out/good.frag" "$victim" && touch "$victim"             # and mend it

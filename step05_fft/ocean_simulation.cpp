@@ -1,4 +1,4 @@
-#include "step05_fft/gpu_ocean.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 
 #include "common/error.hpp"
 
@@ -13,18 +13,18 @@ namespace {
 constexpr const char* kShaders = "step05_fft/shaders/";
 }
 
-ocean::ShaderProgram& GpuOcean::program(const std::string& file, const std::vector<std::string>& defines) {
+ocean::ShaderProgram& OceanSimulation::program(const std::string& file, const std::vector<std::string>& defines) {
     ocean::ShaderProgram* p = programs_(file, {kShaders + file}, defines);
     if (p == nullptr) throw ocean::Error("shader " + file + " does not build");
     return *p;
 }
 
-void GpuOcean::set_common_uniforms(const ocean::ShaderProgram& p) const {
+void OceanSimulation::set_common_uniforms(const ocean::ShaderProgram& p) const {
     p.set("u_n", n_);
     p.set("u_layer_count", cascade_count());
 }
 
-void GpuOcean::allocate(int n, int cascades) {
+void OceanSimulation::allocate(int n, int cascades) {
     const GLsizeiptr modes = GLsizeiptr(n) * n * cascades;
     h0_ = ocean::make_buffer();
     glNamedBufferStorage(h0_.id(), modes * 2 * GLsizeiptr(sizeof(float)), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -58,7 +58,7 @@ void GpuOcean::allocate(int n, int cascades) {
     n_ = n;
 }
 
-void GpuOcean::set_spectra(const std::vector<const InitialSpectrum*>& cascades) {
+void OceanSimulation::set_spectra(const std::vector<const InitialSpectrum*>& cascades) {
     if (cascades.empty() || int(cascades.size()) > kMaxCascades) throw ocean::Error("1 to 4 cascades");
     const int n = cascades.front()->n;
     if (n != n_ || cascades.size() != cascades_.size()) allocate(n, int(cascades.size()));
@@ -77,7 +77,7 @@ void GpuOcean::set_spectra(const std::vector<const InitialSpectrum*>& cascades) 
     glNamedBufferSubData(omega_.id(), 0, GLsizeiptr(omega.size() * sizeof(double)), omega.data());
 }
 
-void GpuOcean::evolve(double time) {
+void OceanSimulation::evolve(double time) {
     auto& p = program("evolve.comp");
     set_common_uniforms(p);
     glProgramUniform1d(p.id(), p.location("u_time"), time);
@@ -92,7 +92,7 @@ void GpuOcean::evolve(double time) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-void GpuOcean::transform_fft(GLuint source, GLuint target, int layers) {
+void OceanSimulation::transform_fft(GLuint source, GLuint target, int layers) {
     auto& p = program("fft.comp", {"FFT_SIZE " + std::to_string(n_)});
     set_common_uniforms(p);
     glUseProgram(p.id());
@@ -106,7 +106,7 @@ void GpuOcean::transform_fft(GLuint source, GLuint target, int layers) {
     }
 }
 
-void GpuOcean::transform_dft(GLuint source, GLuint target, int layers) {
+void OceanSimulation::transform_dft(GLuint source, GLuint target, int layers) {
     if (n_ > kMaxDftSize)
         throw ocean::Error("the naive DFT is for N <= " + std::to_string(kMaxDftSize) + ", not " +
                            std::to_string(n_));
@@ -119,7 +119,7 @@ void GpuOcean::transform_dft(GLuint source, GLuint target, int layers) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-CpuSimulation& GpuOcean::cpu() {
+CpuSimulation& OceanSimulation::cpu() {
     if (!cpu_) {
         cpu_ = std::make_unique<CpuSimulation>(n_, cascade_count(), default_wisdom_file());
         cpu_->set_spectra(cascades_);
@@ -127,12 +127,12 @@ CpuSimulation& GpuOcean::cpu() {
     return *cpu_;
 }
 
-void GpuOcean::upload_cpu_fields(double time) {
+void OceanSimulation::upload_cpu_fields(double time) {
     cpu().run(time);
     glNamedBufferSubData(fields_.id(), 0, GLsizeiptr(cpu_->float_count() * sizeof(float)), cpu_->fields());
 }
 
-void GpuOcean::upload_cpu_maps(double time, float choppiness) {
+void OceanSimulation::upload_cpu_maps(double time, float choppiness) {
     cpu().run(time);
     cpu_->assemble(choppiness);
     const auto& levels = cpu_->levels();
@@ -145,7 +145,7 @@ void GpuOcean::upload_cpu_maps(double time, float choppiness) {
     }
 }
 
-void GpuOcean::assemble(float choppiness) {
+void OceanSimulation::assemble(float choppiness) {
     auto& p = program("assemble.comp");
     set_common_uniforms(p);
     p.set("u_choppiness", choppiness);
@@ -160,7 +160,7 @@ void GpuOcean::assemble(float choppiness) {
     glGenerateTextureMipmap(slopes_.id());
 }
 
-void GpuOcean::simulate(double time, Backend backend, float choppiness, ocean::GpuTimers* timers) {
+void OceanSimulation::simulate(double time, Backend backend, float choppiness, ocean::GpuTimers* timers) {
     if (backend == Backend::Auto) {
         simulate_auto(time, choppiness, timers);
         return;
@@ -216,7 +216,7 @@ std::string format_ms(const char* label, double ms) {
 
 }  // namespace
 
-BackendTimes time_backends(GpuOcean& ocean, double time, int repeats) {
+BackendTimes time_backends(OceanSimulation& ocean, double time, int repeats) {
     BackendTimes t;
     t.n = ocean.resolution();
     t.layers = 4 * ocean.cascade_count();
@@ -236,7 +236,7 @@ BackendTimes time_backends(GpuOcean& ocean, double time, int repeats) {
     return t;
 }
 
-void GpuOcean::simulate_auto(double time, float choppiness, ocean::GpuTimers* timers) {
+void OceanSimulation::simulate_auto(double time, float choppiness, ocean::GpuTimers* timers) {
     if (auto_.decided) {
         simulate(time, auto_.chosen, choppiness, timers);
         return;
@@ -276,14 +276,14 @@ std::vector<std::string> BackendTimes::lines() const {
     return out;
 }
 
-void GpuOcean::bind_maps(const ocean::ShaderProgram& program) const {
+void OceanSimulation::bind_maps(const ocean::ShaderProgram& program) const {
     program.set("u_displacement", 0);
     program.set("u_slopes", 1);
     glBindTextureUnit(0, displacement_.id());
     glBindTextureUnit(1, slopes_.id());
 }
 
-std::vector<float> GpuOcean::read_map(bool slopes, int level) const {
+std::vector<float> OceanSimulation::read_map(bool slopes, int level) const {
     const int size = std::max(1, n_ >> level);
     std::vector<float> out(std::size_t(size) * std::size_t(size) * 4 * cascades_.size());
     glGetTextureImage(slopes ? slopes_.id() : displacement_.id(), level, GL_RGBA, GL_FLOAT,
@@ -291,7 +291,7 @@ std::vector<float> GpuOcean::read_map(bool slopes, int level) const {
     return out;
 }
 
-std::vector<float> GpuOcean::read_fields() const {
+std::vector<float> OceanSimulation::read_fields() const {
     std::vector<float> out(std::size_t(n_) * n_ * 4 * 2 * cascades_.size());
     glGetNamedBufferSubData(fields_.id(), 0, GLsizeiptr(out.size() * sizeof(float)), out.data());
     return out;

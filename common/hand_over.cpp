@@ -1,4 +1,4 @@
-#include "common/handoff.hpp"
+#include "common/hand_over.hpp"
 
 #include "common/camera.hpp"
 #include "common/cli.hpp"
@@ -23,7 +23,7 @@ std::string step_executable(const std::string& step) {
     return fs::exists(candidate) ? candidate.string() : "";
 }
 
-std::vector<std::string> handoff_command(const std::string& executable, double time, glm::ivec2 size,
+std::vector<std::string> hand_over_command(const std::string& executable, double time, glm::ivec2 size,
                                          const ParamRegistry& params, bool split) {
     std::vector<std::string> command = {executable, "--start-at", std::to_string(time), "--size",
                                         std::to_string(size.x) + "x" + std::to_string(size.y)};
@@ -36,7 +36,7 @@ std::vector<std::string> handoff_command(const std::string& executable, double t
     return command;
 }
 
-int hand_off(int status, const std::vector<std::string>& command) {
+int run_next_step(int status, const std::vector<std::string>& command) {
     if (command.empty()) return status;
     std::vector<char*> argv;
     for (const auto& a : command) argv.push_back(const_cast<char*>(a.c_str()));

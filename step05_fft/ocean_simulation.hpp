@@ -1,6 +1,7 @@
-// The FFT ocean on the GPU: buffers, the compute passes (evolve, transform, assemble) and the two
+// The FFT ocean's simulation: buffers, the compute passes (evolve, transform, assemble) and the two
 // textures the renderer samples. It simulates one or more cascades of the same resolution at
-// once (step05 uses one; step06 four), and transforms with one of three backends.
+// once (step05 uses one; step06 four), and transforms with one of three backends: the naive DFT
+// and the FFT on the GPU, or FFTW on the CPU (CpuSimulation), whose maps it uploads.
 #pragma once
 
 #include "common/gl.hpp"
@@ -44,9 +45,9 @@ constexpr int kMaxCascades = 4;
 
 using ocean::ProgramFactory;
 
-class GpuOcean {
+class OceanSimulation {
 public:
-    explicit GpuOcean(ProgramFactory programs) : programs_(std::move(programs)) {}
+    explicit OceanSimulation(ProgramFactory programs) : programs_(std::move(programs)) {}
 
     // Uploads h0 and omega of each cascade (all of the same resolution). Call when the spectrum
     // changes; buffers and textures are re-made when the size or the cascade count changes.
@@ -125,6 +126,6 @@ struct BackendTimes {
                 {"simulation_ms", std::min(simulation_fftw_ms, simulation_gpu_fft_ms)}};
     }
 };
-BackendTimes time_backends(GpuOcean& ocean, double time, int repeats);
+BackendTimes time_backends(OceanSimulation& ocean, double time, int repeats);
 
 }  // namespace step05
