@@ -41,10 +41,10 @@ public:
                      "(the faster of the last two, timed on the first frames)");
         p.add_choice("normals", &normals_, {"slopes", "finite_difference"},
                      "normals from the slope maps (i k h~) or from differences of the height map");
-        p.add_choice("view", &view_,
-                     {"shaded", "height", "displacement_x", "displacement_z", "slope_x", "slope_z", "jacobian",
-                      "spectrum"},
-                     "the lit sea, or one map over the screen");
+        std::vector<std::string> views = step05::map_view_names();  // view 1.. is map view 0..
+        views.insert(views.begin(), "shaded");
+        views.push_back("spectrum");
+        p.add_choice("view", &view_, views, "the lit sea, or one map over the screen");
         p.add_float("map_range", &map_range_, 0, 100,
                     "value shown at full colour in the map views but the Jacobian's (0: chosen from the spectrum)");
         light_.declare(p);

@@ -14,6 +14,11 @@ const char* field_name(Field f) {
     return names[f];
 }
 
+std::vector<std::string> map_view_names() {
+    return {field_name(Height), field_name(DisplacementX), field_name(DisplacementZ), field_name(SlopeX),
+            field_name(SlopeZ), "jacobian"};
+}
+
 double reduced_phase(double omega, double time) {
     const double phase = std::fmod(omega * time, 2 * kPi);
     return phase < 0 ? phase + 2 * kPi : phase;

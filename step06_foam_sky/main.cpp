@@ -78,9 +78,7 @@ private:
         p.add_choice("split_effect", &split_effect_, split_choices,
                      "split view: the effect shown on the left and left out on the right");
         p.add_int("debug_cascade", &debug_cascade_, 0, step06::kCascades - 1, "view=cascade_map: which cascade");
-        p.add_choice("debug_map", &debug_map_,
-                     {"height", "displacement_x", "displacement_z", "slope_x", "slope_z", "jacobian"},
-                     "view=cascade_map: which map");
+        p.add_choice("debug_map", &debug_map_, step05::map_view_names(), "view=cascade_map: which map");
         use_camera(ocean::camera_view("low"));  // 5 m above the water, level with the crests
         offer_bench_figures([this] {
             const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 5);  // all 4 cascades' maps
