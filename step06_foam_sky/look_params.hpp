@@ -56,7 +56,7 @@ public:
 
         p.add_choice("microfacet", &microfacet, {"ggx", "beckmann"}, "specular microfacet distribution")
             .in_group(kWater);
-        p.add_float("roughness", &roughness, 0.01f, 1, "alpha of the resolved surface (finer waves add theirs)")
+        p.add_float("roughness", &roughness, 0.01f, 1, "a floor on alpha (the waves a pixel does not show add theirs)")
             .in_group(kWater);
         p.add_color("scatter_colour", &scatter_colour, "colour of light scattered in the water (sRGB)").in_group(kWater);
         p.add_color("crest_colour", &crest_colour, "colour of sunlight through thin crests, backlit (sRGB)")
@@ -149,7 +149,7 @@ public:
     std::string sky_image;
     ocean::Generation sky_image_changes;  // bumped when sky_image changes: the image is loaded again
     int microfacet = 0, tonemapper = 0;
-    float roughness = 0.08f;
+    float roughness = 0.02f;
     glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, crest_colour{0.15f, 0.75f, 0.6f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
     float scatter_crest = 3.0f, scatter_view = 0.35f, scatter_lambert = 0.25f, scatter_bubbles = 0.3f;  // the notes' k1 .. k4
     float height_scale = 2, ambient = 0.6f, foam_roughness = 0.6f;

@@ -19,6 +19,7 @@
 #include "step06_foam_sky/look_params.hpp"
 #include "step06_foam_sky/patch_grid.hpp"
 #include "step06_foam_sky/post.hpp"
+#include "step06_foam_sky/short_waves.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/surface_export.hpp"
 #include "step06_foam_sky/tessellation.hpp"
@@ -89,7 +90,7 @@ private:
         offer_export([this](const std::string& dir) {
             ocean::ProgramFactory programs = program_factory();
             step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view_, time(), ocean_params_.choppiness,
-                                   params());
+                                   short_wave_slope_variance_, params());
         });
         // With and without one effect (split_effect).
         offer_split_view([this] {
@@ -125,6 +126,9 @@ private:
             }
             gpu_->set_spectra(pointers);
             foam_->resize(ocean_params_.spectrum.resolution);
+            // The waves shorter than the last cascade, down to the capillaries (short_waves.hpp):
+            // microfacets everywhere, whatever the pixel resolves.
+            short_wave_slope_variance_ = step06::short_wave_slope_variance_beyond(ocean_params_.spectrum);
             describe_cascades();
         }
         cascade_view_ = cascade_view();  // once a frame: the passes below and render() read it
@@ -278,6 +282,7 @@ private:
         if (shade == nullptr) return;
         bind_cascades(*shade);
         look_.upload_shading(*shade);
+        shade->set("u_short_wave_slope_variance", float(short_wave_slope_variance_.total()));
         shade->set("u_eye", camera().eye());
         shade->set("u_sky_max_lod", sky_->max_lod());
         glBindTextureUnit(UNIT_GBUFFER_WORLD, gbuffer_.world_texture());
@@ -361,6 +366,7 @@ private:
     float tess_scale_ = 12, tess_patch_size_ = 16;
     double height_variance_ = 0;         // m^2, of the summed cascades
     std::vector<float> unresolved_by_level_;  // kMaxMipLevels per cascade
+    step06::SlopeVariance short_wave_slope_variance_;
     step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with
     int split_effect_ = 0;
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;

@@ -8,7 +8,7 @@ namespace step06 {
 
 void export_surface(const std::string& dir, ocean::ProgramFactory& programs, const step05::OceanSimulation& ocean,
                     const FoamSimulation& foam, const CascadeView& cascades, double time, double choppiness,
-                    const ocean::ParamRegistry& params) {
+                    const SlopeVariance& short_waves, const ocean::ParamRegistry& params) {
     ocean::ShaderProgram* p = programs("surface_grid.comp", {"step06_foam_sky/shaders/surface_grid.comp"}, {});
     if (p == nullptr) throw ocean::Error("surface_grid.comp does not build");
     const FoamWindow& window = foam.window(kExportedFoamLevel);
@@ -37,7 +37,9 @@ void export_surface(const std::string& dir, ocean::ProgramFactory& programs, con
                           {"export.foam_level", std::to_string(kExportedFoamLevel)},
                           {"export.origin_x", ocean::format_number(first.x)},
                           {"export.origin_z", ocean::format_number(first.y)},
-                          {"export.spacing", ocean::format_number(window.texel_size)}},
+                          {"export.spacing", ocean::format_number(window.texel_size)},
+                          {"export.short_wave_slope_variance_upwind", ocean::format_number(short_waves.upwind)},
+                          {"export.short_wave_slope_variance_crosswind", ocean::format_number(short_waves.crosswind)}},
                          {{"foam.pfm", "foam, 0..1 (before the renderer's smoothstep)", foam.read_level(kExportedFoamLevel)}});
 }
 

@@ -8,6 +8,7 @@
 #include "common/shader.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/foam.hpp"
+#include "step06_foam_sky/short_waves.hpp"
 
 #include <string>
 
@@ -15,8 +16,11 @@ namespace step06 {
 
 constexpr int kExportedFoamLevel = 1;  // 256 m around the camera: several peak wavelengths
 
+// The maps hold the simulated surface; export.txt also gives the slope variance of the waves
+// shorter than the last cascade (`short_waves`, export.short_wave_slope_variance_upwind and
+// _crosswind), which the renderer adds as roughness.
 void export_surface(const std::string& dir, ocean::ProgramFactory& programs, const step05::OceanSimulation& ocean,
                     const FoamSimulation& foam, const CascadeView& cascades, double time, double choppiness,
-                    const ocean::ParamRegistry& params);
+                    const SlopeVariance& short_waves, const ocean::ParamRegistry& params);
 
 }  // namespace step06

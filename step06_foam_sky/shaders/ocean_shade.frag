@@ -23,7 +23,8 @@ uniform vec3 u_sun_radiance;
 uniform vec3 u_ambient;
 layout(binding = UNIT_SKY) uniform samplerCube u_sky;
 uniform float u_sky_max_lod;
-uniform float u_roughness;  // of the resolved surface; the unresolved waves add their slope variance
+uniform float u_roughness;  // a floor on alpha; the waves the pixel does not show add their slope variance
+uniform float u_short_wave_slope_variance;  // of the waves shorter than the last cascade (both axes)
 uniform float u_height_scale;          // metres that count as a full crest for the scatter term
 uniform vec3 u_scatter_colour, u_bubble_colour, u_foam_colour, u_crest_colour;
 uniform float u_scatter_crest, u_scatter_view, u_scatter_lambert, u_scatter_bubbles;
@@ -59,10 +60,11 @@ void main() {
     out_colour = vec4(level_colour(level), 1.0); return;
 #endif
 
-    // Waves too small for this pixel are not lost: their slopes become microfacets. A Beckmann
-    // surface of roughness alpha has slope variance alpha^2 / 2 per axis, so the unresolved
-    // variance summed over both axes adds to alpha^2 (GGX is given the same alpha).
-    float alpha = sqrt(u_roughness * u_roughness + surface.unresolved_slope_variance);
+    // Waves too small for this pixel are not lost: their slopes become microfacets, and so do the
+    // waves shorter than any cascade (down to the capillaries). A Beckmann surface of roughness
+    // alpha has slope variance alpha^2 / 2 per axis, so the variances summed over both axes add to
+    // alpha^2 (GGX is given the same alpha).
+    float alpha = sqrt(u_roughness * u_roughness + surface.unresolved_slope_variance + u_short_wave_slope_variance);
     alpha = mix(alpha, u_foam_roughness, foam);
     const float f0 = 0.02;
     float fresnel = fresnel_schlick(dot(n, v), f0);
