@@ -10,6 +10,7 @@
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/frame_passes.hpp"
 #include "step06_foam_sky/shading.hpp"
+#include "step06_foam_sky/short_waves.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -308,6 +309,35 @@ void cascade_bands(const fs::path& dir) {
              << "     '' using 1:3 axes x1y2 with lines ls 5 lc rgb '#aa3333' lw 2 title \"slopes: k³ F(k) (right axis): the light\"\n";
 }
 
+// The sun's glitter: the sea's mean square slope against the wind, step06's (its cascades, and
+// with the short waves beyond them) and what Cox and Munk photographed.
+void glitter_slopes(const fs::path& dir) {
+    Figure f(dir, "glitter_slopes");
+    f.data << "# U10  cascades  cascades+short waves  upwind  crosswind  Cox-Munk total  upwind  crosswind\n";
+    for (int i = 0; i <= 18; ++i) {
+        step05::OceanParams params;
+        step06::use_default_sea(params);
+        params.spectrum.wind_speed = 2 + i;
+        const step05::SpectrumParams& p = params.spectrum;  // step06's default sea at this wind
+        const step06::SlopeVariance sea = step06::sea_slope_variance(p);
+        const step06::SlopeVariance shorts = step06::short_wave_slope_variance_beyond(p);
+        const step06::SlopeVariance cm = step06::cox_munk(p.wind_speed);
+        f.data << p.wind_speed << ' ' << sea.total() - shorts.total() << ' ' << sea.total() << ' ' << sea.upwind << ' '
+               << sea.crosswind << ' ' << cm.total() << ' ' << cm.upwind << ' ' << cm.crosswind << '\n';
+    }
+    f.script << "set title \"The glitter's slopes: step06's sea against Cox and Munk's photographs\"\n"
+             << "set xlabel \"wind speed at 10 m (m/s)\"\nset ylabel \"mean square slope\"\nset xrange [2:20]\n"
+             << "set key top left\nset yrange [0:0.17]\n"
+             << R"gp(plot 'glitter_slopes.dat' using 1:6 with lines ls 5 lw 3 lc rgb '#888888' title "Cox and Munk (1954), total", \
+     '' using 1:7 with lines ls 5 lc rgb '#d9822b' dt 2 title "Cox and Munk, upwind", \
+     '' using 1:8 with lines ls 5 lc rgb '#1f5fa8' dt 2 title "Cox and Munk, crosswind", \
+     '' using 1:3 with linespoints ls 1 lc rgb 'black' title "step06: cascades + short waves", \
+     '' using 1:4 with points ls 2 lc rgb '#d9822b' title "step06, upwind", \
+     '' using 1:5 with points ls 3 lc rgb '#1f5fa8' title "step06, crosswind", \
+     '' using 1:2 with linespoints ls 4 lc rgb '#aa3333' title "the cascades alone: the short waves left out"
+)gp";
+}
+
 // Schlick's Fresnel against the exact equations for water, and the notes' slip.
 void fresnel(const fs::path& dir) {
     Figure f(dir, "fresnel");
@@ -498,7 +528,7 @@ int main(int argc, char** argv) {
     fs::create_directories(dir, error);
     if (error) return std::fprintf(stderr, "figure_data: cannot make %s: %s\n", argv[1], error.message().c_str()), 1;
     const std::vector<std::function<void(const fs::path&)>> figures{
-        wave_profiles, domain_warp, spectrum_lattice, jacobian_fold, spectra, cascade_bands, fresnel, butterfly, lighting_vectors, step05_frame, step06_frame};
+        wave_profiles, domain_warp, spectrum_lattice, jacobian_fold, spectra, cascade_bands, glitter_slopes, fresnel, butterfly, lighting_vectors, step05_frame, step06_frame};
     for (const auto& make : figures) make(dir);
     std::printf("figure_data: %zu figures' data and scripts in %s\n", figures.size(), argv[1]);
     return 0;
