@@ -6,21 +6,10 @@
 #include "common/run_support.hpp"
 #include "common/text.hpp"
 
-#include <GLFW/glfw3.h>
-#include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
-#include <algorithm>
-#include <cctype>
-#include <cerrno>
-#include <chrono>
-#include <csignal>
-#include <cstring>
-#include <unistd.h>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 namespace ocean {

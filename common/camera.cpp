@@ -16,17 +16,15 @@ void Camera::declare_params(ParamRegistry& params, const CameraView& view) {
     distance = view.distance;
     yaw_deg = view.yaw_deg;
     pitch_deg = view.pitch_deg;
-    params.add_choice("camera_mode", &mode, {"orbit", "fly"}, "orbit turns around the target; fly moves the eye (WASD, Q/E)")
-        .in_group(kCameraGroup);
-    params.add_float("camera_yaw", &yaw_deg, -360, 360, "heading of the view, degrees (0 looks along -z)")
-        .in_group(kCameraGroup);
-    params.add_float("camera_pitch", &pitch_deg, -89, 89, "how far the view looks down, degrees").in_group(kCameraGroup);
-    params.add_float("camera_distance", &distance, 0.5f, 1000, "eye-to-target distance, metres")
-        .in_group(kCameraGroup).logarithmic();
-    params.add_float("camera_target_x", &target.x, -10000, 10000, "point looked at, x (metres)").in_group(kCameraGroup);
-    params.add_float("camera_target_y", &target.y, -1000, 1000, "point looked at, y (metres, up)").in_group(kCameraGroup);
-    params.add_float("camera_target_z", &target.z, -10000, 10000, "point looked at, z (metres)").in_group(kCameraGroup);
-    params.add_float("camera_fov", &fov_deg, 10, 120, "vertical field of view, degrees").in_group(kCameraGroup);
+    const auto camera_group = params.group(kCameraGroup);
+    params.add_choice("camera_mode", &mode, {"orbit", "fly"}, "orbit turns around the target; fly moves the eye (WASD, Q/E)");
+    params.add_float("camera_yaw", &yaw_deg, -360, 360, "heading of the view, degrees (0 looks along -z)");
+    params.add_float("camera_pitch", &pitch_deg, -89, 89, "how far the view looks down, degrees");
+    params.add_float("camera_distance", &distance, 0.5f, 1000, "eye-to-target distance, metres").logarithmic();
+    params.add_float("camera_target_x", &target.x, -10000, 10000, "point looked at, x (metres)");
+    params.add_float("camera_target_y", &target.y, -1000, 1000, "point looked at, y (metres, up)");
+    params.add_float("camera_target_z", &target.z, -10000, 10000, "point looked at, z (metres)");
+    params.add_float("camera_fov", &fov_deg, 10, 120, "vertical field of view, degrees");
 }
 
 glm::vec3 Camera::forward() const {

@@ -73,9 +73,10 @@ public:
     explicit GridParams(float size = 80, int quads = 160) : plane_size_(size), x_quads_(quads), z_quads_(quads) {}
 
     void declare(ParamRegistry& p) {
-        p.add_float("plane_size", &plane_size_, 1, 5000, "side of the square plane, metres").in_group("grid").bumps(changes_);
-        p.add_int("x_quads", &x_quads_, 1, 2048, "grid cells along x (vertices: x_quads + 1)").in_group("grid").bumps(changes_);
-        p.add_int("z_quads", &z_quads_, 1, 2048, "grid cells along z (vertices: z_quads + 1)").in_group("grid").bumps(changes_);
+        const auto grid_group = p.group("grid", &changes_);
+        p.add_float("plane_size", &plane_size_, 1, 5000, "side of the square plane, metres");
+        p.add_int("x_quads", &x_quads_, 1, 2048, "grid cells along x (vertices: x_quads + 1)");
+        p.add_int("z_quads", &z_quads_, 1, 2048, "grid cells along z (vertices: z_quads + 1)");
     }
 
     // Rebuilds the mesh only when its size or resolution changed.

@@ -186,6 +186,8 @@ Param& ParamRegistry::add(std::unique_ptr<Param> param) {
     if (find(param->name_) != nullptr)
         throw std::logic_error("parameter '" + param->name_ + "' declared twice");
     param->reset();  // the default stored (a double bound to a float range keeps its value)
+    param->group_ = group_;
+    if (changes_ != nullptr) param->generations_.push_back(changes_);
     params_.push_back(std::move(param));
     return *params_.back();
 }

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ocean {
@@ -120,6 +121,31 @@ public:
     // Free text on one line (a file name): at most 1024 characters, no '#' (presets' comments).
     Param& add_text(const std::string& name, std::string* value, const std::string& help);
 
+    // A block of declarations that share a panel group (and a change counter) says so once: while
+    // the returned scope lives, every parameter declared goes into `group` and bumps `changes`
+    // (a declaration's own .in_group() still wins). Scopes nest; the outer one returns when the
+    // inner one ends.
+    class GroupScope {
+    public:
+        GroupScope(ParamRegistry& registry, std::string group, Generation* changes)
+            : registry_(registry), outer_group_(std::exchange(registry.group_, std::move(group))),
+              outer_changes_(std::exchange(registry.changes_, changes)) {}
+        ~GroupScope() {
+            registry_.group_ = std::move(outer_group_);
+            registry_.changes_ = outer_changes_;
+        }
+        GroupScope(const GroupScope&) = delete;
+        GroupScope& operator=(const GroupScope&) = delete;
+
+    private:
+        ParamRegistry& registry_;
+        std::string outer_group_;
+        Generation* outer_changes_;
+    };
+    [[nodiscard]] GroupScope group(std::string name, Generation* changes = nullptr) {
+        return GroupScope(*this, std::move(name), changes);
+    }
+
     Param* find(const std::string& name);
     const std::vector<std::unique_ptr<Param>>& all() const { return params_; }
 
@@ -148,6 +174,8 @@ private:
     std::string unknown_name_message(const std::string& name) const;
 
     std::vector<std::unique_ptr<Param>> params_;
+    std::string group_;              // of the GroupScope that is open, if any
+    Generation* changes_ = nullptr;  // likewise
 };
 
 }  // namespace ocean

@@ -21,28 +21,25 @@ public:
     // Every parameter but the shape and the warp changes the waves themselves: those bump
     // waves_changed and the step rebuilds its cascades (the shape and the warp are uniforms).
     void declare(ocean::ParamRegistry& p) {
+        const auto fbm_group = p.group("fbm");
         p.add_choice("shape", &shape, {"sine", "exp_sine"},
-                     "wave shape: sin(x), or exp(sin(x) - 1) with sharp crests and flat troughs").in_group("fbm");
-        p.add_int("wave_count", &wave_count, 1, kMaxWavesPerCascade, "waves in each cascade")
-            .in_group("fbm").bumps(waves_changed);
-        p.add_float("base_wavelength", &base_wavelength, 1, 500, "wavelength of wave 0, metres")
-            .in_group("fbm").bumps(waves_changed).logarithmic();
-        p.add_float("amplitude", &amplitude, 0, 10, "amplitude of wave 0 (a0), metres")
-            .in_group("fbm").bumps(waves_changed);
-        p.add_float("gain", &gain, 0, 1, "amplitude ratio of neighbouring waves").in_group("fbm").bumps(waves_changed);
-        p.add_float("lacunarity", &lacunarity, 1, 3, "frequency ratio of neighbouring waves")
-            .in_group("fbm").bumps(waves_changed);
-        p.add_float("speed_scale", &speed_scale, 0, 5,
-                    "a factor on every wave's phase rate: 1 = deep water, phi = sqrt(g w) (step01's speed is m/s)")
-            .in_group("fbm").bumps(waves_changed);
-        p.add_int("seed", &seed, 0, 1000000, "seed of the wave directions").in_group("fbm").bumps(waves_changed);
-        p.add_float("warp", &warp, 0, 10, "domain warping strength s: each wave pushes the next ones' input by s a grad f")
-            .in_group("fbm");
-        p.add_int("cascade_count", &cascade_count, 1, kMaxCascades, "independent sums layered")
-            .in_group("cascades").bumps(waves_changed);
+                     "wave shape: sin(x), or exp(sin(x) - 1) with sharp crests and flat troughs");
+        {
+            const auto waves_group = p.group("fbm", &waves_changed);
+            p.add_int("wave_count", &wave_count, 1, kMaxWavesPerCascade, "waves in each cascade");
+            p.add_float("base_wavelength", &base_wavelength, 1, 500, "wavelength of wave 0, metres").logarithmic();
+            p.add_float("amplitude", &amplitude, 0, 10, "amplitude of wave 0 (a0), metres");
+            p.add_float("gain", &gain, 0, 1, "amplitude ratio of neighbouring waves");
+            p.add_float("lacunarity", &lacunarity, 1, 3, "frequency ratio of neighbouring waves");
+            p.add_float("speed_scale", &speed_scale, 0, 5,
+                        "a factor on every wave's phase rate: 1 = deep water, phi = sqrt(g w) (step01's speed is m/s)");
+            p.add_int("seed", &seed, 0, 1000000, "seed of the wave directions");
+        }
+        p.add_float("warp", &warp, 0, 10, "domain warping strength s: each wave pushes the next ones' input by s a grad f");
+        const auto cascades_group = p.group("cascades", &waves_changed);
+        p.add_int("cascade_count", &cascade_count, 1, kMaxCascades, "independent sums layered");
         p.add_float("cascade_ratio", &cascade_ratio, 0.05f, 0.95f,
-                    "base wavelength and amplitude of cascade c: ratio^c times cascade 0's")
-            .in_group("cascades").bumps(waves_changed);
+                    "base wavelength and amplitude of cascade c: ratio^c times cascade 0's");
     }
 
     // The cascades these parameters describe.

@@ -244,38 +244,29 @@ double largest_displacement(double height_variance, double choppiness) {
 double resolved_slope_variance(const SpectrumParams& p) { return resolved_moment(p, 2); }
 
 double resolved_moment(const SpectrumParams& p, int power) {
-    const int n = p.resolution;
-    const double dk = 2 * kPi / p.patch_size;
     double sum = 0;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
-            if (resolved_mode(p, i, j)) {
-                const double kx = wavenumber(i, n, p.patch_size), kz = wavenumber(j, n, p.patch_size);
-                sum += std::pow(kx * kx + kz * kz, 0.5 * power) * spectrum_2d(p, kx, kz) * dk * dk;
-            }
+    for_each_resolved_mode(p, [&](double kx, double kz, double energy) {
+        sum += std::pow(kx * kx + kz * kz, 0.5 * power) * energy;
+    });
     return sum;
 }
 
 std::vector<double> unresolved_slope_variance_by_level(const SpectrumParams& p) {
-    const int n = p.resolution;
-    const int levels = 1 + int(std::lround(std::log2(double(n))));
-    const double dk = 2 * kPi / p.patch_size, texel = p.patch_size / n;
+    const int levels = 1 + int(std::lround(std::log2(double(p.resolution))));
+    const double texel = p.patch_size / p.resolution;
     std::vector<double> unresolved(std::size_t(levels), 0.0);
     const auto response = [&](double k, int level) {
         double h = 1;
         for (int j = 0; j < level; ++j) h *= std::cos(k * texel * double(1 << j) / 2);
         return h;
     };
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            if (!resolved_mode(p, i, j)) continue;
-            const double kx = wavenumber(i, n, p.patch_size), kz = wavenumber(j, n, p.patch_size);
-            const double variance = (kx * kx + kz * kz) * spectrum_2d(p, kx, kz) * dk * dk;
-            for (int level = 1; level < levels; ++level) {
-                const double kept = response(kx, level) * response(kz, level);
-                unresolved[std::size_t(level)] += variance * (1 - kept * kept);
-            }
+    for_each_resolved_mode(p, [&](double kx, double kz, double energy) {
+        const double variance = (kx * kx + kz * kz) * energy;
+        for (int level = 1; level < levels; ++level) {
+            const double kept = response(kx, level) * response(kz, level);
+            unresolved[std::size_t(level)] += variance * (1 - kept * kept);
         }
+    });
     return unresolved;
 }
 

@@ -138,6 +138,20 @@ struct InitialSpectrum {
 // then E|h(k, t)|^2 = (Phi(k) + Phi(-k)) dk^2 / 2 and the height variance is sum Phi dk^2.
 InitialSpectrum initial_spectrum(const SpectrumParams& p);
 
+// Calls visit(kx, kz, energy) for every resolved mode of p's grid, energy = Phi(k) dk^2 (m^2): the
+// one loop every sum over the spectrum below is made of.
+template <class Visit>
+void for_each_resolved_mode(const SpectrumParams& p, Visit&& visit) {
+    const int n = p.resolution;
+    const double dk = 2 * kPi / p.patch_size;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            if (resolved_mode(p, i, j)) {
+                const double kx = wavenumber(i, n, p.patch_size), kz = wavenumber(j, n, p.patch_size);
+                visit(kx, kz, spectrum_2d(p, kx, kz) * dk * dk);
+            }
+}
+
 // sum over resolved modes of Phi(k) dk^2: the expected variance of the height field, m^2.
 double resolved_variance(const SpectrumParams& p);
 // A bound on how far any point of the sea moves from rest, metres, for frustum culling (step05's

@@ -41,49 +41,47 @@ public:
     // Every look parameter, declared once, in the order the panel and presets list them; the
     // member's initialiser (below) is its default.
     void declare(ocean::ParamRegistry& p) {
-        p.add_float("sun_azimuth", &sun_azimuth, 0, 360, "sun heading, degrees (0 = +x, 90 = +z)").in_group(kSky);
-        p.add_float("sun_elevation", &sun_elevation, -5, 90, "sun height above the horizon, degrees").in_group(kSky);
-        p.add_float("sun_intensity", &sun_intensity, 0, 100, "sunlight, linear units (the disc is brighter)")
-            .in_group(kSky);
-        p.add_color("sun_colour", &sun_colour, "colour of the sunlight (sRGB)").in_group(kSky);
-        p.add_color("zenith_colour", &zenith_colour, "sky straight up (sRGB)").in_group(kSky);
-        p.add_color("horizon_colour", &horizon_colour, "sky at the horizon (sRGB)").in_group(kSky);
-        p.add_float("cloud_cover", &cloud_cover, 0, 1, "fraction of the sky under cloud").in_group(kSky);
-        p.add_float("cloud_speed", &cloud_speed, 0, 100, "cloud drift, metres per second").in_group(kSky);
-        p.add_text("sky_image", &sky_image, "equirectangular sky image (.hdr, .png); empty: procedural")
-            .in_group(kSky)
-            .bumps(sky_image_changes);
-
-        p.add_choice("microfacet", &microfacet, {"ggx", "beckmann"}, "specular microfacet distribution")
-            .in_group(kWater);
-        p.add_float("roughness", &roughness, 0.01f, 1, "a floor on alpha (the waves a pixel does not show add theirs)")
-            .in_group(kWater);
-        p.add_color("scatter_colour", &scatter_colour, "colour of light scattered in the water (sRGB)").in_group(kWater);
-        p.add_color("crest_colour", &crest_colour, "colour of sunlight through thin crests, backlit (sRGB)")
-            .in_group(kWater);
-        p.add_color("bubble_colour", &bubble_colour, "colour of light scattered by bubbles (sRGB)").in_group(kWater);
-        p.add_float("scatter_crest", &scatter_crest, 0, 10, "k1: light through the crests (times wave height)")
-            .in_group(kWater);
-        p.add_float("scatter_view", &scatter_view, 0, 10, "k2: scatter towards the viewer").in_group(kWater);
-        p.add_float("scatter_lambert", &scatter_lambert, 0, 10, "k3: Lambert term of the scattered light")
-            .in_group(kWater);
-        p.add_float("scatter_bubbles", &scatter_bubbles, 0, 10, "k4: bubbles (where there is foam)").in_group(kWater);
-        p.add_float("height_scale", &height_scale, 0.01f, 50, "metres of height that count as a full crest")
-            .in_group(kWater);
-        p.add_float("ambient", &ambient, 0, 10, "skylight reaching the water, linear").in_group(kWater);
-        p.add_color("foam_colour", &foam_colour, "foam albedo (sRGB)").in_group(kWater);
-        p.add_float("foam_roughness", &foam_roughness, 0.01f, 1, "microfacet roughness of foam").in_group(kWater);
-
-        p.add_float("fog_density", &fog_density, 0, 0.1f, "fog per metre at sea level").in_group(kPost);
-        p.add_float("fog_falloff", &fog_falloff, 0.0001f, 1, "how fast fog thins with height, per metre").in_group(kPost);
-        p.add_float("bloom_threshold", &bloom_threshold, 0, 100, "linear brightness where bloom starts").in_group(kPost);
-        p.add_float("bloom_strength", &bloom_strength, 0, 2, "how much of the glow is added").in_group(kPost);
-        p.add_float("exposure", &exposure, 0.01f, 20, "scale before the tonemapper").in_group(kPost).logarithmic();
-        p.add_choice("tonemapper", &tonemapper, {"aces", "agx", "none"},
-                     "filmic curve: ACES fitted, AgX, or a clamp").in_group(kPost);
+        {
+            const auto sky_group = p.group(kSky);
+            p.add_float("sun_azimuth", &sun_azimuth, 0, 360, "sun heading, degrees (0 = +x, 90 = +z)");
+            p.add_float("sun_elevation", &sun_elevation, -5, 90, "sun height above the horizon, degrees");
+            p.add_float("sun_intensity", &sun_intensity, 0, 100, "sunlight, linear units (the disc is brighter)");
+            p.add_color("sun_colour", &sun_colour, "colour of the sunlight (sRGB)");
+            p.add_color("zenith_colour", &zenith_colour, "sky straight up (sRGB)");
+            p.add_color("horizon_colour", &horizon_colour, "sky at the horizon (sRGB)");
+            p.add_float("cloud_cover", &cloud_cover, 0, 1, "fraction of the sky under cloud");
+            p.add_float("cloud_speed", &cloud_speed, 0, 100, "cloud drift, metres per second");
+            p.add_text("sky_image", &sky_image, "equirectangular sky image (.hdr, .png); empty: procedural")
+                .bumps(sky_image_changes);
+        }
+        {
+            const auto water_group = p.group(kWater);
+            p.add_choice("microfacet", &microfacet, {"ggx", "beckmann"}, "specular microfacet distribution");
+            p.add_float("roughness", &roughness, 0.01f, 1, "a floor on alpha (the waves a pixel does not show add theirs)");
+            p.add_color("scatter_colour", &scatter_colour, "colour of light scattered in the water (sRGB)");
+            p.add_color("crest_colour", &crest_colour, "colour of sunlight through thin crests, backlit (sRGB)");
+            p.add_color("bubble_colour", &bubble_colour, "colour of light scattered by bubbles (sRGB)");
+            p.add_float("scatter_crest", &scatter_crest, 0, 10, "k1: light through the crests (times wave height)");
+            p.add_float("scatter_view", &scatter_view, 0, 10, "k2: scatter towards the viewer");
+            p.add_float("scatter_lambert", &scatter_lambert, 0, 10, "k3: Lambert term of the scattered light");
+            p.add_float("scatter_bubbles", &scatter_bubbles, 0, 10, "k4: bubbles (where there is foam)");
+            p.add_float("height_scale", &height_scale, 0.01f, 50, "metres of height that count as a full crest");
+            p.add_float("ambient", &ambient, 0, 10, "skylight reaching the water, linear");
+            p.add_color("foam_colour", &foam_colour, "foam albedo (sRGB)");
+            p.add_float("foam_roughness", &foam_roughness, 0.01f, 1, "microfacet roughness of foam");
+        }
+        {
+            const auto post_group = p.group(kPost);
+            p.add_float("fog_density", &fog_density, 0, 0.1f, "fog per metre at sea level");
+            p.add_float("fog_falloff", &fog_falloff, 0.0001f, 1, "how fast fog thins with height, per metre");
+            p.add_float("bloom_threshold", &bloom_threshold, 0, 100, "linear brightness where bloom starts");
+            p.add_float("bloom_strength", &bloom_strength, 0, 2, "how much of the glow is added");
+            p.add_float("exposure", &exposure, 0.01f, 20, "scale before the tonemapper").logarithmic();
+            p.add_choice("tonemapper", &tonemapper, {"aces", "agx", "none"}, "filmic curve: ACES fitted, AgX, or a clamp");
+        }
+        const auto effects_group = p.group("terms and passes");
         for (std::size_t i = 0; i < std::size(kEffectNames); ++i)
-            p.add_bool(std::string("show_") + kEffectNames[i], &shown[i], std::string("draw the ") + kEffectNames[i])
-                .in_group("terms and passes");
+            p.add_bool(std::string("show_") + kEffectNames[i], &shown[i], std::string("draw the ") + kEffectNames[i]);
     }
 
     glm::vec3 to_sun() const {

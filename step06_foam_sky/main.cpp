@@ -60,8 +60,12 @@ private:
         step06::declare_foam_params(p, foam_settings_);
         p.add_float("tess_scale", &tess_scale_, 0.5f, 64, "edge level = tess_scale * patch / distance")
             .in_group("geometry");
-        p.add_float("tess_patch_size", &tess_patch_size_, 2, 200, "side of a tessellated patch, metres").in_group("geometry");
-        p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").in_group("geometry");
+        p.add_float("tess_patch_size", &tess_patch_size_, 2, 200, "side of a tessellated patch, metres")
+            .in_group("geometry")
+            .bumps(patches_changed_);
+        p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera")
+            .in_group("geometry")
+            .bumps(patches_changed_);
         p.add_bool("frustum_culling", &cull_, "discard patches outside the view").in_group("geometry");
         p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level").in_group("geometry");
         p.add_choice("backend", &backend_, step05::backend_names(kBackends),
@@ -136,7 +140,10 @@ private:
             sky_image_loaded_for_ = look_.sky_image_changes.value;
             if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
         }
-        patches_.build(patch_count_, tess_patch_size_);
+        if (patches_built_for_ != patches_changed_.value) {
+            patches_built_for_ = patches_changed_.value;
+            patches_.build(patch_count_, tess_patch_size_);
+        }
         // Once a frame, whatever the split view shows: the sea, its foam and the sky move on.
         simulate();
         update_foam(dt);
@@ -361,6 +368,8 @@ private:
     unsigned sky_image_loaded_for_ = 0;
     step06::FoamSettings foam_settings_;
     unsigned spectrum_built_for_ = 0;
+    ocean::Generation patches_changed_;  // patch_count, tess_patch_size
+    unsigned patches_built_for_ = 0;
     step06::CascadeView cascade_view_;         // this frame's, made in update()
     std::vector<std::string> cascade_lines_;  // the panel's description, made with the spectra
     float tess_scale_ = 12, tess_patch_size_ = 16;

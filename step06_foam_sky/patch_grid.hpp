@@ -12,8 +12,8 @@ namespace step06 {
 
 class PatchGrid {
 public:
+    // Called when patch_count or tess_patch_size changed (their Generation).
     void build(int count, float size) {
-        if (count == count_ && size == size_) return;
         std::vector<glm::vec2> corners;
         const float half = 0.5f * float(count) * size;
         for (int j = 0; j < count; ++j)
@@ -29,7 +29,6 @@ public:
         glVertexArrayAttribFormat(vao_.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(vao_.id(), 0, 0);
         count_ = count;
-        size_ = size;
     }
 
     void draw() const {
@@ -44,7 +43,6 @@ private:
     ocean::Buffer vertices_;
     ocean::VertexArray vao_;
     int count_ = 0;
-    float size_ = 0;
 };
 
 }  // namespace step06

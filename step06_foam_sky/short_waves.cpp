@@ -2,6 +2,7 @@
 
 #include "step06_foam_sky/cascades.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace step06 {
@@ -66,19 +67,14 @@ SlopeVariance short_wave_slope_variance(double wind_speed_10m, double peak_k, do
 }
 
 SlopeVariance resolved_slope_variance_by_axis(const step05::SpectrumParams& p) {
-    const int n = p.resolution;
-    const double dk = 2 * kPi / p.patch_size, angle = p.wind_direction * kPi / 180;
+    const double angle = p.wind_direction * kPi / 180;
     const double ux = std::cos(angle), uz = std::sin(angle);
     SlopeVariance v;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            if (!step05::resolved_mode(p, i, j)) continue;
-            const double kx = step05::wavenumber(i, n, p.patch_size), kz = step05::wavenumber(j, n, p.patch_size);
-            const double energy = step05::spectrum_2d(p, kx, kz) * dk * dk;
-            const double along = kx * ux + kz * uz, across = -kx * uz + kz * ux;
-            v.upwind += along * along * energy;
-            v.crosswind += across * across * energy;
-        }
+    step05::for_each_resolved_mode(p, [&](double kx, double kz, double energy) {
+        const double along = kx * ux + kz * uz, across = -kx * uz + kz * ux;
+        v.upwind += along * along * energy;
+        v.crosswind += across * across * energy;
+    });
     return v;
 }
 
@@ -86,7 +82,8 @@ SlopeVariance short_wave_slope_variance_beyond(const step05::SpectrumParams& sha
     const double omega_p = step05::peak_omega_of(shared);
     const double peak_k = omega_p * omega_p / kGravity;
     const double scale = shared.amplitude_scale * shared.amplitude_scale;
-    const SlopeVariance s = short_wave_slope_variance(shared.wind_speed, peak_k, cascade_spectra(shared).back().high_cutoff);
+    const double last_band_end = cascade_bands(cascade_patch_sizes(shared), shared.resolution).back().high;
+    const SlopeVariance s = short_wave_slope_variance(shared.wind_speed, peak_k, std::min(last_band_end, shared.high_cutoff));
     return {s.upwind * scale, s.crosswind * scale};
 }
 

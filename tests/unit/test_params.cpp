@@ -190,6 +190,37 @@ TEST_F(Fixture, ListNamesEveryParameterWithDefaultAndRange) {
         EXPECT_NE(list.find(expected), std::string::npos) << expected;
 }
 
+// A group scope gives the declarations inside it their group and change counter, nests, and ends
+// with its block: a parameter declared after it has neither.
+TEST(ParamRegistry, AGroupScopeGroupsAndCountsOnlyWhatItsBlockDeclares) {
+    ocean::ParamRegistry params;
+    ocean::Generation waves, grid;
+    float a = 0, b = 0, c = 0, d = 0;
+    {
+        const auto outer = params.group("waves", &waves);
+        params.add_float("a", &a, 0, 1, "");
+        {
+            const auto inner = params.group("grid", &grid);
+            params.add_float("b", &b, 0, 1, "");
+        }
+        params.add_float("c", &c, 0, 1, "").in_group("own");
+    }
+    params.add_float("d", &d, 0, 1, "");
+    EXPECT_EQ(params.find("a")->group(), "waves");
+    EXPECT_EQ(params.find("b")->group(), "grid");
+    EXPECT_EQ(params.find("c")->group(), "own") << "a declaration's own group wins";
+    EXPECT_EQ(params.find("d")->group(), "") << "the scope ended with its block";
+    const unsigned waves_before = waves.value, grid_before = grid.value;
+    params.set_assignment("b=0.5");
+    EXPECT_EQ(grid.value, grid_before + 1);
+    EXPECT_EQ(waves.value, waves_before) << "the inner scope replaced the outer counter";
+    params.set_assignment("c=0.5");
+    EXPECT_EQ(waves.value, waves_before + 1) << "the outer scope came back";
+    params.set_assignment("d=0.5");
+    EXPECT_EQ(waves.value, waves_before + 1);
+    EXPECT_EQ(grid.value, grid_before + 1);
+}
+
 TEST(ParamRegistry, DuplicateNamesAreAProgrammingError) {
     ocean::ParamRegistry params;
     float a = 0, b = 0;
