@@ -44,21 +44,25 @@ std::vector<Exercise> chapter() {
                                   1e-4);
          }},
         {"step06_foam_sky", 2, "The microfacet specular", "shading.glsl",
-         "vec3 specular_term(vec3 n, vec3 v, vec3 l, float alpha, float f0, vec3 sun) {",
+         "vec3 specular_term(vec3 n, vec3 v, vec3 l, Roughness r, float f0, vec3 sun) {",
          "    // TODO (exercise 2): the sun's reflection towards v: sun * D * G * F / (4 N.V).\n"
          "    return vec3(0.0);\n",
-         "Write specular_term from the parts above it: H = normalize(V + L), D = "
-         "microfacet_distribution(N.H, alpha), G = 1 / (1 + smith_lambda(N.V) + smith_lambda(N.L)), F = "
-         "fresnel_schlick(V.H, f0); return sun D G F / (4 N.V), and nothing when the sun or the eye is below "
-         "the surface (N.L <= 0 or N.V <= 0). Without it there is no sun glint.",
+         "Write specular_term from the parts above it: H = normalize(V + L), D = anisotropic_distribution(N, H, r),\n"
+         "G = 1 / (1 + anisotropic_lambda(N, V, r) + anisotropic_lambda(N, L, r)), F = fresnel_schlick(V.H, f0);\n"
+         "return sun D G F / (4 N.V), and nothing when the sun or the eye is below the surface (N.L <= 0 or\n"
+         "N.V <= 0). r is rougher along the wind than across it. Without it there is no sun glint.",
          "Fresnel takes V.H here, not N.V (the microfacets that reflect the sun face H); the 4 N.V in the "
-         "denominator is N.V alone (N.L cancels with the irradiance); return vec3(0.0) for N.L <= 0 or N.V <= 0.",
+         "denominator is N.V alone (N.L cancels with the irradiance); return vec3(0.0) for N.L <= 0 or N.V <= 0. "
+         "The check's roughness is twice as rough along a wind at (0.6, 0.8) as across it: use the anisotropic "
+         "D and Lambda, not alpha alone.",
          [](const fs::path& work) {
-             return check_glsl(work, "shading.glsl", "specular_term(n, v, l, alpha, 0.02, vec3(1.0)).x",
-                                  [](const Vec3& n, const Vec3& v, const Vec3& l, double alpha) {
-                                      return step06::specular_factor(n, v, l, alpha, 0.02, Microfacet::Ggx);
-                                  },
-                                  1e-4);
+             return check_glsl(work, "shading.glsl",
+                               "specular_term(n, v, l, Roughness(alpha, 0.5 * alpha, vec2(0.6, 0.8)), 0.02, vec3(1.0)).x",
+                               [](const Vec3& n, const Vec3& v, const Vec3& l, double alpha) {
+                                   return step06::specular_factor(n, v, l, {alpha, 0.5 * alpha, 0.6, 0.8}, 0.02,
+                                                                  Microfacet::Ggx);
+                               },
+                               1e-4);
          }},
         {"step06_foam_sky", 3, "Foam, exact at any frame rate", "foam_step.glsl",
          "float foam_step(float foam, float injection_rate, float decay_rate, float dt) {",

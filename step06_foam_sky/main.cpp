@@ -289,7 +289,10 @@ private:
         if (shade == nullptr) return;
         bind_cascades(*shade);
         look_.upload_shading(*shade);
-        shade->set("u_short_wave_slope_variance", float(short_wave_slope_variance_.total()));
+        shade->set("u_short_wave_slope_variance",
+                   glm::vec2(float(short_wave_slope_variance_.upwind), float(short_wave_slope_variance_.crosswind)));
+        const double wind = ocean_params_.spectrum.wind_direction * step05::kPi / 180;
+        shade->set("u_wind_heading", glm::vec2(float(std::cos(wind)), float(std::sin(wind))));
         shade->set("u_eye", camera().eye());
         shade->set("u_sky_max_lod", sky_->max_lod());
         glBindTextureUnit(UNIT_GBUFFER_WORLD, gbuffer_.world_texture());

@@ -3,7 +3,8 @@
 //
 //   colour = (1 - F)(ambient + scatter) + F sky(R) + specular
 //   F: Schlick, F0 + (1 - F0)(1 - N.V)^5 with F0 = 0.02 for water (n = 1.333 gives 0.0204)
-//   specular = L_sun D G F / (4 N.V), G = 1 / (1 + Lambda(V) + Lambda(L))  (Smith, height-correlated)
+//   specular = L_sun D G F / (4 N.V), G = 1 / (1 + Lambda(V) + Lambda(L))  (Smith, height-correlated),
+//   D and Lambda anisotropic: alpha along the wind and across it
 //   scatter: the notes' subsurface terms (Acerola's, their k1 .. k4): scatter_crest, scatter_view
 //   (towards the viewer), scatter_lambert, scatter_bubbles.
 #pragma once
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace step06 {
 
@@ -59,14 +61,48 @@ inline double microfacet_distribution(double n_dot_h, double alpha, Microfacet m
     return std::exp((c2 - 1.0) / (a2 * c2)) / (ocean::kPi * a2 * c2 * c2);
 }
 
+// The microfacets' roughness (shading.glsl's Roughness): alpha along the wind and across it, and
+// the wind's heading on the sea (wind_x, wind_z), unit length.
+struct Roughness {
+    double along, across, wind_x = 1, wind_z = 0;
+};
+
+inline Roughness isotropic(double alpha) { return {alpha, alpha}; }
+
+// (cos, sin) of direction w's azimuth around n, from the wind projected on n's tangent plane.
+inline std::pair<double, double> azimuth_from_wind(const Vec3& n, const Vec3& w, const Roughness& r) {
+    const double wind_n = n.x * r.wind_x + n.z * r.wind_z;
+    Vec3 along{r.wind_x - n.x * wind_n, -n.y * wind_n, r.wind_z - n.z * wind_n};
+    const double length_along = std::sqrt(step03::dot(along, along));
+    if (length_along < 1e-7) return {1.0, 0.0};
+    along = {along.x / length_along, along.y / length_along, along.z / length_along};
+    const Vec3 across = step03::cross(n, along);
+    const double c = step03::dot(w, along), s = step03::dot(w, across), length_cs = std::hypot(c, s);
+    return length_cs > 1e-7 ? std::pair{c / length_cs, s / length_cs} : std::pair{1.0, 0.0};
+}
+
+// D for slopes spread as an ellipse: the isotropic D at h's azimuth's alpha (1/alpha^2 =
+// cos^2/along^2 + sin^2/across^2), times alpha^2 / (along across).
+inline double anisotropic_distribution(const Vec3& n, const Vec3& h, const Roughness& r, Microfacet m) {
+    const auto [c, s] = azimuth_from_wind(n, h, r);
+    const double alpha = 1.0 / std::sqrt(c * c / (r.along * r.along) + s * s / (r.across * r.across));
+    return microfacet_distribution(std::max(step03::dot(n, h), 0.0), alpha, m) * alpha * alpha / (r.along * r.across);
+}
+
+// Smith's Lambda for direction w: the slopes projected on its azimuth, alpha^2 = cos^2 along^2 + sin^2 across^2.
+inline double anisotropic_lambda(const Vec3& n, const Vec3& w, const Roughness& r, Microfacet m) {
+    const auto [c, s] = azimuth_from_wind(n, w, r);
+    return smith_lambda(step03::dot(n, w), std::sqrt(c * c * r.along * r.along + s * s * r.across * r.across), m);
+}
+
 // The sun's specular reflection towards v, per unit of sun radiance (0 with the sun or the eye
 // below the surface).
-inline double specular_factor(const Vec3& n, const Vec3& v, const Vec3& l, double alpha, double f0, Microfacet m) {
+inline double specular_factor(const Vec3& n, const Vec3& v, const Vec3& l, const Roughness& r, double f0, Microfacet m) {
     const double n_dot_l = step03::dot(n, l), n_dot_v = step03::dot(n, v);
     if (n_dot_l <= 0.0 || n_dot_v <= 0.0) return 0.0;
     const Vec3 h = step03::normalize({v.x + l.x, v.y + l.y, v.z + l.z});
-    const double d = microfacet_distribution(std::max(step03::dot(n, h), 0.0), alpha, m);
-    const double g = 1.0 / (1.0 + smith_lambda(n_dot_v, alpha, m) + smith_lambda(n_dot_l, alpha, m));
+    const double d = anisotropic_distribution(n, h, r, m);
+    const double g = 1.0 / (1.0 + anisotropic_lambda(n, v, r, m) + anisotropic_lambda(n, l, r, m));
     const double f = fresnel_schlick(step03::dot(v, h), f0);
     return d * g * f / (4.0 * n_dot_v);
 }
@@ -77,13 +113,13 @@ struct ScatterSettings {
 };
 
 // shading.glsl's scatter_term, for a sun of radiance `sun`; height scaled to about [0, 1].
-inline Vec3 scatter_term(const Vec3& n, const Vec3& v, const Vec3& l, double height, double alpha, double bubbles,
+inline Vec3 scatter_term(const Vec3& n, const Vec3& v, const Vec3& l, double height, const Roughness& r, double bubbles,
                          const ScatterSettings& s, const Vec3& sun, Microfacet m) {
     const double back = 0.5 - 0.5 * step03::dot(l, n);
     const double crest = s.scatter_crest * std::clamp(height, 0.0, 1.0) * std::pow(std::max(-step03::dot(l, v), 0.0), 4.0) *
                          back * back * back;
     const double towards_viewer = s.scatter_view * std::pow(std::max(step03::dot(v, n), 0.0), 2.0);
-    const double shadowing = 1.0 / (1.0 + smith_lambda(step03::dot(n, l), alpha, m));
+    const double shadowing = 1.0 / (1.0 + anisotropic_lambda(n, l, r, m));
     const double lambert = s.scatter_lambert * std::max(step03::dot(l, n), 0.0), bubble = s.scatter_bubbles * bubbles;
     auto channel = [&](double crest_c, double scatter_c, double bubble_c, double sun_c) {
         return (crest * crest_c + towards_viewer * scatter_c) * sun_c * shadowing + lambert * scatter_c * sun_c +

@@ -24,7 +24,10 @@ uniform vec3 u_ambient;
 layout(binding = UNIT_SKY) uniform samplerCube u_sky;
 uniform float u_sky_max_lod;
 uniform float u_roughness;  // a floor on alpha; the waves the pixel does not show add their slope variance
-uniform float u_short_wave_slope_variance;  // of the waves shorter than the last cascade (both axes)
+// The slope variance of the waves shorter than the last cascade (short_waves.hpp), along the
+// wind and across it, and the wind's heading (x, z).
+uniform vec2 u_short_wave_slope_variance;
+uniform vec2 u_wind_heading;
 uniform float u_height_scale;          // metres that count as a full crest for the scatter term
 uniform vec3 u_scatter_colour, u_bubble_colour, u_foam_colour, u_crest_colour;
 uniform float u_scatter_crest, u_scatter_view, u_scatter_lambert, u_scatter_bubbles;
@@ -62,10 +65,16 @@ void main() {
 
     // Waves too small for this pixel are not lost: their slopes become microfacets, and so do the
     // waves shorter than any cascade (down to the capillaries). A Beckmann surface of roughness
-    // alpha has slope variance alpha^2 / 2 per axis, so the variances summed over both axes add to
-    // alpha^2 (GGX is given the same alpha).
-    float alpha = sqrt(u_roughness * u_roughness + surface.unresolved_slope_variance + u_short_wave_slope_variance);
-    alpha = mix(alpha, u_foam_roughness, foam);
+    // alpha has slope variance alpha^2 / 2 along each axis, so a variance sigma^2 along an axis
+    // adds 2 sigma^2 to that axis's alpha^2 (GGX is given the same alphas). The pixel's unresolved
+    // variance (both axes summed) is spread evenly; the short waves' is split along and across the
+    // wind, as Cox and Munk measured it.
+    float isotropic_alpha2 = u_roughness * u_roughness + surface.unresolved_slope_variance;
+    Roughness roughness = Roughness(sqrt(isotropic_alpha2 + 2.0 * u_short_wave_slope_variance.x),
+                                    sqrt(isotropic_alpha2 + 2.0 * u_short_wave_slope_variance.y), u_wind_heading);
+    roughness.along = mix(roughness.along, u_foam_roughness, foam);
+    roughness.across = mix(roughness.across, u_foam_roughness, foam);
+    float alpha = sqrt(0.5 * (roughness.along * roughness.along + roughness.across * roughness.across));
     const float f0 = 0.02;
     float fresnel = fresnel_schlick(dot(n, v), f0);
 
@@ -77,9 +86,9 @@ void main() {
     float height = surface_point.y / u_height_scale;
     vec3 water = vec3(0.0);
     if (u_show_ambient) water += (1.0 - fresnel) * u_ambient * u_scatter_colour;
-    if (u_show_scatter) water += (1.0 - fresnel) * scatter_term(n, v, u_to_sun, height, alpha, foam, s, u_sun_radiance);
+    if (u_show_scatter) water += (1.0 - fresnel) * scatter_term(n, v, u_to_sun, height, roughness, foam, s, u_sun_radiance);
     if (u_show_reflection) water += fresnel * sky;
-    if (u_show_specular) water += specular_term(n, v, u_to_sun, alpha, f0, u_sun_radiance);
+    if (u_show_specular) water += specular_term(n, v, u_to_sun, roughness, f0, u_sun_radiance);
     // Foam is rough and white: it scatters sun and sky back almost diffusely.
     vec3 foam_light = u_foam_colour * (u_ambient + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
     vec3 colour = mix(water, foam_light, foam);

@@ -1,7 +1,8 @@
 // Chapter 5.2 and 5.6: light on water that is not opaque (shading.hpp is the CPU reference).
 //   colour = (1 - F) (ambient + scatter) + F sky(R) + specular
 // F: Schlick's Fresnel with F0 = 0.02 (water, n = 1.33) at the viewing angle; R = 2N(N.V) - V;
-// specular: a microfacet BRDF, GGX or Beckmann, with Smith's height-correlated masking;
+// specular: a microfacet BRDF, GGX or Beckmann, anisotropic (rougher along the wind than across
+// it, as Cox and Munk photographed), with Smith's height-correlated masking;
 // scatter: the notes' subsurface terms (Acerola's, their k1 .. k4): light through the crests
 // (scatter_crest, needs the height H), towards the viewer (scatter_view), Lambert (scatter_lambert),
 // and bubbles (scatter_bubbles).
@@ -49,13 +50,53 @@ float microfacet_distribution(float n_dot_h, float alpha) {
 #endif
 }
 
+// The microfacets' roughness: alpha along the wind and across it, and the wind's heading on the
+// sea (x, z), unit length. The waves too short to draw tilt the water more along the wind than
+// across it, so the sun's glitter is an ellipse stretched along the wind.
+struct Roughness {
+    float along, across;
+    vec2 wind;
+};
+
+Roughness isotropic(float alpha) { return Roughness(alpha, alpha, vec2(1.0, 0.0)); }
+
+float wind_dot(vec3 n, vec2 wind) { return n.x * wind.x + n.z * wind.y; }
+
+// The (cos, sin) of the azimuth of direction w around the normal n, from the wind's heading
+// projected on the plane the normal stands on.
+vec2 azimuth_from_wind(vec3 n, vec3 w, vec2 wind) {
+    vec3 along = vec3(wind.x, 0.0, wind.y) - n * wind_dot(n, wind);
+    float length_along = length(along);
+    if (length_along < 1e-7) return vec2(1.0, 0.0);  // a normal lying along the wind: no frame
+    along /= length_along;
+    vec3 across = cross(n, along);
+    vec2 p = vec2(dot(w, along), dot(w, across));
+    float length_p = length(p);
+    return length_p > 1e-7 ? p / length_p : vec2(1.0, 0.0);  // w along n: any azimuth will do
+}
+
+// An anisotropic D is the isotropic one at the alpha of h's azimuth, 1/alpha^2 = cos^2/along^2 +
+// sin^2/across^2, times alpha^2 / (along across) (its slopes' density is an ellipse, not a circle).
+float anisotropic_distribution(vec3 n, vec3 h, Roughness r) {
+    vec2 cs = azimuth_from_wind(n, h, r.wind);
+    float alpha = inversesqrt(cs.x * cs.x / (r.along * r.along) + cs.y * cs.y / (r.across * r.across));
+    return microfacet_distribution(max(dot(n, h), 0.0), alpha) * alpha * alpha / (r.along * r.across);
+}
+
+// Smith's Lambda of a direction w: the slopes it sees are the microfacets' slopes projected on its
+// azimuth, of spread alpha^2 = cos^2 along^2 + sin^2 across^2.
+float anisotropic_lambda(vec3 n, vec3 w, Roughness r) {
+    vec2 cs = azimuth_from_wind(n, w, r.wind);
+    return smith_lambda(dot(n, w), sqrt(cs.x * cs.x * r.along * r.along + cs.y * cs.y * r.across * r.across));
+}
+
 // Radiance reflected towards V by the sun (radiance-weighted by N.L already).
-vec3 specular_term(vec3 n, vec3 v, vec3 l, float alpha, float f0, vec3 sun) {
+vec3 specular_term(vec3 n, vec3 v, vec3 l, Roughness r, float f0, vec3 sun) {
     float n_dot_l = dot(n, l), n_dot_v = dot(n, v);
     if (n_dot_l <= 0.0 || n_dot_v <= 0.0) return vec3(0.0);
     vec3 h = normalize(v + l);
-    float d = microfacet_distribution(max(dot(n, h), 0.0), alpha);
-    float g = 1.0 / (1.0 + smith_lambda(n_dot_v, alpha) + smith_lambda(n_dot_l, alpha));
+    float d = anisotropic_distribution(n, h, r);
+    float g = 1.0 / (1.0 + anisotropic_lambda(n, v, r) + anisotropic_lambda(n, l, r));
     float f = fresnel_schlick(dot(v, h), f0);
     return sun * d * g * f / (4.0 * n_dot_v);
 }
@@ -67,10 +108,10 @@ struct ScatterSettings {
 };
 
 // height: metres above the mean level, scaled to about [0, 1] by the caller.
-vec3 scatter_term(vec3 n, vec3 v, vec3 l, float height, float alpha, float bubbles, ScatterSettings s, vec3 sun) {
+vec3 scatter_term(vec3 n, vec3 v, vec3 l, float height, Roughness r, float bubbles, ScatterSettings s, vec3 sun) {
     float crest = s.scatter_crest * clamp(height, 0.0, 1.0) * pow(max(dot(l, -v), 0.0), 4.0) * pow(0.5 - 0.5 * dot(l, n), 3.0);
     float towards_viewer = s.scatter_view * pow(max(dot(v, n), 0.0), 2.0);
-    vec3 scatter = (crest * s.crest_colour + towards_viewer * s.scatter_colour) * sun / (1.0 + smith_lambda(dot(n, l), alpha));
+    vec3 scatter = (crest * s.crest_colour + towards_viewer * s.scatter_colour) * sun / (1.0 + anisotropic_lambda(n, l, r));
     scatter += s.scatter_lambert * max(dot(l, n), 0.0) * s.scatter_colour * sun + s.scatter_bubbles * bubbles * s.bubble_colour * sun;
     return scatter;
 }

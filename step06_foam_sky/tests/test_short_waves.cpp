@@ -64,9 +64,10 @@ TEST(Step06ShortWaves, TheSeaSlopesAreWhatCoxAndMunkPhotographed) {
         step06::use_default_sea(params);
         params.spectrum.wind_speed = u;
         const auto sea = step06::sea_slope_variance(params.spectrum);
-        const auto cm = step06::cox_munk(u);
-        std::printf("U10 %4.1f m/s: ours %.4f (upwind %.4f, crosswind %.4f), Cox-Munk %.4f (%.4f, %.4f)\n", u,
-                    sea.total(), sea.upwind, sea.crosswind, cm.total(), cm.upwind, cm.crosswind);
+        const auto cm = step06::cox_munk(u), short_waves = step06::short_wave_slope_variance_beyond(params.spectrum);
+        std::printf("U10 %4.1f m/s: ours %.4f (upwind %.4f, crosswind %.4f; the short waves %.4f, %.4f), Cox-Munk %.4f (%.4f, %.4f)\n",
+                    u, sea.total(), sea.upwind, sea.crosswind, short_waves.upwind, short_waves.crosswind, cm.total(),
+                    cm.upwind, cm.crosswind);
         EXPECT_NEAR(sea.total() / cm.total(), 1.0, 0.10) << "U10 = " << u;
         if (u >= 5) {
             EXPECT_NEAR(sea.upwind / cm.upwind, 1.0, 0.10) << "U10 = " << u;
