@@ -18,49 +18,20 @@
 //       foam) against Monahan and O'Muircheartaigh's W = 3.84e-6 U^3.41 (U the export's
 //       wind_speed, m/s): within a factor of 2 where W >= 0.2 %, below 0.2 % where W is.
 // Prints the figures; exit 0 when they hold, 1 otherwise (and 2 on bad input).
-#include "common/image.hpp"
-#include "common/text.hpp"
 #include "step05_fft/ocean_maps.hpp"
+#include "tests/export_reader.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <map>
 #include <string>
 #include <vector>
 
 namespace {
 
+using ocean_test::Export;
+using ocean_test::read_export;
+
 constexpr double kPi = 3.14159265358979323846;
-
-struct Export {
-    std::map<std::string, std::string> values;
-    int n = 0;
-    double extent = 0, time = 0;
-    bool periodic = true;
-    std::vector<double> map(const std::string& dir, const std::string& file) const {
-        std::string error;
-        const auto image = ocean::load_pfm(dir + "/" + file, &error);
-        if (!image || image->width != n || image->height != n) throw std::runtime_error(dir + "/" + file + ": " + error);
-        return {image->values.begin(), image->values.end()};
-    }
-};
-
-Export read_export(const std::string& dir) {
-    Export e;
-    std::ifstream text(dir + "/export.txt");
-    if (!text) throw std::runtime_error("no " + dir + "/export.txt");
-    for (std::string line; std::getline(text, line);) {
-        const std::string content = ocean::trim(line.substr(0, line.find('#')));
-        const auto eq = content.find('=');
-        if (eq != std::string::npos) e.values[ocean::trim(content.substr(0, eq))] = ocean::trim(content.substr(eq + 1));
-    }
-    e.n = std::stoi(e.values.at("export.resolution"));
-    e.extent = std::stod(e.values.at("export.patch_size"));
-    e.time = std::stod(e.values.at("export.time"));
-    e.periodic = e.values.count("export.periodic") == 0 || e.values.at("export.periodic") == "1";
-    return e;
-}
 
 double correlation(const std::vector<double>& a, const std::vector<double>& b) {
     double ma = 0, mb = 0;
