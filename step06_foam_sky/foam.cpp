@@ -29,7 +29,7 @@ void FoamSimulation::resize(int n) {
     if (n == n_ && texture_) return;
     n_ = n;
     texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(texture_.id(), 1 + int(std::log2(double(n))), GL_R32F, n, n, kFoamLevels);
+    glTextureStorage3D(texture_.id(), 1 + int(std::log2(double(n))), GL_RG32F, n, n, kFoamLevels);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the toroidal addressing
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
@@ -61,10 +61,12 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     p->set("u_threshold", float(s.threshold));
     p->set("u_injection", float(s.injection));
     p->set("u_decay_rate", float(s.decay_rate));
+    p->set("u_streak_injection", float(kResidualFraction * streak_share_ * s.injection));
+    p->set("u_streak_decay", float(s.streak_decay));
     p->set("u_n", n_);
     p->set("u_warm_start", int(first));
     ocean.bind_maps(*p);
-    glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32F);
+    glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32F);
     glUseProgram(p->id());
     const GLuint groups = GLuint((n_ + 7) / 8);
     glDispatchCompute(groups, groups, GLuint(kFoamLevels));
@@ -91,7 +93,17 @@ FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::
 void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit) const {
     program.set("u_foam_pattern", unit);
     program.set("u_foam_pattern_size", kPatternSize);
+    program.set("u_streak_along", streak_along_);
+    program.set("u_streak_across", streak_across_);
     glBindTextureUnit(GLuint(unit), pattern_.id());
+}
+
+void FoamSimulation::set_wind(double direction_degrees, double speed) {
+    const double heading = direction_degrees * 3.14159265358979323846 / 180;
+    const glm::vec2 along(float(std::cos(heading)), float(std::sin(heading)));
+    streak_along_ = along / float(kPatternSize * kStreakLength);
+    streak_across_ = glm::vec2(-along.y, along.x) / float(kPatternSize * kStreakSpacing);
+    streak_share_ = foam_streak_share(speed);
 }
 
 void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {
@@ -107,9 +119,9 @@ void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {
     glBindTextureUnit(GLuint(unit), texture_.id());
 }
 
-std::vector<float> FoamSimulation::read_level(int level) const {
+std::vector<float> FoamSimulation::read_level(int level, bool residual) const {
     std::vector<float> stored(std::size_t(n_) * n_), world(stored.size());
-    glGetTextureSubImage(texture_.id(), 0, 0, 0, level, n_, n_, 1, GL_RED, GL_FLOAT,
+    glGetTextureSubImage(texture_.id(), 0, 0, 0, level, n_, n_, 1, residual ? GL_GREEN : GL_RED, GL_FLOAT,
                          GLsizei(stored.size() * sizeof(float)), stored.data());
     const glm::ivec2 origin = windows_[std::size_t(level)].origin;
     for (int j = 0; j < n_; ++j)

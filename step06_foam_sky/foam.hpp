@@ -36,6 +36,9 @@ struct FoamSettings {
     double threshold = 0.75;
     double injection = 8;     // foam per second per unit of (threshold - J)
     double decay_rate = 0.8;  // 1/s: foam fades as exp(-decay_rate t)
+    // The residual foam a storm leaves in streaks (foam_pattern.hpp's foam_streak_share): fed by the
+    // same breaking, it fades as exp(-streak_decay t).
+    double streak_decay = 0.1;  // 1/s
 };
 
 // foam_threshold, foam_injection, foam_decay, bound to `settings` (their defaults are its own).
@@ -45,6 +48,9 @@ inline void declare_foam_params(ocean::ParamRegistry& p, FoamSettings& settings)
     p.add_float("foam_injection", &settings.injection, 0, 100, "foam added per second per unit below the threshold")
         .in_group("foam");
     p.add_float("foam_decay", &settings.decay_rate, 0, 20, "foam fades as exp(-decay t), per second").in_group("foam");
+    p.add_float("foam_streak_decay", &settings.streak_decay, 0.01f, 20,
+                "residual foam in streaks (from Beaufort 7) fades as exp(-decay t), per second")
+        .in_group("foam");
 }
 
 // A new foam texel starts where injection and decay would balance for the current J, so the
@@ -61,6 +67,15 @@ inline double foam_step(double foam, double jacobian, double dt, const FoamSetti
     const double x = s.decay_rate * dt;
     const double grown = x > 0 ? q * -std::expm1(-x) / s.decay_rate : q * dt;
     return std::clamp(foam * std::exp(-x) + grown, 0.0, 1.0);
+}
+
+// The residual foam's step: foam_step's exact solution, fed by `share` of the whitecaps' breaking
+// (foam_streak_share) and fading at streak_decay.
+inline double residual_foam_step(double residual, double jacobian, double dt, const FoamSettings& s, double share) {
+    FoamSettings residual_settings = s;
+    residual_settings.injection = share * s.injection;
+    residual_settings.decay_rate = s.streak_decay;
+    return foam_step(residual, jacobian, dt, residual_settings);
 }
 
 // The clipmap: level l is N x N texels over kFoamExtent0 * 4^l metres (64 m, 256 m, 1024 m).
@@ -99,15 +114,20 @@ public:
                 glm::dvec2 forward_xz, double dt, const FoamSettings& settings);
     // The windows and the texture, for the renderer (foam_map.glsl's uniforms) and --export.
     void bind(const ocean::ShaderProgram& program, int unit) const;
-    // The bubble pattern (u_foam_pattern, R8, mipmapped, repeating) and the metres one tile of it
-    // covers (u_foam_pattern_size).
+    // The bubble pattern (u_foam_pattern, R8, mipmapped, repeating), the metres one tile of it
+    // covers (u_foam_pattern_size), and the streaks' frame (u_streak_along, _across: world x, z to
+    // the pattern's coordinates, stretched along the wind).
     void bind_pattern(const ocean::ShaderProgram& program, int unit) const;
+    // The wind the streaks lie along: its heading (degrees, 0 = +x, 90 = +z) and speed (m/s: the
+    // share of the breaking that lingers, foam_streak_share).
+    void set_wind(double direction_degrees, double speed);
     static constexpr float kPatternSize = 9.0f;  // metres: about ten 1 m bubble cells a side
     const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
     GLuint texture() const { return texture_.id(); }
     int resolution() const { return n_; }
-    // Level `level` in the world's order: row j is z cell origin.z + j, column i x cell origin.x + i.
-    std::vector<float> read_level(int level) const;
+    // Level `level` in the world's order: row j is z cell origin.z + j, column i x cell origin.x + i;
+    // `residual` picks the residual foam instead of the whitecaps'.
+    std::vector<float> read_level(int level, bool residual = false) const;
 
 private:
     ocean::ProgramFactory programs_;
@@ -115,6 +135,8 @@ private:
     ocean::Texture pattern_;
     int n_ = 0;
     bool warm_start_ = true;
+    glm::vec2 streak_along_{1.0f, 0.0f}, streak_across_{0.0f, 1.0f};
+    double streak_share_ = 0;
     std::array<FoamWindow, kFoamLevels> windows_{};
 };
 

@@ -9,6 +9,7 @@
 // samples it in world space at two scales, and foam_cover() turns amount + pattern into coverage.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -31,12 +32,36 @@ std::vector<std::uint8_t> to_r8(const std::vector<float>& pattern);
 // pattern) open first and the borders last, so a fading whitecap turns to lace, not to grey.
 // The edge is soft: coverage rises over `kFoamEdge` of (amount - hole). cascades_visible.glsl's foam_cover
 // is the same function.
-constexpr double kFoamHoles = 0.5;  // how much of the amount the cell middles need before foam covers them
-constexpr double kFoamEdge = 0.3;
+constexpr double kFoamHoles = 0.25;  // how much of the amount the cell middles need before foam covers them
+constexpr double kFoamEdge = 0.2;
 inline double foam_cover(double amount, double pattern) {
     const double x = (amount - (1.0 - pattern) * kFoamHoles) / kFoamEdge;
     const double t = x < 0 ? 0 : (x > 1 ? 1 : x);
     return t * t * (3 - 2 * t);  // smoothstep
+}
+
+// Foam in streaks along the wind. The Beaufort scale's descriptions, which sailors estimate the
+// wind from: force 7 (from 13.9 m/s) "foam from breaking waves begins to be blown in streaks along
+// the direction of the wind", force 8 (17.2) "well-marked streaks", force 9 (20.8) "dense streaks".
+// A whitecap fades in seconds; what a storm's breaking leaves behind lingers for tens of seconds
+// and the wind combs it into lines (windrows, drawn by Langmuir circulation). foam.comp keeps that
+// residual foam beside the whitecaps, fed by the same breaking: kResidualFraction of the whitecaps'
+// injection times foam_streak_share(U), 0 below force 7, 1 from force 9.
+constexpr double kStreaksFrom = 13.9, kDenseStreaksFrom = 20.8;  // m/s
+constexpr double kResidualFraction = 0.35;  // of the whitecaps' injection, at foam_streak_share 1
+inline double foam_streak_share(double wind_speed) {
+    return std::clamp((wind_speed - kStreaksFrom) / (kDenseStreaksFrom - kStreaksFrom), 0.0, 1.0);
+}
+
+// How much of a texel the residual foam covers: the bubble pattern read stretched along the wind
+// (kStreakLength times along, kStreakSpacing times across: cells a few metres apart and tens of
+// metres long, whose borders make lines along the wind), where the pattern is high, times the
+// residual amount. cascades_visible.glsl's streak_cover is the same function.
+constexpr double kStreakLength = 40, kStreakSpacing = 1.5;
+constexpr double kStreakLineFrom = 0.45, kStreakLineTo = 0.85;  // the pattern's values that make a line
+inline double streak_cover(double residual, double pattern) {
+    const double x = std::clamp((pattern - kStreakLineFrom) / (kStreakLineTo - kStreakLineFrom), 0.0, 1.0);
+    return std::clamp(residual, 0.0, 1.0) * x * x * (3 - 2 * x);
 }
 
 }  // namespace step06

@@ -163,6 +163,7 @@ private:
     void update_foam(double dt) {
         ocean::GpuScope timed(timers(), "foam");
         const glm::vec3 eye = camera().eye(), forward = camera().forward();
+        foam_->set_wind(ocean_params_.spectrum.wind_direction, ocean_params_.spectrum.wind_speed);
         foam_->update(*gpu_, cascade_view_, {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
     }
 

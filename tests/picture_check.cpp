@@ -21,6 +21,22 @@
 //       (total, upwind and crosswind within 25 %; U taken from 10 m to their 12.5 m on a
 //       logarithmic profile, z0 = 2e-4 m), upwind above crosswind, the ellipse's long axis within
 //       20 degrees of the wind.
+//   picture_check whitecaps DIR FOAM WATER WHITE [DIR FOAM WATER WHITE]...
+//       The whitecap coverage a camera records, as photographs are counted: the share of the picture
+//       that is white. FOAM is the sea from above after >= 10 s of foam (DIR its --export, for the
+//       wind speed), WATER the same frame without foam, WHITE the same frame with every texel
+//       foamed; all three in linear light (tonemapper none). A pixel is whitecap where it is more
+//       than halfway, in luminance, from the bare water to full foam: a threshold that a
+//       photograph's own histogram would place between its two modes, here from the two
+//       references. Against Monahan and O'Muircheartaigh (1980), W = 3.84e-6 U^3.41, and Callaghan,
+//       de Leeuw, Cohen and O'Dowd (2008), W = 3.18e-5 (U - 3.70)^3 up to 11.25 m/s and
+//       4.82e-6 (U + 1.98)^3 above (none below 3.7 m/s): within half the lower and twice the
+//       higher of the two where they predict 0.2 % or more, below 0.2 % where they do not.
+//   picture_check streaks DIR FOAM WATER WHITE [DIR FOAM WATER WHITE]...
+//       Foam in streaks along the wind, as the Beaufort scale describes it: none below force 7
+//       (13.9 m/s), "well-marked streaks" from force 8 (17.2 m/s). The same three pictures, closer
+//       (streaks are tens of centimetres wide); the faint foam (cover below 0.15) must vary at least
+//       twice as much across the wind as along it from force 8, at most 1.3 times below force 7.
 // Prints the figures; exit 0 when they hold, 1 otherwise (and 2 on bad input).
 #include "common/image.hpp"
 #include "tests/export_reader.hpp"
@@ -204,13 +220,132 @@ int glitter(const std::vector<std::string>& args) {
     return failures == 0 ? 0 : 1;
 }
 
+double luminance(const std::uint8_t* rgba) {
+    return 0.2126 * srgb_to_linear(rgba[0] / 255.0) + 0.7152 * srgb_to_linear(rgba[1] / 255.0) +
+           0.0722 * srgb_to_linear(rgba[2] / 255.0);
+}
+
+ocean::Image load(const std::string& path) {
+    std::string error;
+    auto image = ocean::load_image(path, &error);
+    if (!image) throw std::runtime_error(error);
+    return *image;
+}
+
+double monahan(double u) { return 3.84e-6 * std::pow(u, 3.41); }
+double callaghan(double u) {
+    if (u <= 3.70) return 0;
+    return u <= 11.25 ? 3.18e-5 * std::pow(u - 3.70, 3) : 4.82e-6 * std::pow(u + 1.98, 3);
+}
+
+// How far each pixel is from the bare water to full foam, in luminance: 0 water, 1 white, -1 where
+// foam cannot be told from water (no brighter than it).
+struct FoamCover {
+    int width = 0, height = 0;
+    std::vector<double> cover;
+    double at(int i, int j) const { return i < 0 || j < 0 || i >= width || j >= height ? -1 : cover[std::size_t(j) * width + i]; }
+};
+FoamCover foam_cover(const ocean::Image& foam, const ocean::Image& water, const ocean::Image& white) {
+    if (foam.width != water.width || foam.width != white.width || foam.height != water.height || foam.height != white.height)
+        throw std::runtime_error("the three pictures differ in size");
+    FoamCover c{foam.width, foam.height, std::vector<double>(std::size_t(foam.width) * foam.height, -1)};
+    for (std::size_t p = 0; p < foam.rgba.size(); p += 4) {
+        const double lw = luminance(&water.rgba[p]), lf = luminance(&foam.rgba[p]), lwhite = luminance(&white.rgba[p]);
+        if (lwhite > lw) c.cover[p / 4] = std::clamp((lf - lw) / (lwhite - lw), 0.0, 1.0);
+    }
+    return c;
+}
+
+// Streaks along the wind: how much the faint foam (the cover capped at `faint`, so the whitecaps'
+// solid white counts no more than the lingering foam) changes over `step` metres of sea across the
+// wind against along it (mean squared differences; each pixel's point on the mean level, its
+// neighbour found by projecting back into the picture). Above 1: the foam lies in lines along the
+// wind; about 1: no direction; below 1: along the crests, across the wind.
+double streakiness(const Export& e, const FoamCover& c, double step, double faint) {
+    const Pinhole camera = pinhole(e, c.width, c.height);
+    const double wind = radians(number(e, "wind_direction"));
+    const glm::dvec3 along(std::cos(wind), 0, std::sin(wind)), across(-std::sin(wind), 0, std::cos(wind));
+    auto cover_at = [&](const glm::dvec3& point) {
+        const glm::dvec3 d = point - camera.eye;
+        const double depth = glm::dot(d, camera.forward);
+        const double x = glm::dot(d, camera.right) / depth / (camera.tan_half_fov * camera.aspect);
+        const double y = glm::dot(d, camera.up) / depth / camera.tan_half_fov;
+        return c.at(int(std::floor((x + 1) / 2 * c.width)), int(std::floor((1 - y) / 2 * c.height)));
+    };
+    double changes_along = 0, changes_across = 0;
+    for (int j = 0; j < c.height; ++j)
+        for (int i = 0; i < c.width; ++i) {
+            const double here = c.at(i, j);
+            const glm::dvec3 ray = camera.ray(i, j, c.width, c.height);
+            if (here < 0 || ray.y >= -1e-3) continue;
+            const glm::dvec3 point = camera.eye + ray * (-camera.eye.y / ray.y);
+            double a = cover_at(point + step * along), b = cover_at(point + step * across);
+            if (a < 0 || b < 0) continue;
+            a = std::min(a, faint), b = std::min(b, faint);
+            const double here_faint = std::min(here, faint);
+            changes_along += (a - here_faint) * (a - here_faint);
+            changes_across += (b - here_faint) * (b - here_faint);
+        }
+    return changes_along > 0 ? changes_across / changes_along : 0.0;
+}
+
+// Per sea: its export, and its cover from the three pictures that follow it in `args`.
+template <typename Check>
+int for_each_sea(const std::vector<std::string>& args, Check check) {
+    int failures = 0;
+    for (std::size_t k = 0; k + 3 < args.size(); k += 4) {
+        const Export e = ocean_test::read_export(args[k]);
+        const ocean::Image foam = load(args[k + 1]), water = load(args[k + 2]), white = load(args[k + 3]);
+        long clipped = 0;
+        for (std::size_t p = 0; p < white.rgba.size(); p += 4)
+            clipped += white.rgba[p] == 255 || white.rgba[p + 1] == 255 || white.rgba[p + 2] == 255;
+        if (clipped > 0) std::printf("%s: the white reference clips: lower the exposure\n", args[k].c_str()), ++failures;
+        const FoamCover cover = foam_cover(foam, water, white);
+        long compared = 0;
+        for (double c : cover.cover) compared += c >= 0;
+        if (compared < long(cover.cover.size()) / 2) throw std::runtime_error(args[k] + ": foam is not brighter than the water");
+        failures += check(args[k], e, cover) ? 0 : 1;
+    }
+    return failures == 0 ? 0 : 1;
+}
+
+int streaks(const std::vector<std::string>& args) {
+    return for_each_sea(args, [](const std::string& dir, const Export& e, const FoamCover& cover) {
+        const double wind = number(e, "wind_speed"), ratio = streakiness(e, cover, 0.3, 0.15);
+        const char* rule = wind >= 17.2 ? "Beaufort 8 and above, well-marked streaks: must be >= 2"
+                         : wind < 13.9  ? "below Beaufort 7, no streaks: must be <= 1.3"
+                                        : "Beaufort 7, streaks begin: not held";
+        std::printf("%s: U = %4.1f m/s, the faint foam varies %.2f times more across the wind than along it (%s)\n",
+                    dir.c_str(), wind, ratio, rule);
+        return wind >= 17.2 ? ratio >= 2 : wind < 13.9 ? ratio <= 1.3 : true;
+    });
+}
+
+int whitecaps(const std::vector<std::string>& args) {
+    return for_each_sea(args, [](const std::string& dir, const Export& e, const FoamCover& cover) {
+        long covered = 0, compared = 0;  // whitecap: more than halfway from the water to full foam
+        for (double c : cover.cover) covered += c > 0.5, compared += c >= 0;
+        const double wind = number(e, "wind_speed"), seen = double(covered) / double(compared);
+        const double low = std::min(monahan(wind), callaghan(wind)), high = std::max(monahan(wind), callaghan(wind));
+        const bool some = high >= 0.002;
+        std::printf("%s: U = %4.1f m/s, whitecaps cover %6.2f %% of the picture; Monahan %5.2f %%, Callaghan %5.2f %% (%s)\n",
+                    dir.c_str(), wind, 100 * seen, 100 * monahan(wind), 100 * callaghan(wind),
+                    some ? "within half the lower, twice the higher" : "must be < 0.2 %");
+        return some ? seen >= low / 2 && seen <= 2 * high : seen < 0.002;
+    });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     try {
         const std::string mode = argc > 1 ? argv[1] : "";
         if (mode == "glitter" && argc >= 4 && argc % 2 == 0) return glitter(std::vector<std::string>(argv + 2, argv + argc));
-        std::fprintf(stderr, "usage: picture_check glitter DIR IMAGE [DIR IMAGE]...\n");
+        if ((mode == "whitecaps" || mode == "streaks") && argc >= 6 && (argc - 2) % 4 == 0) {
+            const std::vector<std::string> args(argv + 2, argv + argc);
+            return mode == "whitecaps" ? whitecaps(args) : streaks(args);
+        }
+        std::fprintf(stderr, "usage: picture_check glitter DIR IMAGE [DIR IMAGE]... | whitecaps|streaks DIR FOAM WATER WHITE...\n");
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "picture_check: %s\n", e.what());

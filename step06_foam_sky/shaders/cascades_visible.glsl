@@ -121,41 +121,54 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
     return s;
 }
 
-// Foam at rest position p (fragment shaders): the finest level that holds p, blended into the
+// Foam at rest position p (fragment shaders), the whitecaps' and the residual: the finest level that holds p, blended into the
 // next one over the outer tenth of its window, none beyond the largest window. Every level is
 // read, in uniform control flow (so texture() may take its level from the pixel's neighbours, with
 // the bias): skipping the levels a pixel does not need saved nothing where neighbouring pixels run
 // together (llvmpipe runs masked-off branches anyway), and the textureGrad that the branches
 // needed takes a level per pixel, which is slower.
-float foam_at(vec2 p, float bias) {
-    float foam = 0.0, left = 1.0;  // left: the weight the finer levels did not take
+vec2 foam_at(vec2 p, float bias) {
+    vec2 foam = vec2(0.0);
+    float left = 1.0;  // the weight the finer levels did not take
     for (int level = 0; level < FOAM_LEVELS; ++level) {
         vec2 offset = abs(p - u_foam_centre[level]);
         float inside = 0.5 * u_foam_extent[level] - max(offset.x, offset.y);  // metres from the edge
         float weight = clamp(inside / (0.1 * u_foam_extent[level]), 0.0, 1.0);
-        foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level)), bias).r;
+        foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level)), bias).rg;
         left *= 1.0 - weight;
     }
-    return foam;
+    return foam;  // (whitecap foam, residual foam)
 }
 
 layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;  // foam_pattern.hpp: 1 on the borders of bubble cells
 uniform float u_foam_pattern_size;  // metres one tile of it covers
+// World (x, z) to the pattern's coordinates for the streaks: stretched along the wind.
+uniform vec2 u_streak_along, u_streak_across;
 
 // foam_pattern.hpp's foam_cover: fresh foam (amount 1) covers everything; as it decays the cell
 // middles open first and the borders last, so a fading whitecap turns to lace, with a soft edge.
-const float FOAM_HOLES = 0.5, FOAM_EDGE = 0.3;
+const float FOAM_HOLES = 0.25, FOAM_EDGE = 0.2;
 float foam_cover(float amount, float pattern) {
     return smoothstep(0.0, 1.0, (amount - (1.0 - pattern) * FOAM_HOLES) / FOAM_EDGE);
+}
+
+// foam_pattern.hpp's streak_cover: the residual foam, where the stretched pattern makes a line.
+const float STREAK_LINE_FROM = 0.45, STREAK_LINE_TO = 0.85;
+float streak_cover(float residual, float pattern) {
+    return clamp(residual, 0.0, 1.0) * smoothstep(STREAK_LINE_FROM, STREAK_LINE_TO, pattern);
 }
 
 // The simulated amount laid out by the pattern, read at two scales (so the cells are not all one
 // size and the tile does not show) in world space, where the foam is.
 // No foam (amount 0) covers nothing whatever the pattern, so no branch is needed around it.
 float total_foam(vec2 p, SurfaceFootprint f) {
-    // Every map here is p times a scale, so one bias corrects GL's level for all of them.
+    // Every map here is a linear function of p, so one bias corrects GL's level for all of them.
     float bias = log2(max(length(f.dx), length(f.dy)) / implicit_long_side(p));
     vec2 uv = p / u_foam_pattern_size;
     float pattern = 0.6 * texture(u_foam_pattern, uv, bias).r + 0.4 * texture(u_foam_pattern, uv * 2.71 + 0.37, bias).r;
-    return foam_cover(foam_at(p, bias), pattern);
+    vec2 foam = foam_at(p, bias);
+    float whitecaps = foam_cover(foam.x, pattern);
+    // The streaks: the residual foam (none below Beaufort 7) on the pattern stretched along the wind.
+    float streaks = streak_cover(foam.y, texture(u_foam_pattern, vec2(dot(p, u_streak_along), dot(p, u_streak_across)), bias).r);
+    return max(whitecaps, streaks);
 }

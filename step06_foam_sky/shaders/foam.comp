@@ -1,14 +1,16 @@
 #version 450 core
 // Chapter 5.3 (foam.hpp is the CPU reference): at each texel of each foam level, the Jacobian of
 // the summed surface (all cascades, as rendered) at the texel's world position; foam is made where
-// J falls below the threshold and fades, integrated exactly over the frame (foam_step.glsl).
+// J falls below the threshold and fades, integrated exactly over the frame (foam_step.glsl). Beside
+// it (green) the residual foam a storm leaves, fed by a share of the same breaking and fading
+// slowly (foam_pattern.hpp: the streaks).
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "cascades.glsl"
 // FOAM_LEVELS and the clipmap's layout:
 #include "foam_map.glsl"
 #include "foam_step.glsl"
 
-layout(r32f, binding = 0) uniform image2DArray u_foam_image;
+layout(rg32f, binding = 0) uniform image2DArray u_foam_image;  // (whitecap foam, residual foam)
 
 uniform int u_n;                                // texels per side of a level (a power of two)
 uniform ivec2 u_origin[FOAM_LEVELS];            // the window's first cell, in texels of its level
@@ -18,6 +20,8 @@ uniform float u_dt;
 uniform float u_threshold;
 uniform float u_injection;
 uniform float u_decay_rate;
+uniform float u_streak_injection;  // the injection times foam_streak_share(U): 0 below Beaufort 7
+uniform float u_streak_decay;
 uniform bool u_warm_start;  // a new foam texture: start from the steady state of this J
 
 void main() {
@@ -36,11 +40,12 @@ void main() {
     // A cell that has just entered the window holds another cell's foam: start it afresh.
     ivec2 previous = u_previous_origin[level];
     bool entered = any(lessThan(cell, previous)) || any(greaterThanEqual(cell, previous + u_n));
-    float foam = imageLoad(u_foam_image, id).r;
-    float injection_rate = u_injection * max(0.0, u_threshold - j);
+    vec2 foam = imageLoad(u_foam_image, id).rg;
+    float squeeze = max(0.0, u_threshold - j);
+    float injection_rate = u_injection * squeeze, streak_rate = u_streak_injection * squeeze;
     if (u_warm_start || entered)  // where injection and decay balance if J stayed as it is
-        foam = clamp(injection_rate / max(u_decay_rate, 0.1), 0.0, 1.0);
+        foam = clamp(vec2(injection_rate / max(u_decay_rate, 0.1), streak_rate / max(u_streak_decay, 0.1)), 0.0, 1.0);
     else
-        foam = foam_step(foam, injection_rate, u_decay_rate, u_dt);
-    imageStore(u_foam_image, id, vec4(foam));
+        foam = vec2(foam_step(foam.x, injection_rate, u_decay_rate, u_dt), foam_step(foam.y, streak_rate, u_streak_decay, u_dt));
+    imageStore(u_foam_image, id, vec4(foam, 0.0, 0.0));
 }

@@ -90,7 +90,12 @@ void main() {
     if (u_show_reflection) water += fresnel * sky;
     if (u_show_specular) water += specular_term(n, v, u_to_sun, roughness, f0, u_sun_radiance);
     // Foam is rough and white: it scatters sun and sky back almost diffusely.
-    vec3 foam_light = u_foam_colour * (u_ambient + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
+    // Lambertian, f_r = albedo / pi: lit by the sun and by the sky it faces, whose irradiance over
+    // pi is the sky's mean radiance over the hemisphere around n (the cube's coarsest level, read
+    // at n, stands for it). The same sky the water reflects, so foam under a bright overcast is
+    // as white as the water's reflection of it is bright.
+    vec3 sky_irradiance_over_pi = textureLod(u_sky, n, u_sky_max_lod).rgb;
+    vec3 foam_light = u_foam_colour * (sky_irradiance_over_pi + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
     vec3 colour = mix(water, foam_light, foam);
     if (u_show_fog) colour = apply_fog(colour, u_eye, surface_point, textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), u_sky_max_lod * 0.5).rgb);
     out_colour = vec4(colour, 1.0);

@@ -1,10 +1,13 @@
 #version 450 core
-// Evaluates step06's foam_cover at every texel of the bubble pattern, for the read-back test.
+// Evaluates step06's foam_cover (or streak_cover) at every texel of the bubble pattern, for the
+// read-back test.
 #include "step06_foam_sky/shaders/cascades_visible.glsl"
 
 out float out_cover;
 uniform float u_amount;
+uniform bool u_streaks;
 
 void main() {
-    out_cover = foam_cover(u_amount, texelFetch(u_foam_pattern, ivec2(gl_FragCoord.xy), 0).r);
+    float pattern = texelFetch(u_foam_pattern, ivec2(gl_FragCoord.xy), 0).r;
+    out_cover = u_streaks ? streak_cover(u_amount, pattern) : foam_cover(u_amount, pattern);
 }

@@ -172,31 +172,36 @@ TEST_F(Step06Gpu, TheSameFoamAtSixAndSixtyFramesASecond) {
     step06::FoamSettings settings;
     settings.injection = 1.5;  // below the clamp on most foamy texels: the clamp would hide a slip
     settings.threshold = 0.9;
-    auto grown = [&](int fps) {
+    // Both kinds of foam: the whitecaps' and, in a Beaufort 9 wind, the residual foam of the streaks.
+    auto grown = [&](int fps, bool residual) {
         step06::FoamSimulation foam(factory());
         foam.resize(64);
         foam.fill(0.0f);
+        foam.set_wind(30, 21);
         for (int frame = 0; frame < fps; ++frame)
             foam.update(*sea.gpu, all_cascades(), {37.0, -12.0}, {0, 1}, 1.0 / fps, settings);
-        return foam.read_level(0);
+        return foam.read_level(0, residual);
     };
-    const auto at6 = grown(6), at60 = grown(60);
-    double worst = 0, total6 = 0, total60 = 0;
-    for (std::size_t i = 0; i < at6.size(); ++i) {
-        worst = std::max(worst, double(std::abs(at6[i] - at60[i])));
-        total6 += at6[i];
-        total60 += at60[i];
+    for (bool residual : {false, true}) {
+        const auto at6 = grown(6, residual), at60 = grown(60, residual);
+        double worst = 0, total6 = 0, total60 = 0;
+        for (std::size_t i = 0; i < at6.size(); ++i) {
+            worst = std::max(worst, double(std::abs(at6[i] - at60[i])));
+            total6 += at6[i];
+            total60 += at60[i];
+        }
+        const char* kind = residual ? "residual foam" : "foam";
+        std::printf("%s after 1 s: %.4f (6 fps) and %.4f (60 fps) summed over level 0, worst texel %.2e\n", kind,
+                    total6, total60, worst);
+        ASSERT_GT(total60, residual ? 2.0 : 10.0) << "the test needs " << kind << " to compare";
+        EXPECT_NEAR(total6 / total60, 1.0, 1e-4) << kind;
+        EXPECT_LT(worst, 1e-4) << kind;
     }
-    std::printf("foam after 1 s: %.4f (6 fps) and %.4f (60 fps) summed over level 0, worst texel %.2e\n", total6,
-                total60, worst);
-    ASSERT_GT(total60, 10.0) << "the test needs foam to compare";
-    EXPECT_NEAR(total6 / total60, 1.0, 1e-4);
-    EXPECT_LT(worst, 1e-4);
 }
 
 // The renderer's foam cover (GLSL) against foam_pattern.hpp's, texel by texel of the uploaded
 // pattern (8 bits: the CPU is given the same quantised value), for a fresh, a half-decayed and an
-// almost gone whitecap.
+// almost gone whitecap, and the streaks' cover of residual foam.
 TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     step06::FoamSimulation foam(factory());
     ocean::ShaderProgram* program =
@@ -213,11 +218,12 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     GLint previous_framebuffer = 0, previous_viewport[4] = {};  // the test context's own, restored after
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
     glGetIntegerv(GL_VIEWPORT, previous_viewport);
-    for (float amount : {1.0f, 0.45f, 0.15f}) {
+    for (const auto& [amount, streaks] : {std::pair{1.0f, false}, {0.45f, false}, {0.15f, false}, {0.8f, true}, {0.3f, true}}) {
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         glViewport(0, 0, n, n);
         foam.bind_pattern(*program, 0);
         program->set("u_amount", amount);
+        program->set("u_streaks", int(streaks));
         glUseProgram(program->id());
         glBindVertexArray(vao.id());
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -226,11 +232,13 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
         double worst = 0, covered = 0;
         for (std::size_t i = 0; i < gpu.size(); ++i) {
             const double quantised = pattern[i] / 255.0;
-            worst = std::max(worst, std::abs(gpu[i] - step06::foam_cover(amount, quantised)));
+            const double cpu = streaks ? step06::streak_cover(amount, quantised) : step06::foam_cover(amount, quantised);
+            worst = std::max(worst, std::abs(gpu[i] - cpu));
             covered += gpu[i];
         }
-        EXPECT_LT(worst, 1e-5) << "amount " << amount;
-        std::printf("foam amount %.2f: mean cover %.3f, worst |GPU - CPU| %.2g\n", amount, covered / double(gpu.size()), worst);
+        EXPECT_LT(worst, 1e-5) << (streaks ? "streaks, " : "whitecaps, ") << "amount " << amount;
+        std::printf("%s amount %.2f: mean cover %.3f, worst |GPU - CPU| %.2g\n", streaks ? "residual foam" : "foam",
+                    amount, covered / double(gpu.size()), worst);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
     glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);

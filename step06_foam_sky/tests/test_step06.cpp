@@ -244,8 +244,40 @@ TEST(Step06FoamPattern, DecayingFoamTurnsToLaceThenNothing) {
     }
     for (double amount = 0.1; amount < 1.0; amount += 0.1)
         EXPECT_GE(step06::foam_cover(amount, 0.9), step06::foam_cover(amount, 0.1));  // borders last
-    EXPECT_GT(step06::foam_cover(0.4, 0.9), 0.5);  // half-decayed: the borders still white...
-    EXPECT_LT(step06::foam_cover(0.4, 0.1), 0.1);  // ...the middles open
+    // A whitecap stays white while its amount is above 0.3 (the foam map's calibrated whitecap,
+    // so the picture counts what the map does: picture.whitecaps_as_photographed)...
+    EXPECT_GT(step06::foam_cover(0.35, 0.5), 0.5);
+    EXPECT_GT(step06::foam_cover(0.2, 0.9), 0.5);  // ...decayed further, the borders still white...
+    EXPECT_LT(step06::foam_cover(0.2, 0.1), 0.1);  // ...the middles open
+}
+
+// Streaks as the Beaufort scale has them: no residual foam below force 7 (13.9 m/s), all of it from
+// force 9 (20.8 m/s); the residual foam is the whitecaps' exact step at its own slower decay, so it
+// outlasts them; it covers only where the stretched pattern makes a line, in proportion.
+TEST(Step06FoamPattern, StreaksFromBeaufortSevenOutlastTheWhitecaps) {
+    EXPECT_EQ(step06::foam_streak_share(10.0), 0.0);
+    EXPECT_EQ(step06::foam_streak_share(13.9), 0.0);
+    EXPECT_GT(step06::foam_streak_share(17.2), 0.3);
+    EXPECT_EQ(step06::foam_streak_share(20.8), 1.0);
+    EXPECT_EQ(step06::foam_streak_share(30.0), 1.0);
+    const step06::FoamSettings s;
+    EXPECT_EQ(step06::residual_foam_step(0.0, 0.2, 0.1, s, 0.0), 0.0) << "no residual foam below force 7";
+    // One second of breaking (J = 0.2), then 5 s of calm: the whitecap is gone, the residual is not.
+    double whitecap = 0, residual = 0;
+    for (int i = 0; i < 10; ++i) {
+        whitecap = step06::foam_step(whitecap, 0.2, 0.1, s);
+        residual = step06::residual_foam_step(residual, 0.2, 0.1, s, 1.0);
+    }
+    const double residual_peak = residual;
+    for (int i = 0; i < 50; ++i) {
+        whitecap = step06::foam_step(whitecap, 1.0, 0.1, s);
+        residual = step06::residual_foam_step(residual, 1.0, 0.1, s, 1.0);
+    }
+    EXPECT_LT(whitecap, 0.05);
+    EXPECT_NEAR(residual, residual_peak * std::exp(-5 * s.streak_decay), 1e-12);
+    EXPECT_EQ(step06::streak_cover(1.0, 0.2), 0.0);  // between the lines: nothing
+    EXPECT_EQ(step06::streak_cover(0.6, 1.0), 0.6);  // on a line: the residual amount
+    EXPECT_EQ(step06::streak_cover(0.0, 1.0), 0.0);
 }
 
 // A storm looks higher than a breeze because it is: each shipped preset, loaded as the program

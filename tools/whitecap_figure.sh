@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# whitecap_figure.sh BUILD_DIR OUT_DIR: docs/figures/whitecaps.png, step06's whitecap coverage
+# against the wind as a camera records it (step06_foam_sky/tests/whitecaps.sh's pictures from
+# 150 m, read by tests/picture_check) and on the foam map (foam > 0.3, tests/physics_check), beside
+# Monahan and O'Muircheartaigh's and Callaghan et al.'s laws. About two minutes on llvmpipe.
+set -eu
+build=$(cd "$1" && pwd) out=$2
+root=$(cd "$(dirname "$0")/.." && pwd)
+work="$build/figures/whitecaps"
+mkdir -p "$work" "$out"
+winds="4 6 8 10 12 14 16 18 20 22 24"
+bash "$root/step06_foam_sky/tests/whitecaps.sh" "$build/step06_foam_sky/step06_foam_sky" "$build/tests/picture_check" \
+  "$work" $winds > "$work/picture.txt" || true  # the laws' limits do not hold at every wind: the figure shows them all
+echo "# U10  picture %  foam map %" > "$work/whitecaps.dat"
+for wind in $winds; do
+  picture=$(sed -n "s|.*150m_wind_$wind: U = *[0-9.]* m/s, whitecaps cover *\([0-9.]*\) %.*|\1|p" "$work/picture.txt")
+  map=$("$build/tests/physics_check" whitecaps "$work/150m_wind_$wind" | sed -n 's|.*whitecaps *\([0-9.]*\) % of the sea.*|\1|p' || true)
+  echo "$wind ${picture:-nan} ${map:-nan}" >> "$work/whitecaps.dat"
+done
+cat > "$work/whitecaps.gp" <<'GP'
+set terminal pngcairo size 900,560 font "DejaVu Sans,11"
+set output 'whitecaps.png'
+set title "Whitecaps: what step06's pictures show, against what photographs at sea count"
+set xlabel "wind speed at 10 m (m/s)"
+set ylabel "whitecap coverage (% of the sea)"
+set logscale y
+set yrange [0.01:40]
+set xrange [3:25]
+set key bottom right
+monahan(u) = 100 * 3.84e-6 * u**3.41
+callaghan(u) = u <= 3.7 ? 1/0 : (u <= 11.25 ? 100 * 3.18e-5 * (u - 3.7)**3 : 100 * 4.82e-6 * (u + 1.98)**3)
+set samples 200
+plot monahan(x) with lines lw 3 lc rgb '#888888' title "Monahan and O'Muircheartaigh (1980)", \
+     callaghan(x) with lines lw 3 lc rgb '#d9822b' dt 2 title "Callaghan et al. (2008)", \
+     'whitecaps.dat' using 1:($2 > 0 ? $2 : 1/0) with linespoints lw 2 pt 7 lc rgb 'black' title "step06, the picture from 150 m (white: more than halfway to full foam)", \
+     '' using 1:($3 > 0 ? $3 : 1/0) with points pt 6 ps 1.5 lc rgb '#1f5fa8' title "step06, the foam map (amount > 0.3)"
+GP
+(cd "$work" && gnuplot whitecaps.gp)
+cp "$work/whitecaps.png" "$out/whitecaps.png"
+echo "whitecap_figure: $out/whitecaps.png"
