@@ -92,8 +92,8 @@ void App::draw_fullscreen_triangle() const {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void App::use_camera(const CameraView& view) {
-    camera_.declare_params(params_, view);
+void App::use_camera(const CameraView& view, double reach) {
+    camera_.declare_params(params_, view, reach);
     camera_enabled_ = true;
 }
 

@@ -116,7 +116,7 @@ protected:
     // The same, for a chapter's technique classes (OceanSimulation, Sky, ...).
     ProgramFactory program_factory() { return programs_.factory(); }
     // Declares the camera_* parameters and turns on mouse/keyboard camera control.
-    void use_camera(const CameraView& view);
+    void use_camera(const CameraView& view, double reach = kNearReach);
     Camera& camera() { return camera_; }
     GpuTimers& timers() { return timers_; }
 

@@ -9,10 +9,10 @@
 
 namespace ocean {
 
-void Camera::declare_params(ParamRegistry& params, const CameraView& view) {
+void Camera::declare_params(ParamRegistry& params, const CameraView& view, double reach) {
     // The view is the default; the parameters are bound to the camera the steps draw from.
     mode = Orbit;
-    target = view.target;
+    target = glm::dvec3(view.target);
     distance = view.distance;
     yaw_deg = view.yaw_deg;
     pitch_deg = view.pitch_deg;
@@ -21,9 +21,9 @@ void Camera::declare_params(ParamRegistry& params, const CameraView& view) {
     params.add_float("camera_yaw", &yaw_deg, -360, 360, "heading of the view, degrees (0 looks along -z)");
     params.add_float("camera_pitch", &pitch_deg, -89, 89, "how far the view looks down, degrees");
     params.add_float("camera_distance", &distance, 0.5f, 1000, "eye-to-target distance, metres").logarithmic();
-    params.add_float("camera_target_x", &target.x, -10000, 10000, "point looked at, x (metres)");
+    params.add_double("camera_target_x", &target.x, -reach, reach, "point looked at, x (metres)");
     params.add_float("camera_target_y", &target.y, -1000, 1000, "point looked at, y (metres, up)");
-    params.add_float("camera_target_z", &target.z, -10000, 10000, "point looked at, z (metres)");
+    params.add_double("camera_target_z", &target.z, -reach, reach, "point looked at, z (metres)");
     params.add_float("camera_fov", &fov_deg, 10, 120, "vertical field of view, degrees");
 }
 
@@ -32,9 +32,15 @@ glm::vec3 Camera::forward() const {
     return {std::cos(pitch) * std::sin(yaw), -std::sin(pitch), -std::cos(pitch) * std::cos(yaw)};
 }
 
-glm::vec3 Camera::eye() const { return target - forward() * distance; }
+glm::dvec3 Camera::eye_world() const { return target - glm::dvec3(forward()) * double(distance); }
 
-glm::mat4 Camera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
+glm::vec3 Camera::eye() const { return glm::vec3(eye_world()); }
+
+glm::mat4 Camera::view() const { return view(glm::dvec3(0.0)); }
+
+glm::mat4 Camera::view(const glm::dvec3& origin) const {
+    return glm::mat4(glm::lookAt(eye_world() - origin, target - origin, glm::dvec3(0, 1, 0)));
+}
 
 glm::mat4 Camera::projection(float aspect) const {
     return glm::perspective(glm::radians(fov_deg), std::max(aspect, 1e-3f), near_plane, far_plane);
@@ -42,16 +48,17 @@ glm::mat4 Camera::projection(float aspect) const {
 
 void Camera::apply(const CameraInput& input, float dt) {
     const float degrees_per_pixel = 0.25f;
-    const glm::vec3 eye_before = eye();
+    const glm::dvec3 eye_before = eye_world();
     yaw_deg = std::fmod(yaw_deg + input.drag.x * degrees_per_pixel, 360.0f);
     pitch_deg = std::clamp(pitch_deg + input.drag.y * degrees_per_pixel, -89.0f, 89.0f);
     if (mode == Fly) {
-        // Turning in fly mode keeps the eye where it is: move the target around it instead.
-        target = eye_before + forward() * distance;
+        // Turning in fly mode keeps the eye where it is: move the target around it instead (in
+        // double: 1000 km out, a float step of 8 m/s at 60 frames a second would round away).
+        target = eye_before + glm::dvec3(forward()) * double(distance);
         const glm::vec3 f = forward();
         const glm::vec3 right = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0)));
         const float speed = (input.fast ? 40.0f : 8.0f) * dt;
-        target += (right * input.move.x + glm::vec3(0, 1, 0) * input.move.y + f * input.move.z) * speed;
+        target += glm::dvec3((right * input.move.x + glm::vec3(0, 1, 0) * input.move.y + f * input.move.z) * speed);
     } else {
         distance = std::clamp(distance * std::pow(0.9f, input.scroll), 0.5f, 1000.0f);
     }

@@ -31,21 +31,30 @@ struct CameraView {
     float distance, yaw_deg, pitch_deg;
 };
 
+// How far from the origin the camera may go, metres: a tile of sea around the origin, or an ocean
+// crossed (a step that renders relative to the camera, as step06 does, can take 1000 km and more).
+constexpr double kNearReach = 1e4, kOceanReach = 2e6;
+
 class Camera {
 public:
     enum Mode { Orbit = 0, Fly = 1 };
 
-    // Declares camera_* parameters; the step chooses the defaults of its view.
-    void declare_params(ParamRegistry& params, const CameraView& view);
+    // Declares camera_* parameters; the step chooses the defaults of its view, and how far it
+    // may go (camera_target_x and _z within +-reach).
+    void declare_params(ParamRegistry& params, const CameraView& view, double reach = kNearReach);
 
     void apply(const CameraInput& input, float dt);
-    glm::vec3 eye() const;
+    glm::vec3 eye() const;        // in float: enough within kNearReach
+    glm::dvec3 eye_world() const; // in double: anywhere
     glm::vec3 forward() const;  // unit vector from the eye to the target
     glm::mat4 view() const;
+    // The view with `origin` as the world's zero (camera-relative rendering): built in double, so
+    // far from the origin the matrix keeps the precision that world coordinates in float lose.
+    glm::mat4 view(const glm::dvec3& origin) const;
     glm::mat4 projection(float aspect) const;
 
     int mode = Orbit;
-    glm::vec3 target{0.0f};
+    glm::dvec3 target{0.0};  // double: 1000 km out, float's steps are 6 cm
     float distance = 10, yaw_deg = 0, pitch_deg = 20, fov_deg = 50;
     float near_plane = 0.1f, far_plane = 2000.0f;
 };

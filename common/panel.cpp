@@ -19,6 +19,12 @@ bool param_widget(Param& p) {
         // The widgets edit a copy; set_number clamps it to the registry's range (typed values,
         // ctrl-click, can leave a slider's) and tells the parameter's generations.
         case ParamType::Float: {
+            if (p.is_double_precision()) {  // a coordinate: typed to the millimetre, not dragged in float steps
+                double value = p.number();
+                changed = ImGui::InputDouble(label, &value, 1.0, 1000.0, "%.3f");
+                if (changed) p.set_number(value);
+                break;
+            }
             float value = float(p.number());
             changed = ImGui::SliderFloat(label, &value, float(p.min()), float(p.max()), "%.3g",
                                          p.is_logarithmic() ? ImGuiSliderFlags_Logarithmic : 0);

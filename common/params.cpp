@@ -67,7 +67,7 @@ std::string Param::range_text() const {
 
 std::string Param::format(const ParamValue& v) const {
     switch (type_) {
-        case ParamType::Float: return format_number(v.number);
+        case ParamType::Float: return double_precision_ ? format_double(v.number) : format_number(v.number);
         case ParamType::Int: return std::to_string(static_cast<long long>(v.number));
         case ParamType::Bool: return v.number != 0 ? "true" : "false";
         case ParamType::Choice: return choices_.at(static_cast<std::size_t>(v.number));
@@ -224,6 +224,13 @@ Param& ParamRegistry::add_float(const std::string& name, float* value, float min
 Param& ParamRegistry::add_float(const std::string& name, double* value, double min, double max,
                                 const std::string& help) {
     return bind(name, ParamType::Float, value, min, max, help);
+}
+Param& ParamRegistry::add_double(const std::string& name, double* value, double min, double max,
+                                 const std::string& help) {
+    Param& p = add_number(name, ParamType::Float, [value] { return *value; }, [value](double v) { *value = v; }, min,
+                          max, help);
+    p.double_precision_ = true;
+    return p;
 }
 Param& ParamRegistry::add_int(const std::string& name, int* value, int min, int max, const std::string& help) {
     return bind(name, ParamType::Int, value, min, max, help);

@@ -74,6 +74,7 @@ public:
     glm::vec3* color_value() const { return color_; }
     std::string* text_value() const { return text_; }
     void bump_generations() const;  // a change made behind the registry's back (a colour widget)
+    bool is_double_precision() const { return double_precision_; }
     double min() const { return min_; }
     double max() const { return max_; }
     const std::vector<std::string>& choices() const { return choices_; }
@@ -94,6 +95,7 @@ private:
     std::vector<std::string> choices_;
     std::function<bool()> visible_;
     bool logarithmic_ = false;
+    bool double_precision_ = false;  // add_double: formatted to every digit of the double
     std::vector<Generation*> generations_;
 };
 
@@ -104,6 +106,10 @@ public:
     // Names are snake_case, unique.
     Param& add_float(const std::string& name, float* value, float min, float max, const std::string& help);
     Param& add_float(const std::string& name, double* value, double min, double max, const std::string& help);
+    // A number kept to double precision, written and read back to all its digits (a coordinate far
+    // from the origin: float's steps 1000 km out are 6 cm). add_float's doubles are rounded to
+    // float, so that what the panel and presets show is what is used.
+    Param& add_double(const std::string& name, double* value, double min, double max, const std::string& help);
     Param& add_int(const std::string& name, int* value, int min, int max, const std::string& help);
     Param& add_int(const std::string& name, std::uint64_t* value, int min, int max, const std::string& help);
     Param& add_bool(const std::string& name, bool* value, const std::string& help);

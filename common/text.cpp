@@ -57,6 +57,15 @@ std::string format_number(double value) {
     return buffer;
 }
 
+std::string format_double(double value) {
+    char buffer[64];
+    for (int digits = 6; digits <= 17; ++digits) {
+        std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+        if (std::strtod(buffer, nullptr) == value) break;
+    }
+    return buffer;
+}
+
 std::optional<std::string> read_text_file(const std::string& path, std::string* text, std::size_t max_bytes) {
     struct stat info {};
     if (stat(path.c_str(), &info) != 0) return "'" + path + "': " + std::strerror(errno);

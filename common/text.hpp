@@ -17,6 +17,8 @@ std::string ellipsize(const std::string& text, std::size_t max_chars);
 // Shortest decimal form (at least 6 digits) that reads back as the same float: parameters are
 // floats, so 0.1f prints as "0.1", not "0.100000001".
 std::string format_number(double value);
+// The shortest text that reads back as the same double (format_number's reads back as the same float).
+std::string format_double(double value);
 // Reads a whole file; on failure returns "'path': reason".
 // Reads a whole regular file of at most max_bytes. Anything else is refused with a message, not
 // read: a FIFO or a device (/dev/urandom) would block or never end.

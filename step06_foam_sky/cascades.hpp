@@ -11,6 +11,9 @@
 #include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
 
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+
 #include <array>
 #include <vector>
 
@@ -81,15 +84,36 @@ inline std::array<step05::SpectrumParams, kCascades> cascade_spectra(const step0
     return out;
 }
 
+// The shaders' positions are relative to a world origin near the camera (x, z), so that they stay
+// small wherever the camera is: 1000 km out, float's steps are 6 cm, and a tile's phase p / L in
+// float is off by as much. The origin moves in steps of kOriginStep metres, a multiple of every
+// foam window's side (foam.hpp), so the foam's addressing does not change when it moves.
+constexpr double kOriginStep = 4096;
+inline glm::dvec2 world_origin_near(glm::dvec2 eye_xz) { return glm::round(eye_xz / kOriginStep) * kOriginStep; }
+
 // What every pass that reads the summed surface (the renderer, foam.comp, --export) needs of the
-// cascades besides their maps: each tile's side and which cascades are drawn (cascades.glsl).
+// cascades besides their maps: each tile's side, which cascades are drawn, and where the world's
+// origin is (cascades.glsl).
 struct CascadeView {
     std::array<float, kCascades> patch_sizes{};
     std::array<bool, kCascades> enabled{true, true, true, true};
+    glm::dvec2 origin{0.0};  // metres (x, z): the shaders' positions are relative to it
 
-    // u_patch_sizes and u_cascade_enabled of `program`.
+    // Each tile's phase at the origin, fract(origin / L): reduced here in double, so the shaders add
+    // it to p / L of a small p.
+    std::vector<glm::vec2> tile_phases() const {
+        std::vector<glm::vec2> phases;
+        for (float size : patch_sizes) {
+            const glm::dvec2 tiles = origin / double(size);
+            phases.emplace_back(glm::vec2(tiles - glm::floor(tiles)));
+        }
+        return phases;
+    }
+
+    // u_patch_sizes, u_tile_phases and u_cascade_enabled of `program`.
     void upload(const ocean::ShaderProgram& program) const {
         program.set("u_patch_sizes", std::vector<float>(patch_sizes.begin(), patch_sizes.end()));
+        program.set("u_tile_phases", tile_phases());
         for (int c = 0; c < kCascades; ++c)
             program.set("u_cascade_enabled[" + std::to_string(c) + "]", int(enabled[std::size_t(c)]));
     }

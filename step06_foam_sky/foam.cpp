@@ -48,11 +48,16 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     if (p == nullptr) throw ocean::Error("foam.comp does not build");
     const bool first = std::exchange(warm_start_, false);
     const bool placed = windows_[0].n == n_;  // false before the first update: nothing to move from
+    origin_ = cascades.origin;
     for (int level = 0; level < kFoamLevels; ++level) {
         const FoamWindow now = foam_window(level, n_, foam_window_centre(level, eye_xz, forward_xz));
+        const FoamWindow& before = placed ? windows_[std::size_t(level)] : now;
+        // The shader's cells count from the world origin (a whole number of windows away: the
+        // toroidal addressing is the same from either).
+        const glm::ivec2 origin_cell = now.cell_of(origin_);
         const std::string index = "[" + std::to_string(level) + "]";
-        p->set("u_origin" + index, now.origin);
-        p->set("u_previous_origin" + index, placed ? windows_[std::size_t(level)].origin : now.origin);
+        p->set("u_origin" + index, now.origin - origin_cell);
+        p->set("u_previous_origin" + index, before.origin - origin_cell);
         p->set("u_texel_size" + index, float(now.texel_size));
         windows_[std::size_t(level)] = now;
     }
@@ -110,7 +115,7 @@ void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {
     std::vector<glm::vec2> centres;
     std::vector<float> extents;
     for (const FoamWindow& w : windows_) {
-        centres.emplace_back(w.centre());
+        centres.emplace_back(w.centre() - origin_);  // relative to the world origin, as the shaders' positions are
         extents.push_back(float(w.texel_size * w.n));
     }
     program.set("u_foam", unit);

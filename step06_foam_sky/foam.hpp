@@ -92,6 +92,8 @@ struct FoamWindow {
     int n = 0;
     glm::dvec2 centre() const { return (glm::dvec2(origin) + 0.5 * n) * texel_size; }
     glm::dvec2 cell_centre(int i, int j) const { return (glm::dvec2(origin + glm::ivec2(i, j)) + 0.5) * texel_size; }
+    // The cell whose corner is `world_origin` (a multiple of kOriginStep: a whole number of cells).
+    glm::ivec2 cell_of(glm::dvec2 world_origin) const { return glm::ivec2(glm::round(world_origin / texel_size)); }
 };
 // The window of `level` around `centre` (x, z): it moves in whole texels.
 FoamWindow foam_window(int level, int n, glm::dvec2 centre);
@@ -137,6 +139,7 @@ private:
     bool warm_start_ = true;
     glm::vec2 streak_along_{1.0f, 0.0f}, streak_across_{0.0f, 1.0f};
     double streak_share_ = 0;
+    glm::dvec2 origin_{0.0};  // the world origin of the last update (CascadeView::origin)
     std::array<FoamWindow, kFoamLevels> windows_{};
 };
 

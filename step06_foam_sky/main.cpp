@@ -84,7 +84,8 @@ private:
                      "split view: the effect shown on the left and left out on the right");
         p.add_int("debug_cascade", &debug_cascade_, 0, step06::kCascades - 1, "view=cascade_map: which cascade");
         p.add_choice("debug_map", &debug_map_, step05::map_view_names(), "view=cascade_map: which map");
-        use_camera(ocean::camera_view("low"));  // 5 m above the water, level with the crests
+        // 5 m above the water, level with the crests; anywhere on an ocean (camera-relative rendering).
+        use_camera(ocean::camera_view("low"), ocean::kOceanReach);
         offer_bench_figures([this] {
             const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 5);  // all 4 cascades' maps
             for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
@@ -136,6 +137,8 @@ private:
             describe_cascades();
         }
         cascade_view_ = cascade_view();  // once a frame: the passes below and render() read it
+        const glm::dvec3 eye = camera().eye_world();
+        cascade_view_.origin = step06::world_origin_near({eye.x, eye.z});
         if (sky_image_loaded_for_ != look_.sky_image_changes.value) {
             sky_image_loaded_for_ = look_.sky_image_changes.value;
             if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
@@ -162,7 +165,8 @@ private:
 
     void update_foam(double dt) {
         ocean::GpuScope timed(timers(), "foam");
-        const glm::vec3 eye = camera().eye(), forward = camera().forward();
+        const glm::dvec3 eye = camera().eye_world();
+        const glm::vec3 forward = camera().forward();
         foam_->set_wind(ocean_params_.spectrum.wind_direction, ocean_params_.spectrum.wind_speed);
         foam_->update(*gpu_, cascade_view_, {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
     }
@@ -202,7 +206,9 @@ private:
     }
 
     void draw_sea() {
-        const glm::mat4 view_projection = camera().projection(aspect()) * camera().view();
+        // Camera-relative: the view, the mesh and the shading work in metres from the world origin
+        // near the camera (cascades.hpp), so their float positions stay small anywhere on the ocean.
+        const glm::mat4 view_projection = camera().projection(aspect()) * camera().view(world_origin());
         {
             ocean::GpuScope timed(timers(), "ocean");
             if (wireframe_) {
@@ -261,10 +267,13 @@ private:
         if (mesh == nullptr) return;
         cascade_view_.upload(*mesh);
         gpu_->bind_maps(*mesh);
-        const glm::vec3 eye = camera().eye();
+        // The grid follows the camera in whole patches of the world (in double), then is placed
+        // from the world origin.
+        const glm::dvec3 eye = camera().eye_world();
+        const glm::dvec2 grid_offset = glm::floor(glm::dvec2(eye.x, eye.z) / double(tess_patch_size_)) * double(tess_patch_size_);
         mesh->set("u_view_projection", view_projection);
-        mesh->set("u_eye", eye);
-        mesh->set("u_grid_offset", glm::floor(glm::vec2(eye.x, eye.z) / tess_patch_size_) * tess_patch_size_);
+        mesh->set("u_eye", eye_from_origin());
+        mesh->set("u_grid_offset", glm::vec2(grid_offset - cascade_view_.origin));
         mesh->set("u_tess_patch_size", tess_patch_size_);
         mesh->set("u_tess_scale", tess_scale_);
         mesh->set("u_frustum", ocean::frustum_planes(view_projection));
@@ -280,6 +289,10 @@ private:
         glDisable(GL_DEPTH_TEST);
     }
 
+    // The world origin of this frame (cascades.hpp), and the eye from it: what the shaders' positions are.
+    glm::dvec3 world_origin() const { return {cascade_view_.origin.x, 0.0, cascade_view_.origin.y}; }
+    glm::vec3 eye_from_origin() { return glm::vec3(camera().eye_world() - world_origin()); }
+
     // ocean_shade.frag over the whole screen, run only where the mesh wrote depth.
     void shade_sea() {
         const int debug = view_ >= 1 && view_ <= 4 ? view_ : 0;
@@ -294,7 +307,7 @@ private:
                    glm::vec2(float(short_wave_slope_variance_.upwind), float(short_wave_slope_variance_.crosswind)));
         const double wind = ocean_params_.spectrum.wind_direction * step05::kPi / 180;
         shade->set("u_wind_heading", glm::vec2(float(std::cos(wind)), float(std::sin(wind))));
-        shade->set("u_eye", camera().eye());
+        shade->set("u_eye", eye_from_origin());
         shade->set("u_sky_max_lod", sky_->max_lod());
         glBindTextureUnit(UNIT_GBUFFER_WORLD, gbuffer_.world_texture());
         glBindTextureUnit(UNIT_GBUFFER_REST, gbuffer_.rest_texture());

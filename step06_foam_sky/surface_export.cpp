@@ -18,7 +18,7 @@ void export_surface(const std::string& dir, ocean::ProgramFactory& programs, con
     glTextureStorage2D(slopes.id(), 1, GL_RGBA32F, n, n);
     cascades.upload(*p);
     p->set("u_n", n);
-    p->set("u_origin", window.origin);
+    p->set("u_origin", window.origin - window.cell_of(cascades.origin));  // the shader's positions are from the world origin
     p->set("u_texel_size", float(window.texel_size));
     ocean.bind_maps(*p);
     glBindImageTexture(0, displacement.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);

@@ -4,10 +4,13 @@
 
 const int CASCADES = 4;
 uniform float u_patch_sizes[CASCADES];  // metres
+uniform vec2 u_tile_phases[CASCADES];   // each tile's phase at the world origin (cascades.hpp)
 uniform bool u_cascade_enabled[CASCADES];
 
-// Rest position p in cascade c's layer (map_uv: with the half-texel offset).
-vec3 cascade_uv(vec2 p, int c) { return vec3(map_uv(p, u_patch_sizes[c]), float(c)); }
+// Rest position p (metres from the world origin near the camera, CascadeView) in cascade c's layer
+// (map_uv: with the half-texel offset). The tile's phase at the origin was reduced on the CPU in
+// double: p / L stays small and keeps float's precision however far the camera goes.
+vec3 cascade_uv(vec2 p, int c) { return vec3(map_uv(p, u_patch_sizes[c]) + u_tile_phases[c], float(c)); }
 
 // (l Dx, h, l Dz, l dDx/dz) summed over the cascades, at mip level `lod` (any stage).
 vec4 total_displacement(vec2 p, float lod) {

@@ -13,7 +13,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(rg32f, binding = 0) uniform image2DArray u_foam_image;  // (whitecap foam, residual foam)
 
 uniform int u_n;                                // texels per side of a level (a power of two)
-uniform ivec2 u_origin[FOAM_LEVELS];            // the window's first cell, in texels of its level
+uniform ivec2 u_origin[FOAM_LEVELS];            // the window's first cell, in texels of its level, from the world origin
 uniform ivec2 u_previous_origin[FOAM_LEVELS];   // the same, last frame
 uniform float u_texel_size[FOAM_LEVELS];        // metres
 uniform float u_dt;

@@ -9,7 +9,7 @@ layout(rgba32f, binding = 0) writeonly uniform image2D u_displacement_out;  // (
 layout(rgba32f, binding = 1) writeonly uniform image2D u_slopes_out;        // (dh/dx, dh/dz, l dDx/dx, l dDz/dz)
 
 uniform int u_n;
-uniform ivec2 u_origin;     // the window's first cell
+uniform ivec2 u_origin;     // the window's first cell, counted from the world origin (CascadeView)
 uniform float u_texel_size; // metres
 
 void main() {
