@@ -234,6 +234,22 @@ TEST(ParamRegistry, DuplicateNamesAreAProgrammingError) {
 
 namespace {
 
+// 1000 km out a float's steps are 6 cm: a camera there is kept, written and read back to every digit
+// of its double, and only a step that renders relative to the camera may go that far.
+TEST(CameraReach, AFarCameraKeepsItsCentimetres) {
+    ocean::ParamRegistry params;
+    ocean::Camera camera;
+    camera.declare_params(params, {{0, 0, 0}, 10, 0, 20}, ocean::kOceanReach);
+    ASSERT_FALSE(params.set("camera_target_x", "1000123.41"));
+    EXPECT_EQ(camera.target.x, 1000123.41);  // as a float it would be 1000123.375
+    EXPECT_EQ(params.find("camera_target_x")->value_text(), "1000123.41");
+    EXPECT_NEAR(camera.eye_world().x - camera.target.x, -camera.forward().x * 10, 1e-6);
+    ocean::ParamRegistry near_params;
+    ocean::Camera near_camera;
+    near_camera.declare_params(near_params, {{0, 0, 0}, 10, 0, 20});
+    EXPECT_TRUE(near_params.set("camera_target_x", "1000123.41")) << "beyond 10 km without camera-relative rendering";
+}
+
 TEST(CameraPresets, SetTheCameraParametersOrSayWhatExists) {
     ocean::ParamRegistry params;
     ocean::Camera camera;
