@@ -57,7 +57,7 @@ std::vector<Exercise> chapter() {
          "D and Lambda, not alpha alone.",
          [](const fs::path& work) {
              return check_glsl(work, "shading.glsl",
-                               "specular_term(n, v, l, Roughness(alpha, 0.5 * alpha, vec2(0.6, 0.8)), 0.02, vec3(1.0)).x",
+                               "specular_term(n, v, l, wind_roughness(n, alpha, 0.5 * alpha, vec2(0.6, 0.8)), 0.02, vec3(1.0)).x",
                                [](const Vec3& n, const Vec3& v, const Vec3& l, double alpha) {
                                    return step06::specular_factor(n, v, l, {alpha, 0.5 * alpha, 0.6, 0.8}, 0.02,
                                                                   Microfacet::Ggx);

@@ -1,5 +1,6 @@
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
+#include "step06_foam_sky/texture_units.h"
 
 #include "common/error.hpp"
 
@@ -29,16 +30,22 @@ void FoamSimulation::resize(int n) {
     if (n == n_ && texture_) return;
     n_ = n;
     texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(texture_.id(), 1 + int(std::log2(double(n))), GL_RG32F, n, n, kFoamLevels);
+    glTextureStorage3D(texture_.id(), 1 + int(std::log2(double(n))), GL_R32F, n, n, kFoamLevels);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the toroidal addressing
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    residual_ = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(residual_.id(), 1 + int(std::log2(double(n))), GL_R32F, n, n);
+    glTextureParameteri(residual_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(residual_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(residual_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
     fill(0);
     warm_start_ = true;
 }
 
 void FoamSimulation::fill(float value) {
     glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &value);
+    glClearTexImage(residual_.id(), 0, GL_RED, GL_FLOAT, &value);
     warm_start_ = false;
 }
 
@@ -71,12 +78,14 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     p->set("u_n", n_);
     p->set("u_warm_start", int(first));
     ocean.bind_maps(*p);
-    glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32F);
+    glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32F);
+    glBindImageTexture(1, residual_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
     glUseProgram(p->id());
     const GLuint groups = GLuint((n_ + 7) / 8);
     glDispatchCompute(groups, groups, GLuint(kFoamLevels));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     glGenerateTextureMipmap(texture_.id());  // distant foam averages instead of sparkling
+    glGenerateTextureMipmap(residual_.id());
 }
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {
@@ -100,6 +109,7 @@ void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit)
     program.set("u_foam_pattern_size", kPatternSize);
     program.set("u_streak_along", streak_along_);
     program.set("u_streak_across", streak_across_);
+    program.set("u_streaks", int(streak_share_ > 0));
     glBindTextureUnit(GLuint(unit), pattern_.id());
 }
 
@@ -122,12 +132,24 @@ void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {
     program.set("u_foam_centre", centres);
     program.set("u_foam_extent", extents);
     glBindTextureUnit(GLuint(unit), texture_.id());
+    glBindTextureUnit(UNIT_FOAM_RESIDUAL, residual_.id());
 }
 
-std::vector<float> FoamSimulation::read_level(int level, bool residual) const {
-    std::vector<float> stored(std::size_t(n_) * n_), world(stored.size());
-    glGetTextureSubImage(texture_.id(), 0, 0, 0, level, n_, n_, 1, residual ? GL_GREEN : GL_RED, GL_FLOAT,
+std::vector<float> FoamSimulation::read_residual() const {
+    std::vector<float> stored(std::size_t(n_) * n_);
+    glGetTextureImage(residual_.id(), 0, GL_RED, GL_FLOAT, GLsizei(stored.size() * sizeof(float)), stored.data());
+    return in_world_order(stored, kResidualFoamLevel);
+}
+
+std::vector<float> FoamSimulation::read_level(int level) const {
+    std::vector<float> stored(std::size_t(n_) * n_);
+    glGetTextureSubImage(texture_.id(), 0, 0, 0, level, n_, n_, 1, GL_RED, GL_FLOAT,
                          GLsizei(stored.size() * sizeof(float)), stored.data());
+    return in_world_order(stored, level);
+}
+
+std::vector<float> FoamSimulation::in_world_order(const std::vector<float>& stored, int level) const {
+    std::vector<float> world(stored.size());
     const glm::ivec2 origin = windows_[std::size_t(level)].origin;
     for (int j = 0; j < n_; ++j)
         for (int i = 0; i < n_; ++i) {

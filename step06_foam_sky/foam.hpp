@@ -82,6 +82,10 @@ inline double residual_foam_step(double residual, double jacobian, double dt, co
 constexpr int kFoamLevels = 3;  // FOAM_LEVELS in the shaders
 constexpr double kFoamExtent0 = 64;
 constexpr double kFoamLevelRatio = 4;
+// The residual foam of the streaks is kept on one level only, the 256 m window: its lines are
+// a few tens of centimetres wide, under a pixel beyond about 100 m, and the rest of the sea
+// does not pay for reading it.
+constexpr int kResidualFoamLevel = 1;
 inline double foam_extent(int level) { return kFoamExtent0 * std::pow(kFoamLevelRatio, level); }
 
 // Where a level's window lies: its first cell (in texels of the level) and the texel size. Cell
@@ -127,13 +131,18 @@ public:
     const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
     GLuint texture() const { return texture_.id(); }
     int resolution() const { return n_; }
-    // Level `level` in the world's order: row j is z cell origin.z + j, column i x cell origin.x + i;
-    // `residual` picks the residual foam instead of the whitecaps'.
-    std::vector<float> read_level(int level, bool residual = false) const;
+    // Level `level` in the world's order: row j is z cell origin.z + j, column i x cell origin.x + i.
+    std::vector<float> read_level(int level) const;
+    // The residual foam (kResidualFoamLevel's window), in the same order.
+    std::vector<float> read_residual() const;
 
 private:
+    // A level's texels (toroidal) in the world's order.
+    std::vector<float> in_world_order(const std::vector<float>& stored, int level) const;
+
     ocean::ProgramFactory programs_;
     ocean::Texture texture_;
+    ocean::Texture residual_;  // r32f, kResidualFoamLevel's window, mipmapped
     ocean::Texture pattern_;
     int n_ = 0;
     bool warm_start_ = true;

@@ -48,7 +48,7 @@ inline double foam_cover(double amount, double pattern) {
 // residual foam beside the whitecaps, fed by the same breaking: kResidualFraction of the whitecaps'
 // injection times foam_streak_share(U), 0 below force 7, 1 from force 9.
 constexpr double kStreaksFrom = 13.9, kDenseStreaksFrom = 20.8;  // m/s
-constexpr double kResidualFraction = 0.35;  // of the whitecaps' injection, at foam_streak_share 1
+constexpr double kResidualFraction = 0.6;  // of the whitecaps' injection, at foam_streak_share 1
 inline double foam_streak_share(double wind_speed) {
     return std::clamp((wind_speed - kStreaksFrom) / (kDenseStreaksFrom - kStreaksFrom), 0.0, 1.0);
 }

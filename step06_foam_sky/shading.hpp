@@ -69,30 +69,31 @@ struct Roughness {
 
 inline Roughness isotropic(double alpha) { return {alpha, alpha}; }
 
-// (cos, sin) of direction w's azimuth around n, from the wind projected on n's tangent plane.
-inline std::pair<double, double> azimuth_from_wind(const Vec3& n, const Vec3& w, const Roughness& r) {
+// w's components along the wind and across it on n's tangent plane (equal-length axes: only
+// their ratio, w's azimuth, is used).
+inline std::pair<double, double> wind_components(const Vec3& n, const Vec3& w, const Roughness& r) {
     const double wind_n = n.x * r.wind_x + n.z * r.wind_z;
-    Vec3 along{r.wind_x - n.x * wind_n, -n.y * wind_n, r.wind_z - n.z * wind_n};
-    const double length_along = std::sqrt(step03::dot(along, along));
-    if (length_along < 1e-7) return {1.0, 0.0};
-    along = {along.x / length_along, along.y / length_along, along.z / length_along};
-    const Vec3 across = step03::cross(n, along);
-    const double c = step03::dot(w, along), s = step03::dot(w, across), length_cs = std::hypot(c, s);
-    return length_cs > 1e-7 ? std::pair{c / length_cs, s / length_cs} : std::pair{1.0, 0.0};
+    const Vec3 along{r.wind_x - n.x * wind_n, -n.y * wind_n, r.wind_z - n.z * wind_n};
+    return {step03::dot(w, along), step03::dot(w, step03::cross(n, along))};
 }
 
 // D for slopes spread as an ellipse: the isotropic D at h's azimuth's alpha (1/alpha^2 =
 // cos^2/along^2 + sin^2/across^2), times alpha^2 / (along across).
 inline double anisotropic_distribution(const Vec3& n, const Vec3& h, const Roughness& r, Microfacet m) {
-    const auto [c, s] = azimuth_from_wind(n, h, r);
-    const double alpha = 1.0 / std::sqrt(c * c / (r.along * r.along) + s * s / (r.across * r.across));
-    return microfacet_distribution(std::max(step03::dot(n, h), 0.0), alpha, m) * alpha * alpha / (r.along * r.across);
+    const auto [c, s] = wind_components(n, h, r);
+    const double length2 = c * c + s * s;
+    const double alpha2 = length2 > 1e-12 ? length2 / (c * c / (r.along * r.along) + s * s / (r.across * r.across))
+                                          : r.along * r.along;
+    return microfacet_distribution(std::max(step03::dot(n, h), 0.0), std::sqrt(alpha2), m) * alpha2 / (r.along * r.across);
 }
 
 // Smith's Lambda for direction w: the slopes projected on its azimuth, alpha^2 = cos^2 along^2 + sin^2 across^2.
 inline double anisotropic_lambda(const Vec3& n, const Vec3& w, const Roughness& r, Microfacet m) {
-    const auto [c, s] = azimuth_from_wind(n, w, r);
-    return smith_lambda(step03::dot(n, w), std::sqrt(c * c * r.along * r.along + s * s * r.across * r.across), m);
+    const auto [c, s] = wind_components(n, w, r);
+    const double length2 = c * c + s * s;
+    const double alpha2 =
+        length2 > 1e-12 ? (c * c * r.along * r.along + s * s * r.across * r.across) / length2 : r.along * r.along;
+    return smith_lambda(step03::dot(n, w), std::sqrt(alpha2), m);
 }
 
 // The sun's specular reflection towards v, per unit of sun radiance (0 with the sun or the eye

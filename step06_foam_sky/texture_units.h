@@ -10,4 +10,5 @@
 #define UNIT_FOAM_PATTERN 5   // the bubble pattern (u_foam_pattern)
 #define UNIT_GBUFFER_WORLD 6  // the G-buffer's surface points (u_gbuffer_world)
 #define UNIT_GBUFFER_REST 7   // the G-buffer's rest positions and footprints (u_gbuffer_rest)
+#define UNIT_FOAM_RESIDUAL 8  // the residual foam of the streaks (foam_map.glsl's u_residual_foam)
 #endif

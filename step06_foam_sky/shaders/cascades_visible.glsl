@@ -121,29 +121,38 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
     return s;
 }
 
-// Foam at rest position p (fragment shaders), the whitecaps' and the residual: the finest level that holds p, blended into the
+// Foam at rest position p (fragment shaders): the finest level that holds p, blended into the
 // next one over the outer tenth of its window, none beyond the largest window. Every level is
 // read, in uniform control flow (so texture() may take its level from the pixel's neighbours, with
 // the bias): skipping the levels a pixel does not need saved nothing where neighbouring pixels run
 // together (llvmpipe runs masked-off branches anyway), and the textureGrad that the branches
 // needed takes a level per pixel, which is slower.
-vec2 foam_at(vec2 p, float bias) {
-    vec2 foam = vec2(0.0);
-    float left = 1.0;  // the weight the finer levels did not take
+float foam_at(vec2 p, float bias) {
+    float foam = 0.0, left = 1.0;  // left: the weight the finer levels did not take
     for (int level = 0; level < FOAM_LEVELS; ++level) {
         vec2 offset = abs(p - u_foam_centre[level]);
         float inside = 0.5 * u_foam_extent[level] - max(offset.x, offset.y);  // metres from the edge
         float weight = clamp(inside / (0.1 * u_foam_extent[level]), 0.0, 1.0);
-        foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level)), bias).rg;
+        foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level)), bias).r;
         left *= 1.0 - weight;
     }
-    return foam;  // (whitecap foam, residual foam)
+    return foam;
+}
+
+// The residual foam of the streaks at p: its one level's window, faded out over the outer tenth.
+float residual_foam_at(vec2 p, float bias) {
+    vec2 offset = abs(p - u_foam_centre[RESIDUAL_LEVEL]);
+    float extent = u_foam_extent[RESIDUAL_LEVEL];
+    float weight = clamp((0.5 * extent - max(offset.x, offset.y)) / (0.1 * extent), 0.0, 1.0);
+    return weight * texture(u_residual_foam, p / extent, bias).r;
 }
 
 layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;  // foam_pattern.hpp: 1 on the borders of bubble cells
 uniform float u_foam_pattern_size;  // metres one tile of it covers
-// World (x, z) to the pattern's coordinates for the streaks: stretched along the wind.
+// World (x, z) to the pattern's coordinates for the streaks: stretched along the wind. u_streaks:
+// there is residual foam (the wind is Beaufort 7 or more).
 uniform vec2 u_streak_along, u_streak_across;
+uniform bool u_streaks;
 
 // foam_pattern.hpp's foam_cover: fresh foam (amount 1) covers everything; as it decays the cell
 // middles open first and the borders last, so a fading whitecap turns to lace, with a soft edge.
@@ -160,15 +169,25 @@ float streak_cover(float residual, float pattern) {
 
 // The simulated amount laid out by the pattern, read at two scales (so the cells are not all one
 // size and the tile does not show) in world space, where the foam is.
-// No foam (amount 0) covers nothing whatever the pattern, so no branch is needed around it.
 float total_foam(vec2 p, SurfaceFootprint f) {
     // Every map here is a linear function of p, so one bias corrects GL's level for all of them.
     float bias = log2(max(length(f.dx), length(f.dy)) / implicit_long_side(p));
-    vec2 uv = p / u_foam_pattern_size;
-    float pattern = 0.6 * texture(u_foam_pattern, uv, bias).r + 0.4 * texture(u_foam_pattern, uv * 2.71 + 0.37, bias).r;
-    vec2 foam = foam_at(p, bias);
-    float whitecaps = foam_cover(foam.x, pattern);
-    // The streaks: the residual foam (none below Beaufort 7) on the pattern stretched along the wind.
-    float streaks = streak_cover(foam.y, texture(u_foam_pattern, vec2(dot(p, u_streak_along), dot(p, u_streak_across)), bias).r);
-    return max(whitecaps, streaks);
+    float foam = foam_at(p, bias);
+    // u_streaks: the wind is Beaufort 7 or more (a uniform: below, neither this fetch nor the
+    // streaks' pattern costs anything).
+    float residual = u_streaks ? residual_foam_at(p, bias) : 0.0;
+    // Most of the sea holds no foam (below 0.002 no pattern gives a cover above 3e-4): it skips the
+    // pattern. Its fetches take the footprint's own derivatives (textureGrad), so a pixel with
+    // foam needs no neighbour to take the branch with it.
+    bool streaks = residual >= 0.02;  // a streak's cover is at most its residual: fainter is not seen
+    if (foam < 0.002 && !streaks) return 0.0;
+    vec2 uv = p / u_foam_pattern_size, uv_dx = f.dx / u_foam_pattern_size, uv_dy = f.dy / u_foam_pattern_size;
+    float pattern = 0.6 * textureGrad(u_foam_pattern, uv, uv_dx, uv_dy).r +
+                    0.4 * textureGrad(u_foam_pattern, uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71).r;
+    float whitecaps = foam_cover(foam, pattern);
+    if (!streaks) return whitecaps;
+    // The streaks: the residual foam on the pattern stretched along the wind.
+    mat2 to_streaks = transpose(mat2(u_streak_along, u_streak_across));  // rows: along, across
+    float line = textureGrad(u_foam_pattern, to_streaks * p, to_streaks * f.dx, to_streaks * f.dy).r;
+    return max(whitecaps, streak_cover(residual, line));
 }

@@ -1,16 +1,17 @@
 #version 450 core
 // Chapter 5.3 (foam.hpp is the CPU reference): at each texel of each foam level, the Jacobian of
 // the summed surface (all cascades, as rendered) at the texel's world position; foam is made where
-// J falls below the threshold and fades, integrated exactly over the frame (foam_step.glsl). Beside
-// it (green) the residual foam a storm leaves, fed by a share of the same breaking and fading
-// slowly (foam_pattern.hpp: the streaks).
+// J falls below the threshold and fades, integrated exactly over the frame (foam_step.glsl). On
+// RESIDUAL_LEVEL, beside it, the residual foam a storm leaves, fed by a share of the same breaking
+// and fading slowly (foam_pattern.hpp: the streaks).
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "cascades.glsl"
 // FOAM_LEVELS and the clipmap's layout:
 #include "foam_map.glsl"
 #include "foam_step.glsl"
 
-layout(rg32f, binding = 0) uniform image2DArray u_foam_image;  // (whitecap foam, residual foam)
+layout(r32f, binding = 0) uniform image2DArray u_foam_image;  // the whitecaps' foam, a layer per level
+layout(r32f, binding = 1) uniform image2D u_residual_image;     // the residual foam, level RESIDUAL_LEVEL only
 
 uniform int u_n;                                // texels per side of a level (a power of two)
 uniform ivec2 u_origin[FOAM_LEVELS];            // the window's first cell, in texels of its level, from the world origin
@@ -40,12 +41,16 @@ void main() {
     // A cell that has just entered the window holds another cell's foam: start it afresh.
     ivec2 previous = u_previous_origin[level];
     bool entered = any(lessThan(cell, previous)) || any(greaterThanEqual(cell, previous + u_n));
-    vec2 foam = imageLoad(u_foam_image, id).rg;
     float squeeze = max(0.0, u_threshold - j);
     float injection_rate = u_injection * squeeze, streak_rate = u_streak_injection * squeeze;
-    if (u_warm_start || entered)  // where injection and decay balance if J stayed as it is
-        foam = clamp(vec2(injection_rate / max(u_decay_rate, 0.1), streak_rate / max(u_streak_decay, 0.1)), 0.0, 1.0);
-    else
-        foam = vec2(foam_step(foam.x, injection_rate, u_decay_rate, u_dt), foam_step(foam.y, streak_rate, u_streak_decay, u_dt));
-    imageStore(u_foam_image, id, vec4(foam, 0.0, 0.0));
+    bool fresh = u_warm_start || entered;  // start where injection and decay balance if J stayed as it is
+    float foam = fresh ? clamp(injection_rate / max(u_decay_rate, 0.1), 0.0, 1.0)
+                       : foam_step(imageLoad(u_foam_image, id).r, injection_rate, u_decay_rate, u_dt);
+    imageStore(u_foam_image, id, vec4(foam));
+    if (level == RESIDUAL_LEVEL) {  // below Beaufort 7 (no streak injection) none is kept: nothing reads it
+        float residual = u_streak_injection == 0.0 ? 0.0
+                       : fresh ? clamp(streak_rate / max(u_streak_decay, 0.1), 0.0, 1.0)
+                               : foam_step(imageLoad(u_residual_image, id.xy).r, streak_rate, u_streak_decay, u_dt);
+        imageStore(u_residual_image, id.xy, vec4(residual));
+    }
 }

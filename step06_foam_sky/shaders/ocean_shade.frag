@@ -70,8 +70,8 @@ void main() {
     // variance (both axes summed) is spread evenly; the short waves' is split along and across the
     // wind, as Cox and Munk measured it.
     float isotropic_alpha2 = u_roughness * u_roughness + surface.unresolved_slope_variance;
-    Roughness roughness = Roughness(sqrt(isotropic_alpha2 + 2.0 * u_short_wave_slope_variance.x),
-                                    sqrt(isotropic_alpha2 + 2.0 * u_short_wave_slope_variance.y), u_wind_heading);
+    Roughness roughness = wind_roughness(n, sqrt(isotropic_alpha2 + 2.0 * u_short_wave_slope_variance.x),
+                                         sqrt(isotropic_alpha2 + 2.0 * u_short_wave_slope_variance.y), u_wind_heading);
     roughness.along = mix(roughness.along, u_foam_roughness, foam);
     roughness.across = mix(roughness.across, u_foam_roughness, foam);
     float alpha = sqrt(0.5 * (roughness.along * roughness.along + roughness.across * roughness.across));
@@ -94,9 +94,13 @@ void main() {
     // pi is the sky's mean radiance over the hemisphere around n (the cube's coarsest level, read
     // at n, stands for it). The same sky the water reflects, so foam under a bright overcast is
     // as white as the water's reflection of it is bright.
-    vec3 sky_irradiance_over_pi = textureLod(u_sky, n, u_sky_max_lod).rgb;
-    vec3 foam_light = u_foam_colour * (sky_irradiance_over_pi + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
-    vec3 colour = mix(water, foam_light, foam);
+    // Only where there is foam (most pixels have none; textureLod needs no neighbours).
+    vec3 colour = water;
+    if (foam > 0.0) {
+        vec3 sky_irradiance_over_pi = textureLod(u_sky, n, u_sky_max_lod).rgb;
+        vec3 foam_light = u_foam_colour * (sky_irradiance_over_pi + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
+        colour = mix(water, foam_light, foam);
+    }
     if (u_show_fog) colour = apply_fog(colour, u_eye, surface_point, textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), u_sky_max_lod * 0.5).rgb);
     out_colour = vec4(colour, 1.0);
 }

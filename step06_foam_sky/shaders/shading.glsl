@@ -50,44 +50,43 @@ float microfacet_distribution(float n_dot_h, float alpha) {
 #endif
 }
 
-// The microfacets' roughness: alpha along the wind and across it, and the wind's heading on the
-// sea (x, z), unit length. The waves too short to draw tilt the water more along the wind than
-// across it, so the sun's glitter is an ellipse stretched along the wind.
+// The microfacets' roughness: alpha along the wind and across it, and the wind's frame on the
+// plane the normal stands on (wind_roughness). The waves too short to draw tilt the water more
+// along the wind than across it, so the sun's glitter is an ellipse stretched along the wind.
 struct Roughness {
     float along, across;
-    vec2 wind;
+    vec3 along_axis, across_axis;  // the wind projected on n's plane, and n x it: equal lengths
 };
 
-Roughness isotropic(float alpha) { return Roughness(alpha, alpha, vec2(1.0, 0.0)); }
-
-float wind_dot(vec3 n, vec2 wind) { return n.x * wind.x + n.z * wind.y; }
-
-// The (cos, sin) of the azimuth of direction w around the normal n, from the wind's heading
-// projected on the plane the normal stands on.
-vec2 azimuth_from_wind(vec3 n, vec3 w, vec2 wind) {
-    vec3 along = vec3(wind.x, 0.0, wind.y) - n * wind_dot(n, wind);
-    float length_along = length(along);
-    if (length_along < 1e-7) return vec2(1.0, 0.0);  // a normal lying along the wind: no frame
-    along /= length_along;
-    vec3 across = cross(n, along);
-    vec2 p = vec2(dot(w, along), dot(w, across));
-    float length_p = length(p);
-    return length_p > 1e-7 ? p / length_p : vec2(1.0, 0.0);  // w along n: any azimuth will do
+// The frame, made once a pixel (D and both Lambdas read it), for the wind's heading (x, z).
+Roughness wind_roughness(vec3 n, float along, float across, vec2 wind) {
+    vec3 axis = vec3(wind.x, 0.0, wind.y) - n * (n.x * wind.x + n.z * wind.y);
+    return Roughness(along, across, axis, cross(n, axis));
 }
+
+Roughness isotropic(float alpha) { return Roughness(alpha, alpha, vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0)); }
+
+// w's components along the wind and across it: the two axes have the same length, so the
+// components keep w's azimuth without normalising anything (only their ratio is used).
+vec2 wind_components(vec3 w, Roughness r) { return vec2(dot(w, r.along_axis), dot(w, r.across_axis)); }
 
 // An anisotropic D is the isotropic one at the alpha of h's azimuth, 1/alpha^2 = cos^2/along^2 +
 // sin^2/across^2, times alpha^2 / (along across) (its slopes' density is an ellipse, not a circle).
+// Where h is n (no azimuth) D does not depend on that alpha.
 float anisotropic_distribution(vec3 n, vec3 h, Roughness r) {
-    vec2 cs = azimuth_from_wind(n, h, r.wind);
-    float alpha = inversesqrt(cs.x * cs.x / (r.along * r.along) + cs.y * cs.y / (r.across * r.across));
-    return microfacet_distribution(max(dot(n, h), 0.0), alpha) * alpha * alpha / (r.along * r.across);
+    vec2 p = wind_components(h, r), p2 = p * p;
+    float length2 = p2.x + p2.y;
+    float alpha2 = length2 > 1e-12 ? length2 / (p2.x / (r.along * r.along) + p2.y / (r.across * r.across)) : r.along * r.along;
+    return microfacet_distribution(max(dot(n, h), 0.0), sqrt(alpha2)) * alpha2 / (r.along * r.across);
 }
 
 // Smith's Lambda of a direction w: the slopes it sees are the microfacets' slopes projected on its
 // azimuth, of spread alpha^2 = cos^2 along^2 + sin^2 across^2.
 float anisotropic_lambda(vec3 n, vec3 w, Roughness r) {
-    vec2 cs = azimuth_from_wind(n, w, r.wind);
-    return smith_lambda(dot(n, w), sqrt(cs.x * cs.x * r.along * r.along + cs.y * cs.y * r.across * r.across));
+    vec2 p = wind_components(w, r), p2 = p * p;
+    float length2 = p2.x + p2.y;
+    float alpha2 = length2 > 1e-12 ? (p2.x * r.along * r.along + p2.y * r.across * r.across) / length2 : r.along * r.along;
+    return smith_lambda(dot(n, w), sqrt(alpha2));
 }
 
 // Radiance reflected towards V by the sun (radiance-weighted by N.L already).

@@ -24,7 +24,7 @@ void main() {
     if (i >= u_count) return;
     vec3 n = samples[i].normal_alpha.xyz, v = samples[i].view_height.xyz, l = samples[i].sun_bubbles.xyz;
     float alpha = samples[i].normal_alpha.w;
-    Roughness r = Roughness(samples[i].roughness.x, samples[i].roughness.y, samples[i].roughness.zw);
+    Roughness r = wind_roughness(n, samples[i].roughness.x, samples[i].roughness.y, samples[i].roughness.zw);
     vec3 h = normalize(v + l);
     ScatterSettings s = ScatterSettings(u_k.x, u_k.y, u_k.z, u_k.w, u_scatter_colour, u_bubble_colour, u_crest_colour);
     results[3 * i] = vec4(fresnel_schlick(dot(n, v), 0.02), smith_lambda(dot(n, v), alpha),

@@ -5,9 +5,9 @@
 
 out float out_cover;
 uniform float u_amount;
-uniform bool u_streaks;
+uniform bool u_evaluate_streaks;  // streak_cover instead of foam_cover
 
 void main() {
     float pattern = texelFetch(u_foam_pattern, ivec2(gl_FragCoord.xy), 0).r;
-    out_cover = u_streaks ? streak_cover(u_amount, pattern) : foam_cover(u_amount, pattern);
+    out_cover = u_evaluate_streaks ? streak_cover(u_amount, pattern) : foam_cover(u_amount, pattern);
 }
