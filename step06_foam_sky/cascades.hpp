@@ -97,23 +97,23 @@ inline glm::dvec2 world_origin_near(glm::dvec2 eye_xz) { return glm::round(eye_x
 struct CascadeView {
     std::array<float, kCascades> patch_sizes{};
     std::array<bool, kCascades> enabled{true, true, true, true};
-    glm::dvec2 origin{0.0};  // metres (x, z): the shaders' positions are relative to it
+    glm::dvec2 origin{0.0};  // metres (x, z): the shaders' positions are relative to it (place_origin)
+    std::vector<glm::vec2> tile_phases = std::vector<glm::vec2>(kCascades, glm::vec2(0.0f));
 
-    // Each tile's phase at the origin, fract(origin / L): reduced here in double, so the shaders add
-    // it to p / L of a small p.
-    std::vector<glm::vec2> tile_phases() const {
-        std::vector<glm::vec2> phases;
-        for (float size : patch_sizes) {
-            const glm::dvec2 tiles = origin / double(size);
-            phases.emplace_back(glm::vec2(tiles - glm::floor(tiles)));
+    // Puts the origin at `world_origin` (after patch_sizes are set), and each tile's phase there,
+    // fract(origin / L), reduced in double once, so the shaders add it to p / L of a small p.
+    void place_origin(glm::dvec2 world_origin) {
+        origin = world_origin;
+        for (int c = 0; c < kCascades; ++c) {
+            const glm::dvec2 tiles = origin / double(patch_sizes[std::size_t(c)]);
+            tile_phases[std::size_t(c)] = glm::vec2(tiles - glm::floor(tiles));
         }
-        return phases;
     }
 
     // u_patch_sizes, u_tile_phases and u_cascade_enabled of `program`.
     void upload(const ocean::ShaderProgram& program) const {
         program.set("u_patch_sizes", std::vector<float>(patch_sizes.begin(), patch_sizes.end()));
-        program.set("u_tile_phases", tile_phases());
+        program.set("u_tile_phases", tile_phases);
         for (int c = 0; c < kCascades; ++c)
             program.set("u_cascade_enabled[" + std::to_string(c) + "]", int(enabled[std::size_t(c)]));
     }

@@ -113,9 +113,8 @@ void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit)
     glBindTextureUnit(GLuint(unit), pattern_.id());
 }
 
-void FoamSimulation::set_wind(double direction_degrees, double speed) {
-    const double heading = direction_degrees * 3.14159265358979323846 / 180;
-    const glm::vec2 along(float(std::cos(heading)), float(std::sin(heading)));
+void FoamSimulation::set_wind(glm::dvec2 heading, double speed) {
+    const glm::vec2 along(heading);
     streak_along_ = along / float(kPatternSize * kStreakLength);
     streak_across_ = glm::vec2(-along.y, along.x) / float(kPatternSize * kStreakSpacing);
     streak_share_ = foam_streak_share(speed);

@@ -124,9 +124,9 @@ public:
     // covers (u_foam_pattern_size), and the streaks' frame (u_streak_along, _across: world x, z to
     // the pattern's coordinates, stretched along the wind).
     void bind_pattern(const ocean::ShaderProgram& program, int unit) const;
-    // The wind the streaks lie along: its heading (degrees, 0 = +x, 90 = +z) and speed (m/s: the
-    // share of the breaking that lingers, foam_streak_share).
-    void set_wind(double direction_degrees, double speed);
+    // The wind the streaks lie along: its heading (unit x, z: short_waves.hpp's wind_heading) and
+    // speed (m/s: the share of the breaking that lingers, foam_streak_share).
+    void set_wind(glm::dvec2 heading, double speed);
     static constexpr float kPatternSize = 9.0f;  // metres: about ten 1 m bubble cells a side
     const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
     GLuint texture() const { return texture_.id(); }

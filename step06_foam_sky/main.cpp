@@ -134,11 +134,13 @@ private:
             // The waves shorter than the last cascade, down to the capillaries (short_waves.hpp):
             // microfacets everywhere, whatever the pixel resolves.
             short_wave_slope_variance_ = step06::short_wave_slope_variance_beyond(ocean_params_.spectrum);
+            wind_heading_ = step06::wind_heading(ocean_params_.spectrum);
+            foam_->set_wind(wind_heading_, ocean_params_.spectrum.wind_speed);
             describe_cascades();
         }
         cascade_view_ = cascade_view();  // once a frame: the passes below and render() read it
         const glm::dvec3 eye = camera().eye_world();
-        cascade_view_.origin = step06::world_origin_near({eye.x, eye.z});
+        cascade_view_.place_origin(step06::world_origin_near({eye.x, eye.z}));
         if (sky_image_loaded_for_ != look_.sky_image_changes.value) {
             sky_image_loaded_for_ = look_.sky_image_changes.value;
             if (auto warning = sky_->use_image(look_.sky_image)) std::cerr << "warning: " << *warning << "\n";
@@ -167,7 +169,6 @@ private:
         ocean::GpuScope timed(timers(), "foam");
         const glm::dvec3 eye = camera().eye_world();
         const glm::vec3 forward = camera().forward();
-        foam_->set_wind(ocean_params_.spectrum.wind_direction, ocean_params_.spectrum.wind_speed);
         foam_->update(*gpu_, cascade_view_, {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
     }
 
@@ -305,8 +306,7 @@ private:
         look_.upload_shading(*shade);
         shade->set("u_short_wave_slope_variance",
                    glm::vec2(float(short_wave_slope_variance_.upwind), float(short_wave_slope_variance_.crosswind)));
-        const double wind = ocean_params_.spectrum.wind_direction * step05::kPi / 180;
-        shade->set("u_wind_heading", glm::vec2(float(std::cos(wind)), float(std::sin(wind))));
+        shade->set("u_wind_heading", glm::vec2(wind_heading_));
         shade->set("u_eye", eye_from_origin());
         shade->set("u_sky_max_lod", sky_->max_lod());
         glBindTextureUnit(UNIT_GBUFFER_WORLD, gbuffer_.world_texture());
@@ -393,6 +393,7 @@ private:
     double height_variance_ = 0;         // m^2, of the summed cascades
     std::vector<float> unresolved_by_level_;  // kMaxMipLevels per cascade
     step06::SlopeVariance short_wave_slope_variance_;
+    glm::dvec2 wind_heading_{1.0, 0.0};  // made with the spectra (short_waves.hpp's wind_heading)
     step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with
     int split_effect_ = 0;
     int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;

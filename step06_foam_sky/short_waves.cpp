@@ -66,9 +66,14 @@ SlopeVariance short_wave_slope_variance(double wind_speed_10m, double peak_k, do
     return v;
 }
 
-SlopeVariance resolved_slope_variance_by_axis(const step05::SpectrumParams& p) {
+glm::dvec2 wind_heading(const step05::SpectrumParams& p) {
     const double angle = p.wind_direction * kPi / 180;
-    const double ux = std::cos(angle), uz = std::sin(angle);
+    return {std::cos(angle), std::sin(angle)};
+}
+
+SlopeVariance resolved_slope_variance_by_axis(const step05::SpectrumParams& p) {
+    const glm::dvec2 wind = wind_heading(p);
+    const double ux = wind.x, uz = wind.y;
     SlopeVariance v;
     step05::for_each_resolved_mode(p, [&](double kx, double kz, double energy) {
         const double along = kx * ux + kz * uz, across = -kx * uz + kz * ux;

@@ -12,9 +12,14 @@
 
 #include "step05_fft/spectrum.hpp"
 
+#include <glm/vec2.hpp>
+
 #include <vector>
 
 namespace step06 {
+
+// The unit vector (x, z) the wind blows towards, from p.wind_direction (degrees, 0 = +x, 90 = +z).
+glm::dvec2 wind_heading(const step05::SpectrumParams& p);
 
 // Slope variance along the wind and across it, E[(dh/du)^2] and E[(dh/dc)^2] (dimensionless).
 struct SlopeVariance {

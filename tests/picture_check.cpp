@@ -87,6 +87,13 @@ struct Pinhole {
         const double x = (2 * (i + 0.5) / width - 1) * tan_half_fov * aspect, y = (1 - 2 * (j + 0.5) / height) * tan_half_fov;
         return glm::normalize(forward + x * right + y * up);
     }
+    // The pixel (column, row) a point of the world falls in: ray's inverse.
+    glm::ivec2 pixel(const glm::dvec3& point, int width, int height) const {
+        const glm::dvec3 d = point - eye;
+        const double depth = glm::dot(d, forward);
+        const double x = glm::dot(d, right) / depth / (tan_half_fov * aspect), y = glm::dot(d, up) / depth / tan_half_fov;
+        return {int(std::floor((x + 1) / 2 * width)), int(std::floor((1 - y) / 2 * height))};
+    }
 };
 Pinhole pinhole(const Export& e, int width, int height) {
     const double yaw = radians(number(e, "camera_yaw")), pitch = radians(number(e, "camera_pitch"));
@@ -266,11 +273,8 @@ double streakiness(const Export& e, const FoamCover& c, double step, double fain
     const double wind = radians(number(e, "wind_direction"));
     const glm::dvec3 along(std::cos(wind), 0, std::sin(wind)), across(-std::sin(wind), 0, std::cos(wind));
     auto cover_at = [&](const glm::dvec3& point) {
-        const glm::dvec3 d = point - camera.eye;
-        const double depth = glm::dot(d, camera.forward);
-        const double x = glm::dot(d, camera.right) / depth / (camera.tan_half_fov * camera.aspect);
-        const double y = glm::dot(d, camera.up) / depth / camera.tan_half_fov;
-        return c.at(int(std::floor((x + 1) / 2 * c.width)), int(std::floor((1 - y) / 2 * c.height)));
+        const glm::ivec2 at = camera.pixel(point, c.width, c.height);
+        return c.at(at.x, at.y);
     };
     double changes_along = 0, changes_across = 0;
     for (int j = 0; j < c.height; ++j)

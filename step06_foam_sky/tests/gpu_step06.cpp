@@ -177,7 +177,7 @@ TEST_F(Step06Gpu, TheSameFoamAtSixAndSixtyFramesASecond) {
         step06::FoamSimulation foam(factory());
         foam.resize(64);
         foam.fill(0.0f);
-        foam.set_wind(30, 21);
+        foam.set_wind({std::cos(0.5), std::sin(0.5)}, 21);  // Beaufort 9, towards about 30 degrees
         for (int frame = 0; frame < fps; ++frame)
             foam.update(*sea.gpu, all_cascades(), {37.0, -12.0}, {0, 1}, 1.0 / fps, settings);
         return residual ? foam.read_residual() : foam.read_level(0);
