@@ -85,7 +85,7 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     glDispatchCompute(groups, groups, GLuint(kFoamLevels));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     glGenerateTextureMipmap(texture_.id());  // distant foam averages instead of sparkling
-    glGenerateTextureMipmap(residual_.id());
+    if (streak_share_ > 0) glGenerateTextureMipmap(residual_.id());  // read only from Beaufort 7
 }
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {
@@ -117,7 +117,13 @@ void FoamSimulation::set_wind(glm::dvec2 heading, double speed) {
     const glm::vec2 along(heading);
     streak_along_ = along / float(kPatternSize * kStreakLength);
     streak_across_ = glm::vec2(-along.y, along.x) / float(kPatternSize * kStreakSpacing);
-    streak_share_ = foam_streak_share(speed);
+    const double share = foam_streak_share(speed);
+    // Below Beaufort 7 the residual is neither kept nor read (foam.comp): it starts again from none.
+    if (share > 0 && streak_share_ == 0 && residual_) {
+        const float none = 0;
+        glClearTexImage(residual_.id(), 0, GL_RED, GL_FLOAT, &none);
+    }
+    streak_share_ = share;
 }
 
 void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {

@@ -47,9 +47,10 @@ void main() {
     float foam = fresh ? clamp(injection_rate / max(u_decay_rate, 0.1), 0.0, 1.0)
                        : foam_step(imageLoad(u_foam_image, id).r, injection_rate, u_decay_rate, u_dt);
     imageStore(u_foam_image, id, vec4(foam));
-    if (level == RESIDUAL_LEVEL) {  // below Beaufort 7 (no streak injection) none is kept: nothing reads it
-        float residual = u_streak_injection == 0.0 ? 0.0
-                       : fresh ? clamp(streak_rate / max(u_streak_decay, 0.1), 0.0, 1.0)
+    // Below Beaufort 7 there is no streak injection and nothing reads the residual: it is left as
+    // it is (FoamSimulation::set_wind clears it when the streaks come back).
+    if (level == RESIDUAL_LEVEL && u_streak_injection > 0.0) {
+        float residual = fresh ? clamp(streak_rate / max(u_streak_decay, 0.1), 0.0, 1.0)
                                : foam_step(imageLoad(u_residual_image, id.xy).r, streak_rate, u_streak_decay, u_dt);
         imageStore(u_residual_image, id.xy, vec4(residual));
     }
