@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# compare_bench.sh compare|bench|sweep REPO BUILD_DIR OUT_DIR [SHEET_CHECK]: runs ./ocean compare,
-# ./ocean bench or ./ocean bench --sweep on what ctest built (small sizes), then checks what they
-# wrote: a contact sheet with one non-blank tile per step; a bench CSV with a numeric row per step
-# (and the FFT backends for step05 and step06); a sweep CSV with a row per simulating step,
-# resolution and window.
+# compare_bench.sh compare|bench|sweep|against REPO BUILD_DIR OUT_DIR [SHEET_CHECK]: runs ./ocean
+# compare, ./ocean bench, ./ocean bench --sweep or ./ocean bench --baseline-bin on what ctest built
+# (small sizes), then checks what they wrote: a contact sheet with one non-blank tile per step; a
+# bench CSV with a numeric row per step (and the FFT backends for step05 and step06); a sweep CSV
+# with a row per simulating step, resolution and window; the pairs' table (and bench_pairs.py's
+# arithmetic on pairs whose answer is known).
 set -u
 what=$1 repo=$2 build=$3 out=$4 check=${5:-}
 cd "$repo" || exit 1
@@ -51,5 +52,22 @@ case "$what" in
         if (!bad) print "sweep.csv: " rows " rows, every resolution and window, all numeric"
         exit bad
       }' "$out/sweep.csv" ;;
-  *) echo "compare_bench.sh: compare, bench or sweep"; exit 2 ;;
+  against)
+    # The arithmetic first: ratios 1.1, 0.9, 1.1 pair by pair (median 1.1, quartiles 1.0 and 1.1),
+    # while the medians of the runs, 200 and 180, would say 0.9.
+    mkdir -p "$out"
+    printf 'bench-csv: s,1x1,1,%s,draw=%s\n' 100 90 200 200 400 360 > "$out/known_a.csv"
+    printf 'bench-csv: s,1x1,1,%s,draw=%s\n' 110 99 180 180 440 396 > "$out/known_b.csv"
+    known=$(python3 tools/bench_pairs.py "$out/known_a.csv" "$out/known_b.csv") || { echo "FAIL: bench_pairs.py"; exit 1; }
+    echo "$known"
+    echo "$known" | grep -Eq '^frame +200\.00 +180\.00 +1\.100 +\[1\.000, 1\.100\]$' || { echo "FAIL: the frame's pairs"; exit 1; }
+    echo "$known" | grep -Eq '^  draw +200\.00 +180\.00 +1\.100 ' || { echo "FAIL: a pass's pairs"; exit 1; }
+    # Then the command, step01 against itself: 3 pairs, a frame row and its pass.
+    ./ocean bench --baseline-bin "$build/step01_sine2d/step01_sine2d" --step step01_sine2d --pairs 3 --frames 2 \
+      --size 160x90 --out "$out" || { echo "FAIL: ./ocean bench --baseline-bin"; exit 1; }
+    [ "$(wc -l < "$out/baseline.csv")" = 3 ] && [ "$(wc -l < "$out/current.csv")" = 3 ] || { echo "FAIL: not 3 runs each"; exit 1; }
+    grep -Eq '^3 pairs' "$out/against.txt" && grep -Eq '^frame +[0-9.]+ +[0-9.]+ +[0-9]\.[0-9]{3} ' "$out/against.txt" ||
+      { echo "FAIL: against.txt"; exit 1; }
+    echo "against.txt: 3 pairs, the frame's ratio" ;;
+  *) echo "compare_bench.sh: compare, bench, sweep or against"; exit 2 ;;
 esac
