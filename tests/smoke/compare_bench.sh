@@ -68,6 +68,16 @@ case "$what" in
     [ "$(wc -l < "$out/baseline.csv")" = 3 ] && [ "$(wc -l < "$out/current.csv")" = 3 ] || { echo "FAIL: not 3 runs each"; exit 1; }
     grep -Eq '^3 pairs' "$out/against.txt" && grep -Eq '^frame +[0-9.]+ +[0-9.]+ +[0-9]\.[0-9]{3} ' "$out/against.txt" ||
       { echo "FAIL: against.txt"; exit 1; }
-    echo "against.txt: 3 pairs, the frame's ratio" ;;
+    # Flags for one side (one build, two variants), and a bad flag stops it with the step's message.
+    ./ocean bench --baseline-bin "$build/step01_sine2d/step01_sine2d" --step step01_sine2d --pairs 1 --frames 2 \
+      --size 160x90 --out "$out/flags" --baseline-args "--time 1" --current-args "--time 2 --dt 0.5" > "$out/flags.log" 2>&1 ||
+      { cat "$out/flags.log"; echo "FAIL: --baseline-args / --current-args"; exit 1; }
+    grep -q -- "--time 2 --dt 0.5" "$out/flags.log" || { echo "FAIL: the current side's flags are not named"; exit 1; }
+    if ./ocean bench --baseline-bin "$build/step01_sine2d/step01_sine2d" --step step01_sine2d --pairs 1 --frames 2 \
+      --size 160x90 --out "$out/flags" --current-args "--nope" > "$out/bad.log" 2>&1; then
+      echo "FAIL: a bad flag for one side did not stop the bench"; exit 1
+    fi
+    grep -q "unknown flag" "$out/bad.log" || { cat "$out/bad.log"; echo "FAIL: no message for the bad flag"; exit 1; }
+    echo "against.txt: 3 pairs, the frame's ratio; flags for one side; a bad one stops it" ;;
   *) echo "compare_bench.sh: compare, bench, sweep or against"; exit 2 ;;
 esac
