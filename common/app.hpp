@@ -113,6 +113,9 @@ protected:
                            const std::vector<std::string>& defines = {}) {
         return programs_.get(name, stage_files, defines);
     }
+    // A chapter built on an earlier chapter's program (step07 on step06's): bare shader names its
+    // own folder lacks are read from `step`'s shaders (call from the constructor).
+    void use_shaders_of(const std::string& step) { programs_.inherit_shaders_of(step + "/shaders"); }
     // The same, for a chapter's technique classes (OceanSimulation, Sky, ...).
     ProgramFactory program_factory() { return programs_.factory(); }
     // Declares the camera_* parameters and turns on mouse/keyboard camera control.

@@ -21,8 +21,18 @@ std::vector<std::string> ProgramLibrary::stage_paths(const std::vector<std::stri
             continue;
         }
         const fs::path own = fs::path(shader_dir_) / file;
-        const fs::path shared = fs::path(OCEAN_SOURCE_DIR) / "common" / "shaders" / file;
-        paths.push_back((fs::exists(own) || !fs::exists(shared) ? own : shared).string());
+        fs::path found = own;
+        if (!fs::exists(own)) {
+            std::vector<fs::path> candidates;
+            for (const auto& dir : inherited_dirs_) candidates.push_back(fs::path(OCEAN_SOURCE_DIR) / dir / file);
+            candidates.push_back(fs::path(OCEAN_SOURCE_DIR) / "common" / "shaders" / file);
+            for (const auto& candidate : candidates)
+                if (fs::exists(candidate)) {
+                    found = candidate;
+                    break;
+                }
+        }
+        paths.push_back(found.string());
     }
     return paths;
 }

@@ -25,6 +25,10 @@ public:
         own_dir_ = std::move(own_dir);
         shader_dir_ = std::move(shader_dir);
     }
+    // A chapter that runs an earlier chapter's program (step07 draws step06's sea) also finds bare
+    // names in that chapter's shaders folder (`dir`, from the repository root), after its own
+    // shader_dir and before common/shaders.
+    void inherit_shaders_of(std::string dir) { inherited_dirs_.push_back(std::move(dir)); }
 
     // The program `name` built from `stage_files` with `defines`. Until running() a program that
     // does not build throws ocean::Error (the step cannot start). Afterwards (the user switched
@@ -52,6 +56,7 @@ private:
     std::vector<std::string> stage_paths(const std::vector<std::string>& stage_files) const;
 
     std::string own_dir_, shader_dir_;
+    std::vector<std::string> inherited_dirs_;
     std::vector<std::unique_ptr<ShaderProgram>> programs_;
     std::map<std::string, ShaderProgram*> by_key_;     // name + defines
     std::map<std::string, ShaderProgram*> last_good_;  // name -> the variant built last
