@@ -1,0 +1,146 @@
+#include "step07_buoyancy/floating_body.hpp"
+
+#include "step07_buoyancy/sea_query.hpp"
+
+#include "common/constants.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace step07 {
+
+double shape_volume(const Shape& shape) {
+    if (shape.kind == ShapeKind::Sphere) return ocean::kPi * std::pow(shape.size.x, 3) / 6;
+    return shape.size.x * shape.size.y * shape.size.z;
+}
+
+glm::dvec3 inertia_per_mass(const Shape& shape) {
+    if (shape.kind == ShapeKind::Sphere) return glm::dvec3(0.1 * shape.size.x * shape.size.x);  // 2/5 r^2
+    const glm::dvec3 s2 = shape.size * shape.size;
+    return glm::dvec3(s2.y + s2.z, s2.x + s2.z, s2.x + s2.y) / 12.0;
+}
+
+std::vector<HullCell> hull_cells(const Shape& shape, int n) {
+    std::vector<HullCell> cells;
+    const glm::dvec3 side = shape.kind == ShapeKind::Sphere ? glm::dvec3(shape.size.x / n) : shape.size / double(n);
+    const glm::dvec3 corner = -0.5 * (shape.kind == ShapeKind::Sphere ? glm::dvec3(shape.size.x) : shape.size);
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const glm::dvec3 offset = corner + (glm::dvec3(i, j, k) + 0.5) * side;
+                if (shape.kind == ShapeKind::Sphere && glm::length(offset) > 0.5 * shape.size.x) continue;
+                cells.push_back({offset, side, side.x * side.y * side.z});
+            }
+    // The cells' volumes add up to the shape's (a sphere's cubes miss or overshoot its surface).
+    double total = 0;
+    for (const auto& c : cells) total += c.volume;
+    for (auto& c : cells) c.volume *= shape_volume(shape) / total;
+    return cells;
+}
+
+double WaterPatch::height(glm::dvec2 p, double share) const {
+    return height_before + (height_now - height_before) * share + glm::dot(gradient, p - at);
+}
+
+// A cell's vertical half-extent, tilted with the body: its three sides projected on y.
+static double vertical_half_extent(const glm::dmat3& r, const HullCell& cell) {
+    return 0.5 * (std::abs(r[0].y) * cell.size.x + std::abs(r[1].y) * cell.size.y + std::abs(r[2].y) * cell.size.z);
+}
+
+FloatingBody::FloatingBody(const BodySettings& settings, glm::dvec3 position, glm::dquat orientation)
+    : settings_(settings), cells_(hull_cells(settings.shape, settings.cells_per_side)), position_(position),
+      orientation_(orientation) {
+    mass_ = settings.density * shape_volume(settings.shape);
+    inertia_ = mass_ * inertia_per_mass(settings.shape);
+}
+
+glm::dmat3 FloatingBody::world_inertia_inverse() const {
+    const glm::dmat3 r = glm::mat3_cast(orientation_);
+    const glm::dmat3 inverse_body(glm::dvec3(1 / inertia_.x, 0, 0), glm::dvec3(0, 1 / inertia_.y, 0),
+                                  glm::dvec3(0, 0, 1 / inertia_.z));
+    return r * inverse_body * glm::transpose(r);
+}
+
+void FloatingBody::step(const Surface& before, const Surface& now, double dt) {
+    if (dt <= 0) return;
+    // The sea under each cell, once a frame: the queries are the costly part (sea_query.hpp);
+    // the substeps move on the surface's tangent plane, which the cells hardly leave in a frame.
+    water_.resize(cells_.size());
+    for (std::size_t i = 0; i < cells_.size(); ++i) {
+        const glm::dvec3 p = to_world(cells_[i].offset);
+        WaterPatch& w = water_[i];
+        w.at = {p.x, p.z};
+        const SeaPoint at_now = query(now, w.at), at_before = query(before, w.at);
+        w.height_now = at_now.height;
+        w.height_before = at_before.height;
+        w.gradient = glm::dvec2(-at_now.normal.x, -at_now.normal.z) / std::max(at_now.normal.y, 0.05);
+        w.velocity = water_velocity(before, now, dt, at_now.rest);
+    }
+    const int substeps = std::max(1, int(std::ceil(dt / kMaxSubstep - 1e-9)));
+    const double h = dt / substeps;
+    for (int s = 1; s <= substeps; ++s) substep(h, double(s) / substeps);
+    extra_force_ = extra_torque_ = glm::dvec3(0.0);
+}
+
+void FloatingBody::substep(double h, double share) {
+    const glm::dmat3 r = glm::mat3_cast(orientation_);
+    glm::dvec3 force(0.0, -mass_ * ocean::kGravity, 0.0), torque(0.0);
+    force += extra_force_;
+    torque += extra_torque_;
+    submerged_volume_ = 0;
+    for (std::size_t i = 0; i < cells_.size(); ++i) {
+        const HullCell& cell = cells_[i];
+        const glm::dvec3 arm = r * cell.offset;
+        const glm::dvec3 centre = position_ + arm;
+        const double half = vertical_half_extent(r, cell);
+        const double water_line = water_[i].height({centre.x, centre.z}, share);
+        const double wet = std::clamp((water_line - (centre.y - half)) / (2 * half), 0.0, 1.0);
+        if (wet <= 0) continue;
+        const double volume = wet * cell.volume;
+        submerged_volume_ += volume;
+        // Buoyancy at the submerged slab's middle; drag against the water's own motion.
+        const glm::dvec3 buoyancy(0.0, kWaterDensity * ocean::kGravity * volume, 0.0);
+        const glm::dvec3 buoyancy_arm = arm + glm::dvec3(0.0, -half + wet * half, 0.0);
+        const glm::dvec3 cell_velocity = velocity_ + glm::cross(angular_velocity_, arm);
+        const glm::dvec3 drag = -kWaterDensity * volume * settings_.linear_drag * (cell_velocity - water_[i].velocity);
+        force += buoyancy + drag;
+        torque += glm::cross(buoyancy_arm, buoyancy) + glm::cross(arm, drag);
+    }
+    const glm::dmat3 inverse_inertia = world_inertia_inverse();
+    const glm::dmat3 inertia = glm::inverse(inverse_inertia);
+    const double wet_share = submerged_volume_ / shape_volume(settings_.shape);
+    torque -= settings_.angular_drag * wet_share * (inertia * angular_velocity_);
+    // Semi-implicit Euler: velocities first, then positions with the new velocities (symplectic:
+    // an undamped oscillator keeps its energy instead of gaining it, as explicit Euler's would).
+    velocity_ += h * force / mass_;
+    position_ += h * velocity_;
+    const glm::dvec3 gyroscopic = glm::cross(angular_velocity_, inertia * angular_velocity_);
+    angular_velocity_ += h * (inverse_inertia * (torque - gyroscopic));
+    orientation_ = glm::normalize(orientation_ + 0.5 * h * glm::dquat(0.0, angular_velocity_) * orientation_);
+}
+
+void FloatingBody::push(glm::dvec3 impulse, glm::dvec3 at) {
+    velocity_ += impulse / mass_;
+    angular_velocity_ += world_inertia_inverse() * glm::cross(at - position_, impulse);
+}
+
+void FloatingBody::add_force(glm::dvec3 force_world, glm::dvec3 at_body) {
+    extra_force_ += force_world;
+    extra_torque_ += glm::cross(orientation_ * at_body, force_world);
+}
+
+double FloatingBody::energy_in_still_water() const {
+    const glm::dmat3 r = glm::mat3_cast(orientation_);
+    const glm::dmat3 inertia = glm::inverse(world_inertia_inverse());
+    double energy = 0.5 * mass_ * glm::dot(velocity_, velocity_) +
+                    0.5 * glm::dot(angular_velocity_, inertia * angular_velocity_) + mass_ * ocean::kGravity * position_.y;
+    for (const HullCell& cell : cells_) {
+        const double y = position_.y + (r * cell.offset).y, e = vertical_half_extent(r, cell);
+        // The integral of wet(y') = clamp((e - y') / 2e, 0, 1) from y to e (the water line at 0).
+        const double integral = y <= -e ? -y : (y < e ? (e - y) * (e - y) / (4 * e) : 0.0);
+        energy += kWaterDensity * ocean::kGravity * cell.volume * integral;
+    }
+    return energy;
+}
+
+}  // namespace step07

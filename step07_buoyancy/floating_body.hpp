@@ -1,0 +1,101 @@
+// Chapter 7.3-7.4: a rigid body on the sea. Its hull is cut into small cells; each frame the sea
+// is queried under every cell (sea_query.hpp), and each substep adds up, cell by cell,
+//   buoyancy   rho_w g V_submerged, up, at the submerged part's centre   (Archimedes)
+//   drag       -rho_w V_submerged c (v_cell - v_water)                    (linear, against the water's own motion)
+// and their torques about the centre of mass, then moves the body by semi-implicit Euler.
+//
+// A cell's submerged share is its vertical extent below the water line (the cell treated as a
+// slab, tilted with the body): exact for an upright box, whose cells are layers; for a sphere
+// the cells are small cubes and the share a staircase, which the tests hold to the spherical cap.
+// There is no added mass (the water a body drags along when it heaves): a box's heave period is
+// 2 pi sqrt(d / g) for draft d, where a real one is a little slower.
+#pragma once
+
+#include "step07_buoyancy/sea_surface.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <vector>
+
+namespace step07 {
+
+constexpr double kWaterDensity = 1025;   // kg/m^3, sea water
+constexpr double kMaxSubstep = 1.0 / 120;  // seconds: a frame of any length is cut into steps this short or shorter
+
+enum class ShapeKind { Box, Sphere };
+struct Shape {
+    ShapeKind kind = ShapeKind::Box;
+    glm::dvec3 size{1.0};  // a box's sides (x, y up, z); a sphere's diameter in x
+};
+double shape_volume(const Shape& shape);
+// The diagonal of the inertia tensor per kilogram, in the body's frame.
+glm::dvec3 inertia_per_mass(const Shape& shape);
+
+// One piece of the hull: centre and sides in the body's frame, and its volume (a sphere's cubes
+// are scaled so that they add up to the sphere's volume).
+struct HullCell {
+    glm::dvec3 offset{0.0}, size{0.0};
+    double volume = 0;
+};
+std::vector<HullCell> hull_cells(const Shape& shape, int cells_per_side);
+
+struct BodySettings {
+    Shape shape;
+    double density = 500;       // kg/m^3: below the water's it floats
+    double linear_drag = 0.5;   // 1/s: the drag's rate per kilogram of water displaced
+    double angular_drag = 0.5;  // 1/s, scaled by the submerged share
+    int cells_per_side = 8;
+};
+
+// The water under one cell during a frame (queried once a frame): its height at the frame's
+// start and end, the surface's gradient, and the water's velocity. Substeps read the tangent plane.
+struct WaterPatch {
+    glm::dvec2 at{0.0};
+    double height_before = 0, height_now = 0;
+    glm::dvec2 gradient{0.0};   // dh/dx, dh/dz of the displaced surface
+    glm::dvec3 velocity{0.0};
+    double height(glm::dvec2 p, double share) const;  // share: 0 at the frame's start, 1 at its end
+};
+
+class FloatingBody {
+public:
+    FloatingBody(const BodySettings& settings, glm::dvec3 position, glm::dquat orientation = glm::dquat(1, 0, 0, 0));
+
+    // Advances dt seconds in equal substeps no longer than kMaxSubstep, the sea moving from
+    // `before` to `now` over the frame.
+    void step(const Surface& before, const Surface& now, double dt);
+    // An impulse (N s) at a world point (the mouse's push).
+    void push(glm::dvec3 impulse, glm::dvec3 at);
+    // Steering: a force (N) at a point of the body's frame, for the next step only.
+    void add_force(glm::dvec3 force_world, glm::dvec3 at_body);
+
+    const BodySettings& settings() const { return settings_; }
+    glm::dvec3 position() const { return position_; }
+    glm::dquat orientation() const { return orientation_; }
+    glm::dvec3 velocity() const { return velocity_; }
+    glm::dvec3 angular_velocity() const { return angular_velocity_; }
+    double mass() const { return mass_; }
+    double submerged_volume() const { return submerged_volume_; }  // after the last substep
+    const std::vector<HullCell>& cells() const { return cells_; }
+    // On still water at y = 0, the energy (J) the forces above can only take away: kinetic,
+    // gravity's potential, and buoyancy's (each cell's force rho_w g V wet(y) is minus the
+    // derivative of rho_w g V times the integral of wet from y up). Drag only lowers it.
+    double energy_in_still_water() const;
+    glm::dvec3 to_world(glm::dvec3 body_point) const { return position_ + orientation_ * body_point; }
+
+private:
+    void substep(double h, double share);
+    glm::dmat3 world_inertia_inverse() const;
+
+    BodySettings settings_;
+    std::vector<HullCell> cells_;
+    std::vector<WaterPatch> water_;
+    double mass_ = 0;
+    glm::dvec3 inertia_{0.0};  // body frame, kg m^2
+    glm::dvec3 position_{0.0}, velocity_{0.0}, angular_velocity_{0.0};
+    glm::dquat orientation_{1, 0, 0, 0};
+    glm::dvec3 extra_force_{0.0}, extra_torque_{0.0};
+    double submerged_volume_ = 0;
+};
+
+}  // namespace step07

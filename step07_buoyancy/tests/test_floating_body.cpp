@@ -1,0 +1,201 @@
+// Bodies on still water against Archimedes and the heave oscillator's closed form; on a moving
+// sea against what a sailor sees: a buoy rides the surface, a long raft does not follow short
+// waves. Every run is deterministic (fixed frame times).
+#include "step07_buoyancy/floating_body.hpp"
+#include "step07_buoyancy/sea_maps.hpp"
+#include "step07_buoyancy/sea_query.hpp"
+
+#include "common/constants.hpp"
+#include "step05_fft/spectrum.hpp"
+#include "step06_foam_sky/cascades.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+namespace {
+
+using step07::BodySettings;
+using step07::FloatingBody;
+using step07::ShapeKind;
+
+const step07::FlatSea kCalm;
+
+BodySettings box(glm::dvec3 size, double density, double drag = 0.5) {
+    BodySettings s;
+    s.shape = {ShapeKind::Box, size};
+    s.density = density;
+    s.linear_drag = drag;
+    s.angular_drag = 1.0;
+    return s;
+}
+
+void run(FloatingBody& body, double seconds, double dt) {
+    for (double t = 0; t < seconds - 1e-9; t += dt) body.step(kCalm, kCalm, dt);
+}
+
+TEST(FloatingBody, ABoxFloatsAtArchimedesDraft) {
+    // Draft d = (rho_b / rho_w) height: the displaced water weighs what the box weighs.
+    for (double density : {200.0, 500.0, 900.0}) {
+        FloatingBody body(box({2, 1, 3}, density), {0, 0.3, 0});
+        run(body, 40, 1.0 / 60);
+        const double draft = 0.5 - body.position().y;  // the water at 0, the bottom half a metre below the centre
+        const double expected = density / step07::kWaterDensity * 1.0;
+        EXPECT_NEAR(draft, expected, 0.01 * expected) << "density " << density;
+        EXPECT_NEAR(body.submerged_volume(), density / step07::kWaterDensity * 6.0, 0.01 * 6.0 * density / step07::kWaterDensity);
+    }
+}
+
+TEST(FloatingBody, ADenserBodySinks) {
+    FloatingBody body(box({1, 1, 1}, 1400), {0, 0, 0});
+    run(body, 10, 1.0 / 60);
+    EXPECT_LT(body.position().y, -5.0);
+    EXPECT_LT(body.velocity().y, 0.0);
+}
+
+// The spherical cap of depth d holds pi d^2 (3 r - d) / 3: the draft that displaces `volume`.
+double cap_depth(double radius, double volume) {
+    double lo = 0, hi = 2 * radius;
+    for (int i = 0; i < 100; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (ocean::kPi * mid * mid * (3 * radius - mid) / 3 < volume ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+TEST(FloatingBody, ASphereSinksToTheCapThatWeighsAsMuch) {
+    for (double density : {250.0, 600.0}) {
+        BodySettings s;
+        s.shape = {ShapeKind::Sphere, glm::dvec3(1.0)};
+        s.density = density;
+        s.cells_per_side = 16;
+        FloatingBody body(s, {0, 0, 0});
+        run(body, 40, 1.0 / 60);
+        const double draft = 0.5 - body.position().y;
+        const double expected = cap_depth(0.5, density / step07::kWaterDensity * step07::shape_volume(s.shape));
+        EXPECT_NEAR(draft, expected, 0.02) << "density " << density << " (2 % of the diameter)";
+    }
+}
+
+// Upward zero crossings of y - mean after `skip` seconds: the mean period.
+double heave_period(const std::vector<double>& y, double dt, double mean) {
+    std::vector<double> crossings;
+    for (std::size_t i = 1; i < y.size(); ++i)
+        if (y[i - 1] < mean && y[i] >= mean) crossings.push_back((double(i) - (y[i] - mean) / (y[i] - y[i - 1])) * dt);
+    if (crossings.size() < 3) return 0;
+    return (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+}
+
+TEST(FloatingBody, ABoxHeavesWithThePeriodOfItsSpring) {
+    // Raised 5 cm from its draft d and let go: m y'' = -rho_w g A y - c y', c = m * linear_drag
+    // (the drag is per kilogram of water displaced, which at rest is the body's mass). Period
+    // 2 pi / sqrt(g / d - (drag / 2)^2): 2 pi sqrt(d / g) without drag. No added mass in the model.
+    const double density = 600, drag = 0.2;
+    const double draft = density / step07::kWaterDensity;
+    FloatingBody body(box({2, 1, 2}, density, drag), {0, 0.5 - draft + 0.05, 0});
+    const double dt = 1.0 / 240;
+    std::vector<double> y;
+    for (int i = 0; i < 240 * 12; ++i) {
+        body.step(kCalm, kCalm, dt);
+        y.push_back(body.position().y);
+    }
+    const double expected = ocean::kTwoPi / std::sqrt(ocean::kGravity / draft - drag * drag / 4);
+    EXPECT_NEAR(heave_period(y, dt, 0.5 - draft), expected, 0.05 * expected);
+    // It decays, about as e^(-drag t / 2) (0.33 after 11 s): the last second's swing is less than
+    // half the first's.
+    const auto swing = [&](std::size_t from) {
+        const auto [lo, hi] = std::minmax_element(y.begin() + long(from), y.begin() + long(from + 240));
+        return *hi - *lo;
+    };
+    EXPECT_LT(swing(y.size() - 240), 0.5 * swing(0));
+}
+
+TEST(FloatingBody, ADropDiesDownAtEveryFrameTime) {
+    // Dropped from 2 m into still water, tipped: at 240 down to 10 frames a second the energy
+    // (kinetic, gravity's and buoyancy's potential) never grows from one second to the next, and
+    // the box settles where Archimedes puts it. Explicit Euler gained energy here (its oscillator
+    // spirals outwards); semi-implicit Euler keeps it, and the drag takes it.
+    for (double dt : {1.0 / 240, 1.0 / 60, 1.0 / 30, 1.0 / 10}) {
+        FloatingBody body(box({2, 0.6, 3}, 400), {0, 2, 0}, glm::angleAxis(0.3, glm::dvec3(0.6, 0, 0.8)));
+        double previous = body.energy_in_still_water();
+        const double dropped_with = previous;
+        for (int second = 0; second < 30; ++second) {
+            run(body, 1.0, dt);
+            const double energy = body.energy_in_still_water();
+            EXPECT_LE(energy, previous + 1e-4 * std::abs(dropped_with)) << "dt " << dt << ", second " << second;
+            previous = energy;
+        }
+        EXPECT_LT(glm::length(body.velocity()), 0.01) << "dt " << dt;
+        EXPECT_NEAR(0.3 - body.position().y, 0.6 * 400 / step07::kWaterDensity, 0.005) << "dt " << dt;
+    }
+}
+
+// A JONSWAP sea as the renderer simulates it (step06's four cascades, here at 64 x 64 in double).
+struct JonswapSea {
+    std::vector<step05::InitialSpectrum> cascades;
+    double choppiness = 1.0;
+    explicit JonswapSea(double wind_speed) {
+        step05::SpectrumParams p;
+        p.wind_speed = wind_speed;
+        p.resolution = 64;
+        p.patch_size = 250;
+        for (const auto& c : step06::cascade_spectra(p)) cascades.push_back(step05::initial_spectrum(c));
+    }
+    step07::MapSea at(double time) const { return step07::reference_sea(cascades, time, choppiness); }
+};
+
+double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+    double ma = 0, mb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) ma += a[i], mb += b[i];
+    ma /= double(a.size()), mb /= double(b.size());
+    double ab = 0, aa = 0, bb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) ab += (a[i] - ma) * (b[i] - mb), aa += (a[i] - ma) * (a[i] - ma), bb += (b[i] - mb) * (b[i] - mb);
+    return ab / std::sqrt(aa * bb);
+}
+double variance(const std::vector<double>& a) {
+    double m = 0, v = 0;
+    for (double x : a) m += x;
+    m /= double(a.size());
+    for (double x : a) v += (x - m) * (x - m);
+    return v / double(a.size());
+}
+
+TEST(FloatingBody, ABuoyRidesTheSeaAndARaftSmoothsIt) {
+    // 60 s of a 7 m/s JONSWAP sea (peak wavelength about 40 m) at 10 frames a second: a 0.6 m
+    // buoy's heave follows the surface under it (correlation > 0.98); a 160 m raft, four peak
+    // wavelengths, heaves less than half the surface's variance at its centre.
+    const JonswapSea jonswap(7);
+    BodySettings buoy_settings;
+    buoy_settings.shape = {ShapeKind::Sphere, glm::dvec3(0.6)};
+    buoy_settings.density = 400;
+    buoy_settings.cells_per_side = 6;
+    FloatingBody buoy(buoy_settings, {3, 0, 5});
+    BodySettings raft_settings = box({160, 1, 160}, 500);
+    raft_settings.cells_per_side = 12;
+    FloatingBody raft(raft_settings, {0, 0, 0});
+    const double dt = 0.1;
+    std::vector<double> buoy_y, surface_at_buoy, raft_y, surface_at_raft;
+    step07::MapSea before = jonswap.at(0);
+    for (int frame = 1; frame <= 600; ++frame) {
+        const step07::MapSea now = jonswap.at(frame * dt);
+        buoy.step(before, now, dt);
+        raft.step(before, now, dt);
+        if (frame > 100) {  // after the drop has settled
+            buoy_y.push_back(buoy.position().y);
+            surface_at_buoy.push_back(step07::query(now, {buoy.position().x, buoy.position().z}).height);
+            raft_y.push_back(raft.position().y);
+            surface_at_raft.push_back(step07::query(now, {raft.position().x, raft.position().z}).height);
+        }
+        before = now;
+    }
+    std::cout << "buoy-surface correlation " << correlation(buoy_y, surface_at_buoy) << ", raft heave variance / surface's "
+              << variance(raft_y) / variance(surface_at_raft) << "\n";
+    EXPECT_GT(correlation(buoy_y, surface_at_buoy), 0.98);
+    EXPECT_LT(variance(raft_y), 0.5 * variance(surface_at_raft));
+    EXPECT_GT(variance(surface_at_raft), 0.01) << "a sea, not a calm";
+}
+
+}  // namespace
