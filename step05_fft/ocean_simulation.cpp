@@ -168,6 +168,7 @@ void OceanSimulation::simulate(double time, Backend backend, float choppiness, o
     ocean::GpuTimers untimed;  // disabled: its scopes cost nothing
     ocean::GpuTimers& t = timers != nullptr ? *timers : untimed;
     const int layers = 4 * cascade_count();
+    maps_on_cpu_ = backend == Backend::Fftw;
     if (backend == Backend::Fftw) {
         ocean::GpuScope scope(t, "fftw+assemble+upload");
         upload_cpu_maps(time, choppiness);

@@ -81,6 +81,10 @@ public:
     // Binds the two maps to texture units 0, 1 and points `program`'s u_displacement and
     // u_slopes at them (a program without one of them ignores it).
     void bind_maps(const ocean::ShaderProgram& program) const;
+    // This frame's maps as the FFTW backend left them on the CPU (level 0 and mipmaps, layer
+    // major), when this frame's came from it; nullptr after a GPU transform (step07 then reads
+    // the textures back).
+    const CpuSimulation* maps_on_cpu() const { return maps_on_cpu_ ? cpu_.get() : nullptr; }
     // The fields of every cascade as 4 packed complex values per texel (tests, export).
     std::vector<float> read_fields() const;
     // One mip level of the displacement (or slopes) texture, every cascade: layer major, RGBA (tests).
@@ -101,6 +105,7 @@ private:
     ocean::Buffer twiddles_;  // e^{+2 pi i m / N} for fft.comp
     ocean::Texture displacement_, slopes_;
     std::unique_ptr<CpuSimulation> cpu_;  // the FFTW backend, made when first used
+    bool maps_on_cpu_ = false;             // the last simulate() was FFTW's
     struct AutoTrial {  // Backend::Auto at this resolution (allocate() starts a new one)
         bool decided = false;
         Backend chosen = Backend::GpuFft;

@@ -1,1 +1,227 @@
-int main() { return 0; }
+// step07_buoyancy: things that float on step06's sea.
+// Beyond the notes. The sea is step06's, drawn by step06's program (foam_sky.hpp); this chapter
+// asks it questions. Each frame the maps the renderer draws reach the CPU (from the FFTW backend
+// directly, or from the GPU through map_readback.hpp, a frame late), the height above each hull
+// cell is found by inverting the choppy displacement (sea_query.hpp), and a buoy, a raft and a
+// boat move under buoyancy and drag (floating_body.hpp).
+// Controls: step06's; the panel sets each body's size and density, drops them again, pushes the
+// raft, and steers the boat (throttle and rudder).
+#include "step06_foam_sky/foam_sky.hpp"
+#include "step07_buoyancy/body_mesh.hpp"
+#include "step07_buoyancy/floating_body.hpp"
+#include "step07_buoyancy/map_readback.hpp"
+#include "step07_buoyancy/sea_maps.hpp"
+#include "step07_buoyancy/sea_query.hpp"
+
+#include "common/error.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <optional>
+
+namespace {
+
+ocean::StepInfo buoyancy_info() {
+    return {"Buoyancy", "- (beyond the notes)",
+            "step06's sea, read back: the height above a world point by inverting the choppy displacement, "
+            "and bodies that float on it (buoyancy and drag over the hull's cells, semi-implicit Euler)."};
+}
+
+// A sea the bodies can read, and the time it belongs to.
+struct TimedSea {
+    step07::MapSea sea;
+    double time = 0;
+};
+
+class Buoyancy : public step06::FoamSky {
+public:
+    Buoyancy() : FoamSky(buoyancy_info()) {
+        use_shaders_of("step06_foam_sky");
+        ocean::ParamRegistry& p = params();
+        auto group = p.group("bodies", &bodies_changed_);
+        p.add_float("buoy_diameter", &buoy_diameter_, 0.2f, 5, "the buoy's diameter, metres");
+        p.add_float("buoy_density", &buoy_density_, 50, 3000, "kg/m^3 (water: 1025)");
+        p.add_float("raft_size", &raft_size_, 1, 200, "the raft's side, metres");
+        p.add_float("raft_density", &raft_density_, 50, 3000, "kg/m^3");
+        p.add_float("boat_length", &boat_length_, 2, 60, "the boat's length (beam a third, depth a sixth), metres");
+        p.add_float("boat_density", &boat_density_, 50, 3000, "kg/m^3 of its closed hull");
+        p.add_float("drag", &drag_, 0, 5, "linear drag, per second per kilogram of water displaced");
+        p.add_float("drop_height", &drop_height_, -2, 10, "metres above the mean level the bodies are dropped from");
+        // Not in the group: steering and the query load do not drop the bodies again.
+        p.add_float("boat_throttle", &throttle_, -1, 1, "the boat's thrust, a fraction of its weight / 20").in_group("steering");
+        p.add_float("boat_rudder", &rudder_, -1, 1, "the boat's turning force at its stern").in_group("steering");
+        p.add_int("queries", &extra_queries_, 0, 100000,
+                  "extra height queries a frame on a grid around the camera (the bench's load)").in_group("steering");
+        offer_export([this](const std::string& dir) { export_all(dir); });
+    }
+
+private:
+    void update(double time, double dt) override {
+        FoamSky::update(time, dt);
+        ocean::GpuScope timed(timers(), "bodies");
+        const auto started = std::chrono::steady_clock::now();
+        if (auto sea = newest_sea()) {
+            sea_before_ = sea_now_ ? std::move(sea_now_) : std::optional<TimedSea>(*sea);
+            sea_now_ = std::move(sea);
+        }
+        if (!sea_now_) return;
+        if (bodies_built_for_ != bodies_changed_.value || bodies_.empty()) {
+            bodies_built_for_ = bodies_changed_.value;
+            drop_bodies();
+        }
+        steer_boat();
+        for (auto& body : bodies_) body.step(sea_before_->sea, sea_now_->sea, dt);
+        run_extra_queries();
+        for (std::size_t b = 0; b < bodies_.size(); ++b)
+            trajectory_.push_back({time, int(b), bodies_[b].position(), bodies_[b].orientation()});
+        bodies_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    }
+
+    // The maps of this frame (FFTW) or the latest read back from the GPU (a frame late).
+    std::optional<TimedSea> newest_sea() {
+        std::vector<double> tiles;
+        for (const auto& s : spectra_) tiles.push_back(s->patch_size);
+        if (const step05::CpuSimulation* cpu = gpu_->maps_on_cpu()) {
+            const auto& level = cpu->levels()[0];
+            latency_frames_ = 0;
+            return TimedSea{step07::sea_from_layers(level.displacement, level.slopes, level.size, tiles), time()};
+        }
+        readback_.request(*gpu_, time());
+        if (auto arrived = readback_.take()) {
+            latency_frames_ = 1 + readback_.frames_in_flight();
+            return TimedSea{step07::sea_from_layers(arrived->displacement, arrived->slopes, arrived->n, tiles), arrived->time};
+        }
+        return std::nullopt;
+    }
+
+    // The three bodies, in front of the camera (anywhere on the ocean: positions in double).
+    void drop_bodies() {
+        bodies_.clear();
+        trajectory_.clear();
+        const glm::dvec3 eye = camera().eye_world();
+        const glm::vec3 f = camera().forward();
+        const glm::dvec2 ahead = glm::normalize(glm::dvec2(f.x, f.z) + glm::dvec2(1e-9, 0));
+        const glm::dvec2 side(-ahead.y, ahead.x);
+        const auto spot = [&](double forward, double across) {
+            const glm::dvec2 p = glm::dvec2(eye.x, eye.z) + forward * ahead + across * side;
+            return glm::dvec3(p.x, drop_height_, p.y);
+        };
+        step07::BodySettings buoy, raft, boat;
+        buoy.shape = {step07::ShapeKind::Sphere, glm::dvec3(buoy_diameter_)};
+        buoy.density = buoy_density_;
+        raft.shape = {step07::ShapeKind::Box, {raft_size_, 0.4, raft_size_}};
+        raft.density = raft_density_;
+        boat.shape = {step07::ShapeKind::Box, {boat_length_, boat_length_ / 6, boat_length_ / 3}};
+        boat.density = boat_density_;
+        for (auto* s : {&buoy, &raft, &boat}) {
+            s->linear_drag = drag_;
+            s->cells_per_side = 6;
+        }
+        const double heading = std::atan2(ahead.y, ahead.x);
+        bodies_.emplace_back(buoy, spot(14, -3));
+        bodies_.emplace_back(raft, spot(26, 5), glm::angleAxis(0.4, glm::dvec3(0, 1, 0)));
+        bodies_.emplace_back(boat, spot(40, -6), glm::angleAxis(-heading + 0.5, glm::dvec3(0, 1, 0)));
+    }
+
+    // Thrust along the boat's length at its middle, the rudder's sideways force at its stern.
+    void steer_boat() {
+        if (bodies_.size() < 3) return;
+        step07::FloatingBody& boat = bodies_[2];
+        const double weight = boat.mass() * ocean::kGravity;
+        const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0), across = boat.orientation() * glm::dvec3(0, 0, 1);
+        boat.add_force(throttle_ * weight / 20 * along, {0, 0, 0});
+        boat.add_force(rudder_ * weight / 100 * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
+    }
+
+    // `queries` heights on a grid around the camera: what a game's particles or foam props would
+    // ask. Their sum goes to the panel, so the work is not optimised away.
+    void run_extra_queries() {
+        query_checksum_ = 0;
+        if (extra_queries_ == 0) return;
+        const glm::dvec3 eye = camera().eye_world();
+        const int side = int(std::ceil(std::sqrt(double(extra_queries_))));
+        for (int i = 0; i < extra_queries_; ++i)
+            query_checksum_ += step07::query(sea_now_->sea, {eye.x + (i % side - side / 2) * 0.7, eye.z + (i / side - side / 2) * 0.7}).height;
+    }
+
+    void draw_in_scene(const glm::mat4& view_projection) override {
+        ocean::ShaderProgram* p = program("body", {"body.vert", "body.frag"});
+        if (p == nullptr || bodies_.empty()) return;
+        if (!meshes_) meshes_ = std::make_unique<step07::BodyMeshes>();
+        look_.upload_shading(*p);
+        p->set("u_view_projection", view_projection);
+        p->set("u_eye", eye_from_origin());
+        p->set("u_sky_max_lod", sky_->max_lod());
+        glBindTextureUnit(UNIT_SKY, sky_->cubemap());
+        glUseProgram(p->id());
+        glEnable(GL_DEPTH_TEST);
+        const glm::vec3 colours[3] = {{0.8f, 0.12f, 0.03f}, {0.35f, 0.22f, 0.12f}, {0.75f, 0.75f, 0.72f}};
+        for (std::size_t b = 0; b < bodies_.size(); ++b) {
+            const step07::FloatingBody& body = bodies_[b];
+            const step07::Shape& shape = body.settings().shape;
+            const glm::vec3 scale = shape.kind == step07::ShapeKind::Sphere ? glm::vec3(float(shape.size.x)) : glm::vec3(shape.size);
+            // From the world origin near the camera, in double, then float: small numbers anywhere.
+            const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(body.position() - world_origin())) *
+                                    glm::mat4_cast(glm::quat(body.orientation())) * glm::scale(glm::mat4(1.0f), scale);
+            p->set("u_model", model);
+            p->set("u_scale", scale);
+            p->set("u_colour", colours[b % 3]);
+            meshes_->draw(shape.kind);
+        }
+        glDisable(GL_DEPTH_TEST);
+    }
+
+    void ui() override {
+        FoamSky::ui();
+        ImGui::Separator();
+        ImGui::Text("bodies and queries: %.2f ms a frame; the maps %s", bodies_ms_,
+                    latency_frames_ == 0 ? "of this frame (FFTW)" : "read back, a frame late");
+        static const char* names[3] = {"buoy", "raft", "boat"};
+        for (std::size_t b = 0; b < bodies_.size(); ++b)
+            ImGui::Text("%s: %.2f m above the mean level, %.0f%% under water", names[b % 3], bodies_[b].position().y,
+                        100 * bodies_[b].submerged_volume() / step07::shape_volume(bodies_[b].settings().shape));
+        if (ImGui::Button("drop again")) bodies_.clear();
+        ImGui::SameLine();
+        if (ImGui::Button("push the raft") && bodies_.size() > 1)
+            bodies_[1].push(glm::dvec3(0, 0.5, 2) * bodies_[1].mass(), bodies_[1].to_world({0.3 * raft_size_, 0.2, 0}));
+    }
+
+    // step06's export (the surface and foam) and each body's trajectory, one row a body a frame.
+    void export_all(const std::string& dir) {
+        ocean::ProgramFactory programs = program_factory();
+        step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view_, time(), ocean_params_.choppiness,
+                               short_wave_slope_variance_, params());
+        std::ofstream out(dir + "/trajectories.csv");
+        out << "time,body,x,y,z,qw,qx,qy,qz\n";
+        out.precision(10);
+        for (const auto& r : trajectory_)
+            out << r.time << ',' << r.body << ',' << r.position.x << ',' << r.position.y << ',' << r.position.z << ','
+                << r.orientation.w << ',' << r.orientation.x << ',' << r.orientation.y << ',' << r.orientation.z << '\n';
+        if (!out) throw ocean::Error("cannot write '" + dir + "/trajectories.csv'");
+    }
+
+    struct TrajectoryRow {
+        double time;
+        int body;
+        glm::dvec3 position;
+        glm::dquat orientation;
+    };
+    std::vector<step07::FloatingBody> bodies_;
+    std::vector<TrajectoryRow> trajectory_;
+    std::optional<TimedSea> sea_before_, sea_now_;
+    step07::MapReadback readback_;
+    std::unique_ptr<step07::BodyMeshes> meshes_;
+    ocean::Generation bodies_changed_;
+    unsigned bodies_built_for_ = 0;
+    float buoy_diameter_ = 1.2f, buoy_density_ = 350, raft_size_ = 5, raft_density_ = 450;
+    float boat_length_ = 9, boat_density_ = 300, drag_ = 0.5f, drop_height_ = 1.5f;
+    float throttle_ = 0, rudder_ = 0;
+    int extra_queries_ = 0, latency_frames_ = 0;
+    double bodies_ms_ = 0, query_checksum_ = 0;
+};
+
+}  // namespace
+
+OCEAN_MAIN(Buoyancy)

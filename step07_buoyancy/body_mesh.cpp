@@ -1,0 +1,58 @@
+#include "step07_buoyancy/body_mesh.hpp"
+
+#include "common/constants.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace step07 {
+
+BodyMeshes::Mesh BodyMeshes::upload(const std::vector<glm::vec3>& data) {
+    Mesh m;
+    m.vertices = ocean::make_buffer();
+    glNamedBufferStorage(m.vertices.id(), GLsizeiptr(data.size() * sizeof(glm::vec3)), data.data(), 0);
+    m.vao = ocean::make_vertex_array();
+    glVertexArrayVertexBuffer(m.vao.id(), 0, m.vertices.id(), 0, 2 * sizeof(glm::vec3));
+    for (GLuint a = 0; a < 2; ++a) {
+        glEnableVertexArrayAttrib(m.vao.id(), a);
+        glVertexArrayAttribFormat(m.vao.id(), a, 3, GL_FLOAT, GL_FALSE, a * GLuint(sizeof(glm::vec3)));
+        glVertexArrayAttribBinding(m.vao.id(), a, 0);
+    }
+    m.count = int(data.size() / 2);
+    return m;
+}
+
+BodyMeshes::BodyMeshes() {
+    std::vector<glm::vec3> cube;  // (position, normal) pairs, two triangles a face
+    for (int axis = 0; axis < 3; ++axis)
+        for (float sign : {-1.0f, 1.0f}) {
+            glm::vec3 n(0.0f), u(0.0f), v(0.0f);
+            n[axis] = sign;
+            u[(axis + 1) % 3] = 0.5f;
+            v[(axis + 2) % 3] = 0.5f * sign;  // counter-clockwise seen from outside
+            const glm::vec3 c = 0.5f * n;
+            const glm::vec3 corners[4] = {c - u - v, c + u - v, c + u + v, c - u + v};
+            for (int i : {0, 1, 2, 0, 2, 3}) cube.insert(cube.end(), {corners[i], n});
+        }
+    cube_ = upload(cube);
+    std::vector<glm::vec3> sphere;
+    const int rings = 16, segments = 32;
+    const auto point = [&](int ring, int segment) {
+        const double theta = ocean::kPi * ring / rings, phi = ocean::kTwoPi * segment / segments;
+        return glm::vec3(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
+    };
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const glm::vec3 a = point(r, s), b = point(r + 1, s), c = point(r + 1, s + 1), d = point(r, s + 1);
+            for (const glm::vec3& p : {a, c, b, a, d, c}) sphere.insert(sphere.end(), {0.5f * p, p});
+        }
+    sphere_ = upload(sphere);
+}
+
+void BodyMeshes::draw(ShapeKind kind) const {
+    const Mesh& m = kind == ShapeKind::Sphere ? sphere_ : cube_;
+    glBindVertexArray(m.vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, m.count);
+}
+
+}  // namespace step07

@@ -1,0 +1,51 @@
+// Chapter 7.5: the GPU's maps back on the CPU without stalling. glGetTextureImage into client
+// memory waits until the GPU has finished everything queued before it (the frame's transforms):
+// the CPU then idles for the GPU's whole frame. Into a pixel buffer object it only queues a copy;
+// a fence after it says when the copy is done, and the buffer is mapped then, a frame later.
+// So the queries see the sea of the previous frame: at 60 frames a second the surface has moved
+// by its vertical speed times 1/60 s, a few centimetres (the tests measure it).
+#pragma once
+
+#include "common/gl.hpp"
+#include "step05_fft/ocean_simulation.hpp"
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace step07 {
+
+struct ArrivedMaps {
+    double time = 0;  // the simulation time the maps belong to
+    int n = 0;
+    std::vector<float> displacement, slopes;  // level 0, layer major, RGBA
+};
+
+class MapReadback {
+public:
+    MapReadback() = default;
+    ~MapReadback();
+    MapReadback(const MapReadback&) = delete;
+    MapReadback& operator=(const MapReadback&) = delete;
+
+    // Queues the copy of both maps' level 0 (every cascade) made for `time`; returns at once.
+    // With both buffers still in flight the request is dropped (the GPU is two frames behind).
+    void request(const step05::OceanSimulation& ocean, double time);
+    // The oldest copy that has landed since, if any (never waits).
+    std::optional<ArrivedMaps> take();
+    int frames_in_flight() const;
+
+private:
+    struct Slot {
+        ocean::Buffer buffer;
+        std::size_t bytes = 0;
+        GLsync fence = nullptr;
+        double time = 0;
+        int n = 0;
+        long order = 0;
+    };
+    std::array<Slot, 2> slots_;
+    long requests_ = 0;
+};
+
+}  // namespace step07
