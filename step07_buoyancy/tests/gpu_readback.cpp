@@ -1,0 +1,67 @@
+// The GPU's maps read back through a pixel buffer and a fence (map_readback.hpp): what arrives is
+// the sea of the frame it was asked for (against the double reference at that time), one frame
+// late, so a query from it differs from the current frame's CPU answer by no more than the
+// surface moves in one frame.
+#include "step06_foam_sky/cascades.hpp"
+#include "step07_buoyancy/map_readback.hpp"
+#include "step07_buoyancy/sea_maps.hpp"
+#include "step07_buoyancy/sea_query.hpp"
+#include "tests/gpu/gl_test_context.hpp"
+#include "tests/gpu/program_cache.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+struct Step07Gpu : ocean_test::GlTest {
+    ocean_test::ProgramCache cache;
+};
+
+TEST_F(Step07Gpu, AQueryReadBackAFrameLateIsOffByOneFramesMotion) {
+    step05::SpectrumParams params;
+    params.resolution = 32;
+    params.wind_speed = 12;
+    std::vector<step05::InitialSpectrum> spectra;
+    std::vector<double> tiles;
+    for (const auto& c : step06::cascade_spectra(params)) {
+        spectra.push_back(step05::initial_spectrum(c));
+        tiles.push_back(c.patch_size);
+    }
+    std::vector<const step05::InitialSpectrum*> pointers;
+    for (const auto& s : spectra) pointers.push_back(&s);
+    step05::OceanSimulation ocean(cache.factory());
+    ocean.set_spectra(pointers);
+    const double t0 = 7.0, dt = 1.0 / 60, choppiness = 1.2;
+
+    step07::MapReadback readback;
+    ocean.simulate(t0, step05::Backend::GpuFft, float(choppiness));
+    readback.request(ocean, t0);
+    std::optional<step07::ArrivedMaps> arrived;
+    int frames = 0;
+    for (double t = t0 + dt; !arrived && frames < 3; t += dt, ++frames) {
+        ocean.simulate(t, step05::Backend::GpuFft, float(choppiness));  // the next frame's work
+        arrived = readback.take();
+    }
+    ASSERT_TRUE(arrived.has_value()) << "nothing arrived in 3 frames";
+    EXPECT_EQ(arrived->time, t0);
+    EXPECT_EQ(frames, 1) << "the copy should land by the next frame on a GPU that keeps up";
+
+    const step07::MapSea late = step07::sea_from_layers(arrived->displacement, arrived->slopes, arrived->n, tiles);
+    const step07::MapSea then = step07::reference_sea(spectra, t0, choppiness);
+    const step07::MapSea now = step07::reference_sea(spectra, t0 + dt, choppiness);
+    double worst_same_time = 0, worst_late = 0, moved = 0;
+    for (double x = -40; x < 40; x += 3.1)
+        for (double z = -40; z < 40; z += 3.7) {
+            const double h_late = step07::query(late, {x, z}).height, h_then = step07::query(then, {x, z}).height,
+                         h_now = step07::query(now, {x, z}).height;
+            worst_same_time = std::max(worst_same_time, std::abs(h_late - h_then));
+            worst_late = std::max(worst_late, std::abs(h_late - h_now));
+            moved = std::max(moved, std::abs(h_now - h_then));
+        }
+    EXPECT_LT(worst_same_time, 2e-3) << "the GPU's float maps against the double reference, metres";
+    EXPECT_GT(moved, 0.0);
+    EXPECT_LE(worst_late, moved + worst_same_time) << "one frame late: off by the frame's motion, " << moved << " m";
+}
+
+}  // namespace
