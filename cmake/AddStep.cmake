@@ -88,6 +88,10 @@ function(add_step name)
   foreach(file IN LISTS ARG_EXERCISES)
     set_property(GLOBAL APPEND PROPERTY OCEAN_EXERCISES "${CMAKE_CURRENT_SOURCE_DIR}/${file}")
   endforeach()
+  # ... and links the chapter's library, whose CPU reference the checks call.
+  if(ARG_EXERCISES AND ARG_LIBRARY)
+    set_property(GLOBAL APPEND PROPERTY OCEAN_EXERCISE_LIBRARIES ${name}_lib)
+  endif()
 
   set_property(GLOBAL APPEND PROPERTY OCEAN_STEPS ${name})
   set_property(GLOBAL APPEND PROPERTY OCEAN_SHADERS ${ARG_SHADERS})

@@ -9,6 +9,7 @@
 #include "step06_foam_sky/foam_sky.hpp"
 #include "step07_buoyancy/body_mesh.hpp"
 #include "step07_buoyancy/floating_body.hpp"
+#include "step07_buoyancy/gpu_queries.hpp"
 #include "step07_buoyancy/map_readback.hpp"
 #include "step07_buoyancy/sea_maps.hpp"
 #include "step07_buoyancy/sea_query.hpp"
@@ -53,7 +54,12 @@ public:
         p.add_float("boat_throttle", &throttle_, -1, 1, "the boat's thrust, a fraction of its weight / 20").in_group("steering");
         p.add_float("boat_rudder", &rudder_, -1, 1, "the boat's turning force at its stern").in_group("steering");
         p.add_int("queries", &extra_queries_, 0, 100000,
-                  "extra height queries a frame on a grid around the camera (the bench's load)").in_group("steering");
+                  "height queries a frame on a grid ahead of the camera, drawn as dots where the water is")
+            .in_group("queries");
+        p.add_choice("query_device", &query_device_, {"cpu", "gpu"},
+                     "where the queries are answered: cpu (sea_query.cpp, every core, this frame's maps) or gpu "
+                     "(height_query.comp, answers a frame late)")
+            .in_group("queries");
         offer_export([this](const std::string& dir) { export_all(dir); });
     }
 
@@ -135,18 +141,67 @@ private:
         boat.add_force(rudder_ * weight / 100 * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
     }
 
-    // `queries` heights on a grid around the camera: what a game's particles or foam props would
-    // ask. Their sum goes to the panel, so the work is not optimised away.
+    // `queries` heights on a grid ahead of the camera, 0.7 m apart: what a game's particles or
+    // floating debris would ask. Each answer becomes a dot (draw_query_dots), in world metres.
     void run_extra_queries() {
-        query_checksum_ = 0;
-        if (extra_queries_ == 0) return;
+        if (extra_queries_ == 0) {
+            query_dots_.clear();
+            return;
+        }
         const glm::dvec3 eye = camera().eye_world();
-        const int side = int(std::ceil(std::sqrt(double(extra_queries_))));
+        const glm::vec3 f = camera().forward();
+        const glm::dvec2 ahead = glm::normalize(glm::dvec2(f.x, f.z) + glm::dvec2(1e-9, 0)), side(-ahead.y, ahead.x);
+        const int columns = int(std::ceil(std::sqrt(double(extra_queries_))));
+        std::vector<glm::dvec2> world;
         for (int i = 0; i < extra_queries_; ++i)
-            query_checksum_ += step07::query(sea_now_->sea, {eye.x + (i % side - side / 2) * 0.7, eye.z + (i / side - side / 2) * 0.7}).height;
+            world.push_back(glm::dvec2(eye.x, eye.z) + (5.0 + 0.7 * (i / columns)) * ahead + 0.7 * (i % columns - columns / 2) * side);
+        if (query_device_ == 0) {
+            const std::vector<step07::SeaPoint> answers = step07::query_many(sea_now_->sea, world);
+            query_dots_.resize(world.size());
+            for (std::size_t i = 0; i < world.size(); ++i) query_dots_[i] = {world[i].x, answers[i].height, world[i].y};
+            return;
+        }
+        // On the GPU: this frame's points go up; last frame's answers come back.
+        if (!gpu_queries_) gpu_queries_ = std::make_unique<step07::GpuQueries>(program_factory());
+        std::vector<glm::vec2> relative;
+        for (const auto& w : world) relative.emplace_back(w - cascade_view_.origin);
+        gpu_queries_->submit(relative, *gpu_, cascade_view_, time());
+        if (auto arrived = gpu_queries_->take()) {
+            query_dots_.resize(arrived->points.size());
+            for (std::size_t i = 0; i < arrived->points.size(); ++i) {
+                const glm::dvec2 w = arrived->origin + glm::dvec2(arrived->points[i]);
+                query_dots_[i] = {w.x, arrived->answers[i].height, w.y};
+            }
+        }
+    }
+
+    void draw_query_dots(const glm::mat4& view_projection) {
+        if (query_dots_.empty()) return;
+        ocean::ShaderProgram* p = program("query_points", {"query_points.vert", "query_points.frag"});
+        if (p == nullptr) return;
+        std::vector<glm::vec3> positions;
+        for (const auto& d : query_dots_) positions.emplace_back(d - world_origin());
+        dots_buffer_ = ocean::make_buffer();
+        glNamedBufferStorage(dots_buffer_.id(), GLsizeiptr(positions.size() * sizeof(glm::vec3)), positions.data(), 0);
+        if (dots_vao_.id() == 0) {
+            dots_vao_ = ocean::make_vertex_array();
+            glEnableVertexArrayAttrib(dots_vao_.id(), 0);
+            glVertexArrayAttribFormat(dots_vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+            glVertexArrayAttribBinding(dots_vao_.id(), 0, 0);
+        }
+        glVertexArrayVertexBuffer(dots_vao_.id(), 0, dots_buffer_.id(), 0, sizeof(glm::vec3));
+        p->set("u_view_projection", view_projection);
+        glUseProgram(p->id());
+        glEnable(GL_PROGRAM_POINT_SIZE);
+        glEnable(GL_DEPTH_TEST);
+        glBindVertexArray(dots_vao_.id());
+        glDrawArrays(GL_POINTS, 0, GLsizei(positions.size()));
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_PROGRAM_POINT_SIZE);
     }
 
     void draw_in_scene(const glm::mat4& view_projection) override {
+        draw_query_dots(view_projection);
         ocean::ShaderProgram* p = program("body", {"body.vert", "body.frag"});
         if (p == nullptr || bodies_.empty()) return;
         if (!meshes_) meshes_ = std::make_unique<step07::BodyMeshes>();
@@ -218,8 +273,12 @@ private:
     float buoy_diameter_ = 1.2f, buoy_density_ = 350, raft_size_ = 5, raft_density_ = 450;
     float boat_length_ = 9, boat_density_ = 300, drag_ = 0.5f, drop_height_ = 1.5f;
     float throttle_ = 0, rudder_ = 0;
-    int extra_queries_ = 0, latency_frames_ = 0;
-    double bodies_ms_ = 0, query_checksum_ = 0;
+    int extra_queries_ = 0, query_device_ = 0, latency_frames_ = 0;
+    double bodies_ms_ = 0;
+    std::unique_ptr<step07::GpuQueries> gpu_queries_;
+    std::vector<glm::dvec3> query_dots_;  // world metres: the latest answers
+    ocean::Buffer dots_buffer_;
+    ocean::VertexArray dots_vao_;
 };
 
 }  // namespace

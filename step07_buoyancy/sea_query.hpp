@@ -17,6 +17,8 @@
 
 #include "step07_buoyancy/sea_surface.hpp"
 
+#include <vector>
+
 namespace step07 {
 
 enum class Inversion { None, FixedPoint, Newton };
@@ -36,6 +38,14 @@ struct QueryOptions {
 };
 
 SeaPoint query(const Surface& sea, glm::dvec2 p, const QueryOptions& options = {});
+
+// One Newton step from x towards the rest position drawn above p, given the surface at x; the
+// fixed point p - D(x) where det J <= 0.05 (folding). shaders/sea_query.glsl's newton_step is the
+// same on the GPU (its exercise is held to this one).
+glm::dvec2 newton_step(glm::dvec2 x, glm::dvec2 p, const SurfaceAt& s);
+
+// Many queries at once, on every core (the answers in the points' order).
+std::vector<SeaPoint> query_many(const Surface& sea, const std::vector<glm::dvec2>& points, const QueryOptions& options = {});
 
 // The unit normal of the displaced surface at a rest position: dP/dz x dP/dx (ocean_maps.glsl's
 // choppy_normal), P(x) = x + D(x).

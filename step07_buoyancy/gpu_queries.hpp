@@ -1,0 +1,61 @@
+// Height queries answered on the GPU (shaders/height_query.comp), for the many small things that
+// only need a height: particles, floating debris, a camera that must stay above the waves. The
+// points go up, one dispatch answers them all from the maps already on the GPU, and only the
+// answers come back (16 bytes each), through a buffer and a fence as map_readback does: a frame
+// late, never waiting.
+#pragma once
+
+#include "common/gl.hpp"
+#include "common/shader.hpp"
+#include "step05_fft/ocean_simulation.hpp"
+#include "step06_foam_sky/cascades.hpp"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace step07 {
+
+struct GpuAnswer {
+    float height;
+    float normal_x, normal_z;  // the unit normal's horizontal components (y = sqrt(1 - x^2 - z^2))
+    float miss;                // metres between p and where the answer's rest point is drawn
+};
+
+struct GpuAnswers {
+    double time = 0;
+    glm::dvec2 origin{0.0};  // the world origin the points were given from
+    std::vector<glm::vec2> points;
+    std::vector<GpuAnswer> answers;
+};
+
+class GpuQueries {
+public:
+    explicit GpuQueries(ocean::ProgramFactory programs) : programs_(std::move(programs)) {}
+    ~GpuQueries();
+    GpuQueries(const GpuQueries&) = delete;
+    GpuQueries& operator=(const GpuQueries&) = delete;
+
+    // Queues the answers for `points` (metres from view.origin) on the maps of `ocean` at `time`,
+    // `steps` Newton steps each. Dropped when both buffers are still in flight.
+    void submit(const std::vector<glm::vec2>& points, const step05::OceanSimulation& ocean,
+                const step06::CascadeView& view, double time, int steps = 4);
+    // The oldest batch that has been answered, if any (never waits).
+    std::optional<GpuAnswers> take();
+
+private:
+    struct Slot {
+        ocean::Buffer points, answers, readback;
+        std::size_t capacity = 0;
+        GLsync fence = nullptr;
+        GpuAnswers batch;
+        long order = 0;
+    };
+    ocean::ProgramFactory programs_;
+    std::array<Slot, 2> slots_;
+    long submitted_ = 0;
+};
+
+}  // namespace step07

@@ -1,0 +1,37 @@
+#version 450 core
+// A batch of height queries on the GPU, against the maps the sea is drawn from (level 0 of every
+// cascade, as the vertices near the camera read them): for each point p, the rest position under
+// it by Newton's steps (sea_query.glsl), then the height and the normal there. The answers go back
+// to the CPU a frame later (gpu_queries.hpp), 16 bytes a query instead of the maps' megabytes.
+layout(local_size_x = 64) in;
+#include "step06_foam_sky/shaders/cascades.glsl"
+#include "sea_query.glsl"
+
+layout(std430, binding = 0) readonly buffer Points { vec2 points[]; };   // metres from the world origin near the camera
+layout(std430, binding = 1) writeonly buffer Answers { vec4 answers[]; };  // (height, normal.x, normal.z, |miss|)
+uniform int u_count;
+uniform int u_steps;
+
+void surface(vec2 x, out vec4 displacement, out vec4 slopes) {
+    displacement = vec4(0.0);
+    slopes = vec4(0.0);
+    for (int c = 0; c < CASCADES; ++c) {
+        if (!u_cascade_enabled[c]) continue;
+        displacement += textureLod(u_displacement, cascade_uv(x, c), 0.0);
+        slopes += textureLod(u_slopes, cascade_uv(x, c), 0.0);
+    }
+}
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= uint(u_count)) return;
+    vec2 p = points[i], x = p;
+    vec4 displacement, slopes;
+    surface(x, displacement, slopes);
+    for (int step = 0; step < u_steps; ++step) {
+        x = newton_step(x, p, displacement, slopes);
+        surface(x, displacement, slopes);
+    }
+    vec3 n = choppy_normal(displacement, slopes);
+    answers[i] = vec4(displacement.y, n.x, n.z, length(x + displacement.xz - p));
+}
