@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 namespace {
 
@@ -60,6 +61,8 @@ TEST_F(Step07Gpu, AQueryReadBackAFrameLateIsOffByOneFramesMotion) {
             worst_late = std::max(worst_late, std::abs(h_late - h_now));
             moved = std::max(moved, std::abs(h_now - h_then));
         }
+    std::cout << "read back a frame late: " << worst_same_time << " m from the reference at its time, " << worst_late
+              << " m from the current frame, which moved " << moved << " m\n";
     EXPECT_LT(worst_same_time, 2e-3) << "the GPU's float maps against the double reference, metres";
     EXPECT_GT(moved, 0.0);
     EXPECT_LE(worst_late, moved + worst_same_time) << "one frame late: off by the frame's motion, " << moved << " m";
@@ -112,6 +115,8 @@ TEST_F(Step07Gpu, BatchQueriesOnTheGpuAnswerAsTheCpuDoes) {
         worst_normal = std::max(worst_normal, std::abs(double(answers->answers[i].normal_x) - expected[i].normal.x));
         converged += answers->answers[i].miss < 1e-3f ? 1 : 0;
     }
+    std::cout << "GPU batch: worst height " << worst << " m, normal " << worst_normal << ", " << converged
+              << " of 3000 within 1 mm\n";
     EXPECT_LT(worst, 2e-3) << "metres";
     EXPECT_LT(worst_normal, 5e-3);
     EXPECT_GT(converged, 2950) << "of 3000 within 1 mm after 4 steps";

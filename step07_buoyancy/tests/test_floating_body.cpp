@@ -44,6 +44,7 @@ TEST(FloatingBody, ABoxFloatsAtArchimedesDraft) {
         run(body, 40, 1.0 / 60);
         const double draft = 0.5 - body.position().y;  // the water at 0, the bottom half a metre below the centre
         const double expected = density / step07::kWaterDensity * 1.0;
+        std::cout << "box, density " << density << ": draft " << draft << " m, Archimedes " << expected << " m\n";
         EXPECT_NEAR(draft, expected, 0.01 * expected) << "density " << density;
         EXPECT_NEAR(body.submerged_volume(), density / step07::kWaterDensity * 6.0, 0.01 * 6.0 * density / step07::kWaterDensity);
     }
@@ -76,6 +77,7 @@ TEST(FloatingBody, ASphereSinksToTheCapThatWeighsAsMuch) {
         run(body, 40, 1.0 / 60);
         const double draft = 0.5 - body.position().y;
         const double expected = cap_depth(0.5, density / step07::kWaterDensity * step07::shape_volume(s.shape));
+        std::cout << "sphere, density " << density << ": draft " << draft << " m, cap " << expected << " m\n";
         EXPECT_NEAR(draft, expected, 0.02) << "density " << density << " (2 % of the diameter)";
     }
 }
@@ -103,6 +105,7 @@ TEST(FloatingBody, ABoxHeavesWithThePeriodOfItsSpring) {
         y.push_back(body.position().y);
     }
     const double expected = ocean::kTwoPi / std::sqrt(ocean::kGravity / draft - drag * drag / 4);
+    std::cout << "heave period " << heave_period(y, dt, 0.5 - draft) << " s, predicted " << expected << " s\n";
     EXPECT_NEAR(heave_period(y, dt, 0.5 - draft), expected, 0.05 * expected);
     // It decays, about as e^(-drag t / 2) (0.33 after 11 s): the last second's swing is less than
     // half the first's.

