@@ -39,7 +39,7 @@ int App::run(const std::vector<std::string>& args, const StepLocation& where) {
     if (parsed.error) return fail(kExitUsage, *parsed.error);
     const Options& options = parsed.options;
     if (options.help) {
-        std::cout << usage_text(step_name(), info_.title + " (notes " + info_.notes_sections + ")");
+        std::cout << usage_text(step_name(), info_.title + " (" + info_.notes_label() + ")");
         return kExitOk;
     }
     if (options.list_params) {

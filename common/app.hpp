@@ -45,8 +45,10 @@ namespace ocean {
 
 struct StepInfo {
     std::string title;          // "Sum of sines in 3D"
-    std::string notes_sections;  // "1.2.2"
+    std::string notes_sections;  // "1.2.2"; empty for a chapter beyond the notes
     std::string description;    // a paragraph: what the step shows and what is new
+    // "notes 1.2.2", or "beyond the notes" (--help's first line, the panel, the contact sheet).
+    std::string notes_label() const { return notes_sections.empty() ? "beyond the notes" : "notes " + notes_sections; }
 };
 
 struct StepLocation {

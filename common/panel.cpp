@@ -127,7 +127,7 @@ void App::draw_panel(float frame_ms) {
         if (!has_next) ImGui::EndDisabled();
     }
     ImGui::TextUnformatted(info_.title.c_str());
-    ImGui::TextDisabled("the notes, sections %s", info_.notes_sections.c_str());
+    ImGui::TextDisabled("%s", info_.notes_label().c_str());
     ImGui::PushTextWrapPos(0);
     ImGui::TextUnformatted(info_.description.c_str());
     ImGui::PopTextWrapPos();

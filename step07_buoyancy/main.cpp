@@ -25,7 +25,7 @@
 namespace {
 
 ocean::StepInfo buoyancy_info() {
-    return {"Buoyancy", "- (beyond the notes)",
+    return {"Buoyancy", "",
             "step06's sea, read back: the height above a world point by inverting the choppy displacement, "
             "and bodies that float on it (buoyancy and drag over the hull's cells, semi-implicit Euler)."};
 }
