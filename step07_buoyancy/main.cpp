@@ -4,8 +4,9 @@
 // directly, or from the GPU through map_readback.hpp, a frame late), the height above each hull
 // cell is found by inverting the choppy displacement (sea_query.hpp), and a buoy, a raft and a
 // boat move under buoyancy and drag (floating_body.hpp).
-// Controls: step06's; the panel sets each body's size and density, drops them again, pushes the
-// raft, and steers the boat (throttle and rudder).
+// Controls: step06's; the arrows steer the boat, a right click pushes the body under the cursor;
+// the panel sets each body's size and density, drops them again, and sets the boat's throttle
+// and rudder.
 #include "step06_foam_sky/foam_sky.hpp"
 #include "step07_buoyancy/body_mesh.hpp"
 #include "step07_buoyancy/floating_body.hpp"
@@ -16,8 +17,10 @@
 
 #include "common/error.hpp"
 
+#include <GLFW/glfw3.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <optional>
@@ -137,8 +140,10 @@ private:
         step07::FloatingBody& boat = bodies_[2];
         const double weight = boat.mass() * ocean::kGravity;
         const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0), across = boat.orientation() * glm::dvec3(0, 0, 1);
-        boat.add_force(throttle_ * weight / 20 * along, {0, 0, 0});
-        boat.add_force(rudder_ * weight / 100 * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
+        const double throttle = std::clamp(double(throttle_) + key_throttle_, -1.0, 1.0);
+        const double rudder = std::clamp(double(rudder_) + key_rudder_, -1.0, 1.0);
+        boat.add_force(throttle * weight / 20 * along, {0, 0, 0});
+        boat.add_force(rudder * weight / 100 * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
     }
 
     // `queries` heights on a grid ahead of the camera, 0.7 m apart: what a game's particles or
@@ -228,8 +233,36 @@ private:
         glDisable(GL_DEPTH_TEST);
     }
 
+    // The keys and the mouse (windowed; ui() runs once a frame): the arrows steer the boat, a
+    // right click pushes the body under the cursor away from the camera.
+    void read_input() {
+        const ImGuiIO& io = ImGui::GetIO();
+        if (!io.WantCaptureKeyboard) {
+            key_throttle_ = double(ImGui::IsKeyDown(GLFW_KEY_UP)) - double(ImGui::IsKeyDown(GLFW_KEY_DOWN));
+            key_rudder_ = double(ImGui::IsKeyDown(GLFW_KEY_RIGHT)) - double(ImGui::IsKeyDown(GLFW_KEY_LEFT));
+        }
+        if (io.WantCaptureMouse || !ImGui::IsMouseClicked(ImGuiMouseButton_Right) || io.DisplaySize.x <= 0) return;
+        // The cursor's ray, from the world origin near the camera, then the body closest to it.
+        const glm::vec2 ndc(2 * io.MousePos.x / io.DisplaySize.x - 1, 1 - 2 * io.MousePos.y / io.DisplaySize.y);
+        const glm::mat4 inverse = glm::inverse(camera().projection(aspect()) * camera().view(world_origin()));
+        const glm::vec4 near = inverse * glm::vec4(ndc, -1, 1), far = inverse * glm::vec4(ndc, 1, 1);
+        const glm::dvec3 from = world_origin() + glm::dvec3(glm::vec3(near) / near.w);
+        const glm::dvec3 ray = glm::normalize(glm::dvec3(glm::vec3(far) / far.w - glm::vec3(near) / near.w));
+        step07::FloatingBody* hit = nullptr;
+        double best = 0;
+        glm::dvec3 at(0.0);
+        for (auto& body : bodies_) {
+            const glm::dvec3 closest = from + std::max(0.0, glm::dot(body.position() - from, ray)) * ray;
+            const double miss = glm::length(body.position() - closest) / glm::length(body.settings().shape.size);
+            if (miss < 1.0 && (hit == nullptr || miss < best)) hit = &body, best = miss, at = closest;
+        }
+        const glm::dvec3 push = glm::normalize(glm::dvec3(ray.x, 0.0, ray.z) + glm::dvec3(1e-9, 0, 0));
+        if (hit != nullptr) hit->push(2.0 * hit->mass() * push, at);  // 2 m/s away from the camera
+    }
+
     void ui() override {
         FoamSky::ui();
+        read_input();
         ImGui::Separator();
         ImGui::Text("bodies and queries: %.2f ms a frame; the maps %s", bodies_ms_,
                     latency_frames_ == 0 ? "of this frame (FFTW)" : "read back, a frame late");
@@ -273,6 +306,7 @@ private:
     float buoy_diameter_ = 1.2f, buoy_density_ = 350, raft_size_ = 5, raft_density_ = 450;
     float boat_length_ = 9, boat_density_ = 300, drag_ = 0.5f, drop_height_ = 1.5f;
     float throttle_ = 0, rudder_ = 0;
+    double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held
     int extra_queries_ = 0, query_device_ = 0, latency_frames_ = 0;
     double bodies_ms_ = 0;
     std::unique_ptr<step07::GpuQueries> gpu_queries_;
