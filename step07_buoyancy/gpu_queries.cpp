@@ -4,18 +4,12 @@
 
 namespace step07 {
 
-GpuQueries::~GpuQueries() {
-    for (Slot& s : slots_)
-        if (s.fence != nullptr) glDeleteSync(s.fence);
-}
-
 void GpuQueries::submit(const std::vector<glm::vec2>& points, const step05::OceanSimulation& ocean,
                         const step06::CascadeView& view, double time, int steps) {
     if (points.empty()) return;
-    Slot* free = nullptr;
-    for (Slot& s : slots_)
-        if (s.fence == nullptr) free = &s;
-    if (free == nullptr) return;
+    const std::optional<int> slot = slots_.free_slot();
+    if (!slot) return;
+    Batch* free = &batches_[std::size_t(*slot)];
     ocean::ShaderProgram* p = programs_("height_query", {"step07_buoyancy/shaders/height_query.comp"}, {});
     if (p == nullptr) return;
     if (free->capacity < points.size()) {
@@ -39,22 +33,16 @@ void GpuQueries::submit(const std::vector<glm::vec2>& points, const step05::Ocea
     // The copy into the mappable buffer reads what the dispatch wrote.
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glCopyNamedBufferSubData(free->answers.id(), free->readback.id(), 0, 0, GLsizeiptr(points.size() * sizeof(GpuAnswer)));
-    free->fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    slots_.sent(*slot);
     free->batch.time = time;
     free->batch.origin = view.origin;
     free->batch.points = points;
-    free->order = submitted_++;
 }
 
 std::optional<GpuAnswers> GpuQueries::take() {
-    Slot* oldest = nullptr;
-    for (Slot& s : slots_)
-        if (s.fence != nullptr && (oldest == nullptr || s.order < oldest->order)) oldest = &s;
-    if (oldest == nullptr) return std::nullopt;
-    const GLenum state = glClientWaitSync(oldest->fence, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
-    if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED) return std::nullopt;
-    glDeleteSync(oldest->fence);
-    oldest->fence = nullptr;
+    const std::optional<int> slot = slots_.landed();
+    if (!slot) return std::nullopt;
+    Batch* oldest = &batches_[std::size_t(*slot)];
     GpuAnswers out = std::move(oldest->batch);
     out.answers.resize(out.points.size());
     const std::size_t bytes = out.answers.size() * sizeof(GpuAnswer);

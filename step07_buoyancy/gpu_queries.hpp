@@ -6,6 +6,7 @@
 #pragma once
 
 #include "common/gl.hpp"
+#include "step07_buoyancy/fenced_slots.hpp"
 #include "common/shader.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/cascades.hpp"
@@ -34,9 +35,6 @@ struct GpuAnswers {
 class GpuQueries {
 public:
     explicit GpuQueries(ocean::ProgramFactory programs) : programs_(std::move(programs)) {}
-    ~GpuQueries();
-    GpuQueries(const GpuQueries&) = delete;
-    GpuQueries& operator=(const GpuQueries&) = delete;
 
     // Queues the answers for `points` (metres from view.origin) on the maps of `ocean` at `time`,
     // `steps` Newton steps each. Dropped when both buffers are still in flight.
@@ -46,16 +44,14 @@ public:
     std::optional<GpuAnswers> take();
 
 private:
-    struct Slot {
+    struct Batch {
         ocean::Buffer points, answers, readback;
         std::size_t capacity = 0;
-        GLsync fence = nullptr;
         GpuAnswers batch;
-        long order = 0;
     };
     ocean::ProgramFactory programs_;
-    std::array<Slot, 2> slots_;
-    long submitted_ = 0;
+    std::array<Batch, FencedSlots::kSlots> batches_;
+    FencedSlots slots_;
 };
 
 }  // namespace step07

@@ -4,22 +4,10 @@
 
 namespace step07 {
 
-MapReadback::~MapReadback() {
-    for (Slot& s : slots_)
-        if (s.fence != nullptr) glDeleteSync(s.fence);
-}
-
-int MapReadback::frames_in_flight() const {
-    int n = 0;
-    for (const Slot& s : slots_) n += s.fence != nullptr ? 1 : 0;
-    return n;
-}
-
 void MapReadback::request(const step05::OceanSimulation& ocean, double time) {
-    Slot* free = nullptr;
-    for (Slot& s : slots_)
-        if (s.fence == nullptr) free = &s;
-    if (free == nullptr) return;
+    const std::optional<int> slot = slots_.free_slot();
+    if (!slot) return;
+    Copy* free = &copies_[std::size_t(*slot)];
     const int n = ocean.resolution();
     const std::size_t map_bytes = std::size_t(n) * std::size_t(n) * std::size_t(ocean.cascade_count()) * 4 * sizeof(float);
     if (free->bytes != 2 * map_bytes) {
@@ -34,22 +22,15 @@ void MapReadback::request(const step05::OceanSimulation& ocean, double time) {
     glGetTextureImage(ocean.slopes_texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(map_bytes),
                       reinterpret_cast<void*>(map_bytes));
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    free->fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    slots_.sent(*slot);
     free->time = time;
     free->n = n;
-    free->order = requests_++;
 }
 
 std::optional<ArrivedMaps> MapReadback::take() {
-    Slot* oldest = nullptr;
-    for (Slot& s : slots_)
-        if (s.fence != nullptr && (oldest == nullptr || s.order < oldest->order)) oldest = &s;
-    if (oldest == nullptr) return std::nullopt;
-    // Timeout 0: only asks. GL_SYNC_FLUSH_COMMANDS_BIT makes sure the fence reaches the GPU.
-    const GLenum state = glClientWaitSync(oldest->fence, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
-    if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED) return std::nullopt;
-    glDeleteSync(oldest->fence);
-    oldest->fence = nullptr;
+    const std::optional<int> slot = slots_.landed();
+    if (!slot) return std::nullopt;
+    const Copy* oldest = &copies_[std::size_t(*slot)];
     ArrivedMaps out;
     out.time = oldest->time;
     out.n = oldest->n;

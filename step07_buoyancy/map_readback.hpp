@@ -7,6 +7,7 @@
 #pragma once
 
 #include "common/gl.hpp"
+#include "step07_buoyancy/fenced_slots.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 
 #include <array>
@@ -23,29 +24,22 @@ struct ArrivedMaps {
 
 class MapReadback {
 public:
-    MapReadback() = default;
-    ~MapReadback();
-    MapReadback(const MapReadback&) = delete;
-    MapReadback& operator=(const MapReadback&) = delete;
-
     // Queues the copy of both maps' level 0 (every cascade) made for `time`; returns at once.
     // With both buffers still in flight the request is dropped (the GPU is two frames behind).
     void request(const step05::OceanSimulation& ocean, double time);
     // The oldest copy that has landed since, if any (never waits).
     std::optional<ArrivedMaps> take();
-    int frames_in_flight() const;
+    int frames_in_flight() const { return slots_.in_flight(); }
 
 private:
-    struct Slot {
+    struct Copy {
         ocean::Buffer buffer;
         std::size_t bytes = 0;
-        GLsync fence = nullptr;
         double time = 0;
         int n = 0;
-        long order = 0;
     };
-    std::array<Slot, 2> slots_;
-    long requests_ = 0;
+    std::array<Copy, FencedSlots::kSlots> copies_;
+    FencedSlots slots_;
 };
 
 }  // namespace step07
