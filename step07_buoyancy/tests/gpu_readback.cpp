@@ -12,28 +12,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <iostream>
 
 namespace {
 
 struct Step07Gpu : ocean_test::GlTest {
     ocean_test::ProgramCache cache;
+    // step06's four cascades at `resolution` in a `wind` m/s sea, their tiles, and the simulation.
+    std::vector<step05::InitialSpectrum> spectra;
+    std::vector<double> tiles;
+    std::unique_ptr<step05::OceanSimulation> ocean;
+    void make_sea(int resolution, double wind) {
+        step05::SpectrumParams params;
+        params.resolution = resolution;
+        params.wind_speed = wind;
+        for (const auto& c : step06::cascade_spectra(params)) {
+            spectra.push_back(step05::initial_spectrum(c));
+            tiles.push_back(c.patch_size);
+        }
+        std::vector<const step05::InitialSpectrum*> pointers;
+        for (const auto& s : spectra) pointers.push_back(&s);
+        ocean = std::make_unique<step05::OceanSimulation>(cache.factory());
+        ocean->set_spectra(pointers);
+    }
 };
 
 TEST_F(Step07Gpu, AQueryReadBackAFrameLateIsOffByOneFramesMotion) {
-    step05::SpectrumParams params;
-    params.resolution = 32;
-    params.wind_speed = 12;
-    std::vector<step05::InitialSpectrum> spectra;
-    std::vector<double> tiles;
-    for (const auto& c : step06::cascade_spectra(params)) {
-        spectra.push_back(step05::initial_spectrum(c));
-        tiles.push_back(c.patch_size);
-    }
-    std::vector<const step05::InitialSpectrum*> pointers;
-    for (const auto& s : spectra) pointers.push_back(&s);
-    step05::OceanSimulation ocean(cache.factory());
-    ocean.set_spectra(pointers);
+    make_sea(32, 12);
+    step05::OceanSimulation& ocean = *this->ocean;
     const double t0 = 7.0, dt = 1.0 / 60, choppiness = 1.2;
 
     step07::MapReadback readback;
@@ -72,22 +79,11 @@ TEST_F(Step07Gpu, BatchQueriesOnTheGpuAnswerAsTheCpuDoes) {
     // The same maps (FFTW's, uploaded) queried on both sides, 3000 points around an origin 12 km
     // out: the GPU's Newton steps in float against sea_query.cpp in double, within 2 mm (GL's
     // bilinear weights and float texture coordinates).
-    step05::SpectrumParams params;
-    params.resolution = 64;
-    params.wind_speed = 14;
-    std::vector<step05::InitialSpectrum> spectra;
-    std::vector<double> tiles;
+    make_sea(64, 14);
+    step05::OceanSimulation& ocean = *this->ocean;
     step06::CascadeView view;
-    for (const auto& c : step06::cascade_spectra(params)) {
-        spectra.push_back(step05::initial_spectrum(c));
-        view.patch_sizes[tiles.size()] = float(c.patch_size);
-        tiles.push_back(c.patch_size);
-    }
+    for (std::size_t c = 0; c < tiles.size(); ++c) view.patch_sizes[c] = float(tiles[c]);
     view.place_origin({12000.0, -3000.0});
-    std::vector<const step05::InitialSpectrum*> pointers;
-    for (const auto& s : spectra) pointers.push_back(&s);
-    step05::OceanSimulation ocean(cache.factory());
-    ocean.set_spectra(pointers);
     ocean.simulate(4.0, step05::Backend::Fftw, 1.3f);
     const step05::CpuSimulation* cpu = ocean.maps_on_cpu();
     ASSERT_NE(cpu, nullptr);
