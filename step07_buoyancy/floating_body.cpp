@@ -42,11 +42,6 @@ double WaterPatch::height(glm::dvec2 p, double share) const {
     return height_before + (height_now - height_before) * share + glm::dot(gradient, p - at);
 }
 
-// A cell's vertical half-extent, tilted with the body: its three sides projected on y.
-static double vertical_half_extent(const glm::dmat3& r, const HullCell& cell) {
-    return 0.5 * (std::abs(r[0].y) * cell.size.x + std::abs(r[1].y) * cell.size.y + std::abs(r[2].y) * cell.size.z);
-}
-
 FloatingBody::FloatingBody(const BodySettings& settings, glm::dvec3 position, glm::dquat orientation)
     : settings_(settings), cells_(hull_cells(settings.shape, settings.cells_per_side)), position_(position),
       orientation_(orientation) {
@@ -87,29 +82,32 @@ void FloatingBody::substep(double h, double share) {
     glm::dvec3 force(0.0, -mass_ * ocean::kGravity, 0.0), torque(0.0);
     force += extra_force_;
     torque += extra_torque_;
+    // The water line over each cell's centre, on this substep's tangent planes.
+    water_lines_.resize(cells_.size());
+    for (std::size_t i = 0; i < cells_.size(); ++i) {
+        const glm::dvec3 centre = position_ + r * cells_[i].offset;
+        water_lines_[i] = water_[i].height({centre.x, centre.z}, share);
+    }
+    // Archimedes (hull_forces.cpp), then the drag on each wet cell against the water's own motion.
+    const Wrench lift = buoyancy(cells_, r, position_, water_lines_);
+    force += lift.force;
+    torque += lift.torque;
     submerged_volume_ = 0;
     for (std::size_t i = 0; i < cells_.size(); ++i) {
-        const HullCell& cell = cells_[i];
-        const glm::dvec3 arm = r * cell.offset;
-        const glm::dvec3 centre = position_ + arm;
-        const double half = vertical_half_extent(r, cell);
-        const double water_line = water_[i].height({centre.x, centre.z}, share);
-        const double wet = std::clamp((water_line - (centre.y - half)) / (2 * half), 0.0, 1.0);
+        const glm::dvec3 arm = r * cells_[i].offset;
+        const double wet = wet_share(water_lines_[i], position_.y + arm.y, vertical_half_extent(r, cells_[i]));
         if (wet <= 0) continue;
-        const double volume = wet * cell.volume;
+        const double volume = wet * cells_[i].volume;
         submerged_volume_ += volume;
-        // Buoyancy at the submerged slab's middle; drag against the water's own motion.
-        const glm::dvec3 buoyancy(0.0, kWaterDensity * ocean::kGravity * volume, 0.0);
-        const glm::dvec3 buoyancy_arm = arm + glm::dvec3(0.0, -half + wet * half, 0.0);
         const glm::dvec3 cell_velocity = velocity_ + glm::cross(angular_velocity_, arm);
         const glm::dvec3 drag = -kWaterDensity * volume * settings_.linear_drag * (cell_velocity - water_[i].velocity);
-        force += buoyancy + drag;
-        torque += glm::cross(buoyancy_arm, buoyancy) + glm::cross(arm, drag);
+        force += drag;
+        torque += glm::cross(arm, drag);
     }
     const glm::dmat3 inverse_inertia = world_inertia_inverse();
     const glm::dmat3 inertia = glm::inverse(inverse_inertia);
-    const double wet_share = submerged_volume_ / shape_volume(settings_.shape);
-    torque -= settings_.angular_drag * wet_share * (inertia * angular_velocity_);
+    const double submerged_share = submerged_volume_ / shape_volume(settings_.shape);
+    torque -= settings_.angular_drag * submerged_share * (inertia * angular_velocity_);
     // Semi-implicit Euler: velocities first, then positions with the new velocities (symplectic:
     // an undamped oscillator keeps its energy instead of gaining it, as explicit Euler's would).
     velocity_ += h * force / mass_;

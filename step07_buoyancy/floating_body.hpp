@@ -11,6 +11,7 @@
 // 2 pi sqrt(d / g) for draft d, where a real one is a little slower.
 #pragma once
 
+#include "step07_buoyancy/hull_forces.hpp"
 #include "step07_buoyancy/sea_surface.hpp"
 
 #include <glm/gtc/quaternion.hpp>
@@ -19,7 +20,6 @@
 
 namespace step07 {
 
-constexpr double kWaterDensity = 1025;   // kg/m^3, sea water
 constexpr double kMaxSubstep = 1.0 / 120;  // seconds: a frame of any length is cut into steps this short or shorter
 
 enum class ShapeKind { Box, Sphere };
@@ -31,12 +31,6 @@ double shape_volume(const Shape& shape);
 // The diagonal of the inertia tensor per kilogram, in the body's frame.
 glm::dvec3 inertia_per_mass(const Shape& shape);
 
-// One piece of the hull: centre and sides in the body's frame, and its volume (a sphere's cubes
-// are scaled so that they add up to the sphere's volume).
-struct HullCell {
-    glm::dvec3 offset{0.0}, size{0.0};
-    double volume = 0;
-};
 std::vector<HullCell> hull_cells(const Shape& shape, int cells_per_side);
 
 struct BodySettings {
@@ -90,6 +84,7 @@ private:
     BodySettings settings_;
     std::vector<HullCell> cells_;
     std::vector<WaterPatch> water_;
+    std::vector<double> water_lines_;  // this substep's, one a cell
     double mass_ = 0;
     glm::dvec3 inertia_{0.0};  // body frame, kg m^2
     glm::dvec3 position_{0.0}, velocity_{0.0}, angular_velocity_{0.0};

@@ -55,10 +55,15 @@ const Exercise* find(const std::string& step, int number) {
 
 // The step's shaders copied into `work`, with the exercise's function body replaced by its stub.
 void prepare(const Exercise& e, const fs::path& work) {
-    const fs::path source = fs::path(OCEAN_SOURCE_DIR) / e.step / "shaders";
     fs::create_directories(work);
-    for (const auto& entry : fs::directory_iterator(source))
-        if (entry.is_regular_file()) fs::copy_file(entry.path(), work / entry.path().filename(), fs::copy_options::overwrite_existing);
+    if (is_cpp(e.file)) {  // a C++ exercise: that file alone, from the step's folder
+        fs::copy_file(fs::path(OCEAN_SOURCE_DIR) / e.step / e.file, work / e.file, fs::copy_options::overwrite_existing);
+    } else {
+        const fs::path source = fs::path(OCEAN_SOURCE_DIR) / e.step / "shaders";
+        for (const auto& entry : fs::directory_iterator(source))
+            if (entry.is_regular_file())
+                fs::copy_file(entry.path(), work / entry.path().filename(), fs::copy_options::overwrite_existing);
+    }
     std::ifstream in(work / e.file);
     std::ostringstream out;
     bool inside = false, found = false;
@@ -101,8 +106,10 @@ int main(int argc, char** argv) {
         const fs::path work = argv[4];
         if (verb == "prepare") {
             prepare(*e, work);
-            std::printf("exercise %d of %s: %s\n%s\nedit %s (the step reloads it when you save)\n", e->number,
-                        e->step.c_str(), e->title.c_str(), e->task.c_str(), (work / e->file).string().c_str());
+            std::printf("exercise %d of %s: %s\n%s\nedit %s %s\n", e->number, e->step.c_str(), e->title.c_str(),
+                        e->task.c_str(), (work / e->file).string().c_str(),
+                        is_cpp(e->file) ? "(C++: ./ocean check holds it to the chapter's own)"
+                                        : "(the step reloads it when you save)");
             return 0;
         }
         if (!fs::exists(work / e->file)) {

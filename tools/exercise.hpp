@@ -70,6 +70,16 @@ Verdict check_vector(const fs::path& work, const std::string& include, const std
                      const VectorReference& reference, double tolerance, double low, double high,
                      const SetUniforms& set_uniforms = {}, int components = 3);
 
+// A C++ exercise: its file is a .cpp of the step's folder, not a shader (is_cpp), and it is checked
+// on the CPU. `driver` (C++ source, written beside the learner's file) is compiled with it by the
+// compiler that built this tool, with the repository on the include path, and run with the number
+// of cases as its argument: it prints one line of numbers a case. Each line is held to
+// reference(case) within `tolerance` of the largest reference value.
+bool is_cpp(const std::string& file);
+using CaseReference = std::function<std::vector<double>(int index)>;
+Verdict check_cpp(const fs::path& work, const std::string& file, const std::string& driver, int cases,
+                  const CaseReference& reference, double tolerance);
+
 // step05's inverse FFT with the work folder's fft.comp, run by the chapter's own OceanSimulation (its
 // buffers, twiddle table and dispatches) on random spectra at N = 64, 128, 256 and 512 (radix-4
 // stages, and a radix-2 stage last where log2 N is odd), against the CPU reference transform.

@@ -7,7 +7,9 @@
 #include "common/program_library.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -178,6 +180,58 @@ Verdict check_fft(const fs::path& work) {
         detail << "; ";
     }
     return {true, detail.str() + "the inverse 2D transform of random spectra"};
+}
+
+bool is_cpp(const std::string& file) { return fs::path(file).extension() == ".cpp"; }
+
+Verdict check_cpp(const fs::path& work, const std::string& file, const std::string& driver, int cases,
+                  const CaseReference& reference, double tolerance) {
+    std::ofstream(work / "check_driver.cpp") << driver;
+    const fs::path exe = work / "check_driver", log = work / "check_compile.log", output = work / "check_output.txt";
+    const std::string compile = std::string("'") + OCEAN_CXX_COMPILER + "' -std=c++17 -O1 -I'" + OCEAN_SOURCE_DIR +
+                                "' '" + (work / "check_driver.cpp").string() + "' '" + (work / file).string() + "' -o '" +
+                                exe.string() + "' > '" + log.string() + "' 2>&1";
+    if (std::system(compile.c_str()) != 0) {
+        std::ifstream in(log);
+        std::string line, first_error;
+        while (std::getline(in, line))
+            if (line.find("error") != std::string::npos) {
+                first_error = line;
+                break;
+            }
+        return {false, file + " does not compile: " + first_error + " (all of it: " + log.string() + ")"};
+    }
+    const std::string run = "'" + exe.string() + "' " + std::to_string(cases) + " > '" + output.string() + "'";
+    if (std::system(run.c_str()) != 0) return {false, "the check's program stopped before it finished (a crash in " + file + "?)"};
+    std::ifstream in(output);
+    double scale = 0;
+    std::vector<std::vector<double>> expected;
+    for (int c = 0; c < cases; ++c) {
+        expected.push_back(reference(c));
+        for (double v : expected.back()) scale = std::max(scale, std::abs(v));
+    }
+    double worst = -1;
+    int worst_case = 0;
+    std::size_t worst_value = 0;
+    std::vector<double> worst_got;
+    for (int c = 0; c < cases; ++c) {
+        std::string line;
+        if (!std::getline(in, line)) return {false, "the check's program printed " + std::to_string(c) + " of " + std::to_string(cases) + " cases"};
+        std::istringstream values(line);
+        std::vector<double> got;
+        for (double v; values >> v;) got.push_back(v);
+        if (got.size() != expected[std::size_t(c)].size()) return {false, "case " + std::to_string(c) + ": wrong count of values"};
+        for (std::size_t i = 0; i < got.size(); ++i) {
+            const double error = std::isfinite(got[i]) ? std::abs(got[i] - expected[std::size_t(c)][i]) : INFINITY;
+            if (error > worst) worst = error, worst_case = c, worst_value = i, worst_got = got;
+        }
+    }
+    std::ostringstream detail;
+    detail << "worst difference " << worst << " (" << worst / std::max(scale, 1e-30) << " of the largest value) at case "
+           << worst_case << ", value " << worst_value << ": got " << worst_got[worst_value] << ", expected "
+           << expected[std::size_t(worst_case)][worst_value] << "; tolerance " << tolerance << " of the largest, over "
+           << cases << " cases";
+    return {worst <= tolerance * scale, detail.str()};
 }
 
 }  // namespace exercises

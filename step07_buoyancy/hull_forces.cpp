@@ -1,0 +1,33 @@
+#include "step07_buoyancy/hull_forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace step07 {
+
+double vertical_half_extent(const glm::dmat3& rotation, const HullCell& cell) {
+    return 0.5 * (std::abs(rotation[0].y) * cell.size.x + std::abs(rotation[1].y) * cell.size.y +
+                  std::abs(rotation[2].y) * cell.size.z);
+}
+
+double wet_share(double water_line, double centre_y, double half_extent) {
+    return std::clamp((water_line - (centre_y - half_extent)) / (2 * half_extent), 0.0, 1.0);
+}
+
+Wrench buoyancy(const std::vector<HullCell>& cells, const glm::dmat3& rotation, glm::dvec3 centre_of_mass,
+                const std::vector<double>& water_lines) {
+    Wrench total;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        const glm::dvec3 arm = rotation * cells[i].offset;
+        const double half = vertical_half_extent(rotation, cells[i]);
+        const double wet = wet_share(water_lines[i], centre_of_mass.y + arm.y, half);
+        const glm::dvec3 force(0.0, kWaterDensity * ocean::kGravity * wet * cells[i].volume, 0.0);
+        // The submerged part runs from the cell's bottom (arm.y - half) up wet * 2 half: its middle.
+        const glm::dvec3 at = arm + glm::dvec3(0.0, -half + wet * half, 0.0);
+        total.force += force;
+        total.torque += glm::cross(at, force);
+    }
+    return total;
+}
+
+}  // namespace step07

@@ -1,0 +1,41 @@
+// Chapter 7.3's Archimedes, cell by cell, as pure functions (no state, no GL): what a hull's cells
+// feel from the water around them. floating_body.cpp adds the drag and integrates; exercise 2
+// (./ocean exercise step07_buoyancy 2) empties buoyancy() in a copy of hull_forces.cpp.
+#pragma once
+
+#include "common/constants.hpp"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace step07 {
+
+constexpr double kWaterDensity = 1025;  // kg/m^3, sea water
+
+// One piece of the hull: centre and sides in the body's frame, and its volume (a sphere's cubes
+// are scaled so that they add up to the sphere's volume).
+struct HullCell {
+    glm::dvec3 offset{0.0}, size{0.0};
+    double volume = 0;
+};
+
+// A cell's vertical half-extent, tilted with the body: its three sides projected on y.
+double vertical_half_extent(const glm::dmat3& rotation, const HullCell& cell);
+// The share of a cell of that half-extent, centred at height centre_y, below the water line:
+// its vertical extent under the water, 0 (dry) to 1 (under).
+double wet_share(double water_line, double centre_y, double half_extent);
+
+// A force and its torque about the centre of mass.
+struct Wrench {
+    glm::dvec3 force{0.0}, torque{0.0};
+};
+
+// Archimedes over the hull: each cell i (centred at centre_of_mass + rotation * offset, the water's
+// height above its centre water_lines[i]) is pushed up by the weight of the water it displaces,
+// rho_w g V wet_share, at the middle of its submerged part (on its vertical through the centre,
+// half the wet height above the cell's bottom); summed, with the torques about the centre of mass.
+Wrench buoyancy(const std::vector<HullCell>& cells, const glm::dmat3& rotation, glm::dvec3 centre_of_mass,
+                const std::vector<double>& water_lines);
+
+}  // namespace step07
