@@ -3,6 +3,7 @@
 #include "common/constants.hpp"
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace step07 {
@@ -47,10 +48,50 @@ BodyMeshes::BodyMeshes() {
             for (const glm::vec3& p : {a, c, b, a, d, c}) sphere.insert(sphere.end(), {0.5f * p, p});
         }
     sphere_ = upload(sphere);
+    hull_ = upload(hull_triangles());
+}
+
+// Triangles (position, normal) of the unit hull: the two sides lofted between sections, the deck
+// and the transom (the stern's flat end), each flat-shaded, counter-clockwise from outside.
+std::vector<glm::vec3> BodyMeshes::hull_triangles() {
+    const int sections = 32, levels = 8;
+    const auto side_point = [](int i, int j, float sign) {
+        const double x = -0.5 + double(i) / sections, y = -0.5 + double(j) / levels;
+        return glm::vec3(float(x), float(y), sign * float(hull_half_beam(x, y)));
+    };
+    std::vector<glm::vec3> out;
+    const auto triangle = [&out](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 outward) {
+        glm::vec3 n = glm::cross(b - a, c - a);
+        if (glm::length(n) < 1e-9f) return;  // the bow's edge, where the sides meet
+        n = glm::normalize(n);
+        if (glm::dot(n, outward) < 0) std::swap(b, c), n = -n;
+        out.insert(out.end(), {a, n, b, n, c, n});
+    };
+    for (float sign : {-1.0f, 1.0f})
+        for (int i = 0; i < sections; ++i)
+            for (int j = 0; j < levels; ++j) {
+                const glm::vec3 a = side_point(i, j, sign), b = side_point(i + 1, j, sign), c = side_point(i + 1, j + 1, sign),
+                                d = side_point(i, j + 1, sign);
+                const glm::vec3 outward(0.0f, -0.3f, sign);  // out of the side, and down near the keel
+                triangle(a, b, c, outward);
+                triangle(a, c, d, outward);
+            }
+    for (int i = 0; i < sections; ++i) {  // the deck, y = 0.5
+        const glm::vec3 a = side_point(i, levels, -1), b = side_point(i + 1, levels, -1), c = side_point(i + 1, levels, 1),
+                        d = side_point(i, levels, 1);
+        triangle(a, b, c, {0, 1, 0});
+        triangle(a, c, d, {0, 1, 0});
+    }
+    for (int j = 0; j < levels; ++j) {  // the transom, x = -0.5
+        const glm::vec3 a = side_point(0, j, -1), b = side_point(0, j, 1), c = side_point(0, j + 1, 1), d = side_point(0, j + 1, -1);
+        triangle(a, b, c, {-1, 0, 0});
+        triangle(a, c, d, {-1, 0, 0});
+    }
+    return out;
 }
 
 void BodyMeshes::draw(ShapeKind kind) const {
-    const Mesh& m = kind == ShapeKind::Sphere ? sphere_ : cube_;
+    const Mesh& m = kind == ShapeKind::Sphere ? sphere_ : kind == ShapeKind::Hull ? hull_ : cube_;
     glBindVertexArray(m.vao.id());
     glDrawArrays(GL_TRIANGLES, 0, m.count);
 }

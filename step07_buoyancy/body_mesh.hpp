@@ -1,9 +1,12 @@
-// The bodies' meshes: a unit cube (sides 1, scaled to a box) and a unit-diameter sphere, with
-// normals, drawn by shaders/body.vert and body.frag.
+// The bodies' meshes: a unit cube (sides 1, scaled to a box), a unit-diameter sphere and a unit
+// hull (hull_half_beam's sections lofted, with its deck and transom), with normals, drawn by
+// shaders/body.vert and body.frag.
 #pragma once
 
 #include "common/gl.hpp"
 #include "step07_buoyancy/floating_body.hpp"
+
+#include <vector>
 
 namespace step07 {
 
@@ -20,7 +23,8 @@ private:
         int count = 0;
     };
     static Mesh upload(const std::vector<glm::vec3>& positions_and_normals);
-    Mesh cube_, sphere_;
+    static std::vector<glm::vec3> hull_triangles();
+    Mesh cube_, sphere_, hull_;
 };
 
 }  // namespace step07

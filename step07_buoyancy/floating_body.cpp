@@ -9,8 +9,19 @@
 
 namespace step07 {
 
+double hull_half_beam(double x, double y) {
+    const double along = std::abs(2 * x), ends = x > 0 ? along * along * along : std::pow(along, 8);
+    return 0.5 * std::sqrt(std::max(0.0, 1 - ends)) * (0.3 + 0.7 * (y + 0.5));
+}
+
 double shape_volume(const Shape& shape) {
     if (shape.kind == ShapeKind::Sphere) return ocean::kPi * std::pow(shape.size.x, 3) / 6;
+    if (shape.kind == ShapeKind::Hull) {  // the half-beam integrated over x and y (midpoints, 128 x 128)
+        double sum = 0;
+        for (int i = 0; i < 128; ++i)
+            for (int j = 0; j < 128; ++j) sum += 2 * hull_half_beam((i + 0.5) / 128 - 0.5, (j + 0.5) / 128 - 0.5);
+        return sum / (128.0 * 128.0) * shape.size.x * shape.size.y * shape.size.z;
+    }
     return shape.size.x * shape.size.y * shape.size.z;
 }
 
@@ -29,9 +40,12 @@ std::vector<HullCell> hull_cells(const Shape& shape, int n) {
             for (int i = 0; i < n; ++i) {
                 const glm::dvec3 offset = corner + (glm::dvec3(i, j, k) + 0.5) * side;
                 if (shape.kind == ShapeKind::Sphere && glm::length(offset) > 0.5 * shape.size.x) continue;
+                if (shape.kind == ShapeKind::Hull &&
+                    std::abs(offset.z) > shape.size.z * hull_half_beam(offset.x / shape.size.x, offset.y / shape.size.y))
+                    continue;
                 cells.push_back({offset, side, side.x * side.y * side.z});
             }
-    // The cells' volumes add up to the shape's (a sphere's cubes miss or overshoot its surface).
+    // The cells' volumes add up to the shape's (a sphere's or a hull's cubes miss or overshoot its surface).
     double total = 0;
     for (const auto& c : cells) total += c.volume;
     for (auto& c : cells) c.volume *= shape_volume(shape) / total;
@@ -45,8 +59,24 @@ double WaterPatch::height(glm::dvec2 p, double share) const {
 FloatingBody::FloatingBody(const BodySettings& settings, glm::dvec3 position, glm::dquat orientation)
     : settings_(settings), cells_(hull_cells(settings.shape, settings.cells_per_side)), position_(position),
       orientation_(orientation) {
-    mass_ = settings.density * shape_volume(settings.shape);
+    // The centre of mass is the cells' centroid (zero for a box or a sphere): their offsets are
+    // measured from it.
+    double total = 0;
+    for (const HullCell& c : cells_) centroid_ += c.volume * c.offset, total += c.volume;
+    centroid_ = centroid_ / total + settings.ballast;
+    for (HullCell& c : cells_) c.offset -= centroid_;
+    volume_ = shape_volume(settings.shape);
+    mass_ = settings.density * volume_;
     inertia_ = mass_ * inertia_per_mass(settings.shape);
+    // No closed form for a hull, nor about a shifted centre of mass: from the cells, as point masses.
+    if (settings.shape.kind == ShapeKind::Hull || settings.ballast != glm::dvec3(0.0)) {
+        glm::dvec3 sum(0.0);
+        for (const HullCell& c : cells_) {
+            const glm::dvec3 o2 = c.offset * c.offset;
+            sum += c.volume * glm::dvec3(o2.y + o2.z, o2.x + o2.z, o2.x + o2.y);
+        }
+        inertia_ = settings.density * sum;
+    }
 }
 
 glm::dmat3 FloatingBody::world_inertia_inverse() const {
@@ -106,7 +136,7 @@ void FloatingBody::substep(double h, double share) {
     }
     const glm::dmat3 inverse_inertia = world_inertia_inverse();
     const glm::dmat3 inertia = glm::inverse(inverse_inertia);
-    const double submerged_share = submerged_volume_ / shape_volume(settings_.shape);
+    const double submerged_share = submerged_volume_ / volume_;
     torque -= settings_.angular_drag * submerged_share * (inertia * angular_velocity_);
     // Semi-implicit Euler: velocities first, then positions with the new velocities (symplectic:
     // an undamped oscillator keeps its energy instead of gaining it, as explicit Euler's would).

@@ -22,11 +22,15 @@ namespace step07 {
 
 constexpr double kMaxSubstep = 1.0 / 120;  // seconds: a frame of any length is cut into steps this short or shorter
 
-enum class ShapeKind { Box, Sphere };
+enum class ShapeKind { Box, Sphere, Hull };
 struct Shape {
     ShapeKind kind = ShapeKind::Box;
-    glm::dvec3 size{1.0};  // a box's sides (x, y up, z); a sphere's diameter in x
+    glm::dvec3 size{1.0};  // a box's or a hull's length (x), depth (y, up) and beam (z); a sphere's diameter in x
 };
+// A boat's hull in unit coordinates (x from stern -0.5 to bow +0.5, y from keel -0.5 to deck
+// +0.5): its half-beam there as a share of the beam. A fine bow, a fuller stern with a transom,
+// and a V-shaped bottom. hull_cells fills it and body_mesh.cpp draws it.
+double hull_half_beam(double x, double y);
 double shape_volume(const Shape& shape);
 // The diagonal of the inertia tensor per kilogram, in the body's frame.
 glm::dvec3 inertia_per_mass(const Shape& shape);
@@ -39,6 +43,10 @@ struct BodySettings {
     double linear_drag = 0.5;   // 1/s: the drag's rate per kilogram of water displaced
     double angular_drag = 0.5;  // 1/s, scaled by the submerged share
     int cells_per_side = 8;
+    // The centre of mass moved from the volume's centroid (body frame, metres), as ballast moves
+    // it: a light hull of uniform density carries its mass high, and a beam sea rolls it over
+    // to a list (the tests show it); an engine and a keel put it low.
+    glm::dvec3 ballast{0.0};
 };
 
 // The water under one cell during a frame (queried once a frame): its height at the frame's
@@ -69,6 +77,10 @@ public:
     glm::dvec3 velocity() const { return velocity_; }
     glm::dvec3 angular_velocity() const { return angular_velocity_; }
     double mass() const { return mass_; }
+    double volume() const { return volume_; }
+    // Where the shape's box is centred, in the body's frame (the body turns about its centre of
+    // mass, which for a hull is below and behind the box's centre): the mesh is drawn from there.
+    glm::dvec3 shape_centre() const { return -centroid_; }
     double submerged_volume() const { return submerged_volume_; }  // after the last substep
     const std::vector<HullCell>& cells() const { return cells_; }
     // On still water at y = 0, the energy (J) the forces above can only take away: kinetic,
@@ -85,7 +97,8 @@ private:
     std::vector<HullCell> cells_;
     std::vector<WaterPatch> water_;
     std::vector<double> water_lines_;  // this substep's, one a cell
-    double mass_ = 0;
+    double mass_ = 0, volume_ = 0;
+    glm::dvec3 centroid_{0.0};  // of the cells, from the shape's box centre (uniform density)
     glm::dvec3 inertia_{0.0};  // body frame, kg m^2
     glm::dvec3 position_{0.0}, velocity_{0.0}, angular_velocity_{0.0};
     glm::dquat orientation_{1, 0, 0, 0};

@@ -122,16 +122,18 @@ private:
         buoy.density = buoy_density_;
         raft.shape = {step07::ShapeKind::Box, {raft_size_, 0.4, raft_size_}};
         raft.density = raft_density_;
-        boat.shape = {step07::ShapeKind::Box, {boat_length_, boat_length_ / 6, boat_length_ / 3}};
+        boat.shape = {step07::ShapeKind::Hull, {boat_length_, boat_length_ / 6, boat_length_ / 3}};
         boat.density = boat_density_;
         for (auto* s : {&buoy, &raft, &boat}) {
             s->linear_drag = drag_;
             s->cells_per_side = 6;
         }
+        boat.cells_per_side = 8;  // the hull's shape needs a finer grid
+        boat.ballast = {0, -0.25 * boat.shape.size.y, 0};  // an engine and a keel: upright (the tests)
         const double heading = std::atan2(ahead.y, ahead.x);
         bodies_.emplace_back(buoy, spot(14, -3));
         bodies_.emplace_back(raft, spot(26, 5), glm::angleAxis(0.4, glm::dvec3(0, 1, 0)));
-        bodies_.emplace_back(boat, spot(40, -6), glm::angleAxis(-heading + 0.5, glm::dvec3(0, 1, 0)));
+        bodies_.emplace_back(boat, spot(22, -9), glm::angleAxis(-heading + 1.1, glm::dvec3(0, 1, 0)));
     }
 
     // Thrust along the boat's length at its middle, the rudder's sideways force at its stern.
@@ -221,10 +223,12 @@ private:
         for (std::size_t b = 0; b < bodies_.size(); ++b) {
             const step07::FloatingBody& body = bodies_[b];
             const step07::Shape& shape = body.settings().shape;
-            const glm::vec3 scale = shape.kind == step07::ShapeKind::Sphere ? glm::vec3(float(shape.size.x)) : glm::vec3(shape.size);
+            const glm::vec3 scale = shape.kind == step07::ShapeKind::Sphere ? glm::vec3(float(shape.size.x)) : glm::vec3(shape.size);  // box and hull: (length, depth, beam)
             // From the world origin near the camera, in double, then float: small numbers anywhere.
             const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(body.position() - world_origin())) *
-                                    glm::mat4_cast(glm::quat(body.orientation())) * glm::scale(glm::mat4(1.0f), scale);
+                                    glm::mat4_cast(glm::quat(body.orientation())) *
+                                    glm::translate(glm::mat4(1.0f), glm::vec3(body.shape_centre())) *
+                                    glm::scale(glm::mat4(1.0f), scale);
             p->set("u_model", model);
             p->set("u_scale", scale);
             p->set("u_colour", colours[b % 3]);
@@ -269,7 +273,7 @@ private:
         static const char* names[3] = {"buoy", "raft", "boat"};
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             ImGui::Text("%s: %.2f m above the mean level, %.0f%% under water", names[b % 3], bodies_[b].position().y,
-                        100 * bodies_[b].submerged_volume() / step07::shape_volume(bodies_[b].settings().shape));
+                        100 * bodies_[b].submerged_volume() / bodies_[b].volume());
         if (ImGui::Button("drop again")) bodies_.clear();
         ImGui::SameLine();
         if (ImGui::Button("push the raft") && bodies_.size() > 1)

@@ -82,6 +82,28 @@ TEST(FloatingBody, ASphereSinksToTheCapThatWeighsAsMuch) {
     }
 }
 
+TEST(FloatingBody, ABallastedHullRightsItselfAndALightOneLists) {
+    // The hull (hull_half_beam: fine bow, V bottom), 9 x 1.5 x 3 m, heeled 0.3 rad and dropped.
+    // It displaces its weight (1 %). With its mass a quarter of its depth below the volume's
+    // centroid (ballast) it comes back upright, within 5 degrees; of uniform density its mass is
+    // too high (the V bottom carries the volume up), and it settles at a list (measured 19 degrees).
+    const auto settle = [](glm::dvec3 ballast) {
+        BodySettings s;
+        s.shape = {ShapeKind::Hull, {9, 1.5, 3}};
+        s.density = 300;
+        s.cells_per_side = 8;
+        s.ballast = ballast;
+        FloatingBody body(s, {0, 0.5, 0}, glm::angleAxis(0.3, glm::dvec3(1, 0, 0)));
+        run(body, 40, 1.0 / 60);
+        EXPECT_NEAR(body.submerged_volume(), 300 / step07::kWaterDensity * body.volume(), 0.01 * body.volume() * 300 / step07::kWaterDensity);
+        EXPECT_GT(body.volume(), 0.3 * 9 * 1.5 * 3);  // a hull, not a sliver
+        EXPECT_LT(body.volume(), 0.8 * 9 * 1.5 * 3);  // nor a box
+        return (body.orientation() * glm::dvec3(0, 1, 0)).y;  // the deck's normal, up
+    };
+    EXPECT_GT(settle({0, -0.375, 0}), std::cos(5 * ocean::kPi / 180));
+    EXPECT_LT(settle({0, 0, 0}), std::cos(10 * ocean::kPi / 180));
+}
+
 // Upward zero crossings of y - mean after `skip` seconds: the mean period.
 double heave_period(const std::vector<double>& y, double dt, double mean) {
     std::vector<double> crossings;
