@@ -22,7 +22,7 @@ struct Step07Gpu : ocean_test::GlTest {
     // step06's four cascades at `resolution` in a `wind` m/s sea, their tiles, and the simulation.
     std::vector<step05::InitialSpectrum> spectra;
     std::vector<double> tiles;
-    std::unique_ptr<step05::OceanSimulation> ocean;
+    std::unique_ptr<step05::OceanSimulation> simulation;
     void make_sea(int resolution, double wind) {
         step05::SpectrumParams params;
         params.resolution = resolution;
@@ -33,14 +33,14 @@ struct Step07Gpu : ocean_test::GlTest {
         }
         std::vector<const step05::InitialSpectrum*> pointers;
         for (const auto& s : spectra) pointers.push_back(&s);
-        ocean = std::make_unique<step05::OceanSimulation>(cache.factory());
-        ocean->set_spectra(pointers);
+        simulation = std::make_unique<step05::OceanSimulation>(cache.factory());
+        simulation->set_spectra(pointers);
     }
 };
 
 TEST_F(Step07Gpu, AQueryReadBackAFrameLateIsOffByOneFramesMotion) {
     make_sea(32, 12);
-    step05::OceanSimulation& ocean = *this->ocean;
+    step05::OceanSimulation& ocean = *simulation;
     const double t0 = 7.0, dt = 1.0 / 60, choppiness = 1.2;
 
     step07::MapReadback readback;
@@ -80,7 +80,7 @@ TEST_F(Step07Gpu, BatchQueriesOnTheGpuAnswerAsTheCpuDoes) {
     // out: the GPU's Newton steps in float against sea_query.cpp in double, within 2 mm (GL's
     // bilinear weights and float texture coordinates).
     make_sea(64, 14);
-    step05::OceanSimulation& ocean = *this->ocean;
+    step05::OceanSimulation& ocean = *simulation;
     step06::CascadeView view;
     for (std::size_t c = 0; c < tiles.size(); ++c) view.patch_sizes[c] = float(tiles[c]);
     view.place_origin({12000.0, -3000.0});
