@@ -79,14 +79,13 @@ FloatingBody::FloatingBody(const BodySettings& settings, glm::dvec3 position, gl
     }
 }
 
-glm::dmat3 FloatingBody::world_inertia_inverse() const {
+glm::dmat3 FloatingBody::world_inertia(bool inverse) const {
     const glm::dmat3 r = glm::mat3_cast(orientation_);
-    const glm::dmat3 inverse_body(glm::dvec3(1 / inertia_.x, 0, 0), glm::dvec3(0, 1 / inertia_.y, 0),
-                                  glm::dvec3(0, 0, 1 / inertia_.z));
-    return r * inverse_body * glm::transpose(r);
+    const glm::dvec3 d = inverse ? 1.0 / inertia_ : inertia_;
+    return r * glm::dmat3(glm::dvec3(d.x, 0, 0), glm::dvec3(0, d.y, 0), glm::dvec3(0, 0, d.z)) * glm::transpose(r);
 }
 
-void FloatingBody::step(const Surface& before, const Surface& now, double dt) {
+void FloatingBody::step(const Surface& before, const Surface& now, double dt, double sea_interval) {
     if (dt <= 0) return;
     // The sea under each cell, once a frame: the queries are the costly part (sea_query.hpp);
     // the substeps move on the surface's tangent plane, which the cells hardly leave in a frame.
@@ -99,7 +98,7 @@ void FloatingBody::step(const Surface& before, const Surface& now, double dt) {
         w.height_now = at_now.height;
         w.height_before = at_before.height;
         w.gradient = glm::dvec2(-at_now.normal.x, -at_now.normal.z) / std::max(at_now.normal.y, 0.05);
-        w.velocity = water_velocity(before, now, dt, at_now.rest);
+        w.velocity = water_velocity(before, now, sea_interval > 0 ? sea_interval : dt, at_now.rest);
     }
     const int substeps = std::max(1, int(std::ceil(dt / kMaxSubstep - 1e-9)));
     const double h = dt / substeps;
@@ -134,8 +133,7 @@ void FloatingBody::substep(double h, double share) {
         force += drag;
         torque += glm::cross(arm, drag);
     }
-    const glm::dmat3 inverse_inertia = world_inertia_inverse();
-    const glm::dmat3 inertia = glm::inverse(inverse_inertia);
+    const glm::dmat3 inverse_inertia = world_inertia(true), inertia = world_inertia();
     const double submerged_share = submerged_volume_ / volume_;
     torque -= settings_.angular_drag * submerged_share * (inertia * angular_velocity_);
     // Semi-implicit Euler: velocities first, then positions with the new velocities (symplectic:
@@ -149,7 +147,7 @@ void FloatingBody::substep(double h, double share) {
 
 void FloatingBody::push(glm::dvec3 impulse, glm::dvec3 at) {
     velocity_ += impulse / mass_;
-    angular_velocity_ += world_inertia_inverse() * glm::cross(at - position_, impulse);
+    angular_velocity_ += world_inertia(true) * glm::cross(at - position_, impulse);
 }
 
 void FloatingBody::add_force(glm::dvec3 force_world, glm::dvec3 at_body) {
@@ -159,7 +157,7 @@ void FloatingBody::add_force(glm::dvec3 force_world, glm::dvec3 at_body) {
 
 double FloatingBody::energy_in_still_water() const {
     const glm::dmat3 r = glm::mat3_cast(orientation_);
-    const glm::dmat3 inertia = glm::inverse(world_inertia_inverse());
+    const glm::dmat3 inertia = world_inertia();
     double energy = 0.5 * mass_ * glm::dot(velocity_, velocity_) +
                     0.5 * glm::dot(angular_velocity_, inertia * angular_velocity_) + mass_ * ocean::kGravity * position_.y;
     for (const HullCell& cell : cells_) {

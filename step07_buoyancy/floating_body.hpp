@@ -64,8 +64,10 @@ public:
     FloatingBody(const BodySettings& settings, glm::dvec3 position, glm::dquat orientation = glm::dquat(1, 0, 0, 0));
 
     // Advances dt seconds in equal substeps no longer than kMaxSubstep, the sea moving from
-    // `before` to `now` over the frame.
-    void step(const Surface& before, const Surface& now, double dt);
+    // `before` to `now` over the frame. The water's velocity is their difference over
+    // `sea_interval` seconds, the time between the two seas (dt when they are this frame's and
+    // the last; the read-back's may be older); without it, dt.
+    void step(const Surface& before, const Surface& now, double dt, double sea_interval = 0);
     // An impulse (N s) at a world point (the mouse's push).
     void push(glm::dvec3 impulse, glm::dvec3 at);
     // Steering: a force (N) at a point of the body's frame, for the next step only.
@@ -91,7 +93,8 @@ public:
 
 private:
     void substep(double h, double share);
-    glm::dmat3 world_inertia_inverse() const;
+    // The inertia tensor in world axes, R I R^T, or its inverse, R I^-1 R^T.
+    glm::dmat3 world_inertia(bool inverse = false) const;
 
     BodySettings settings_;
     std::vector<HullCell> cells_;

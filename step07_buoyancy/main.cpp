@@ -71,17 +71,24 @@ private:
         FoamSky::update(time, dt);
         ocean::GpuScope timed(timers(), "bodies");
         const auto started = std::chrono::steady_clock::now();
-        if (auto sea = newest_sea()) {
+        std::optional<TimedSea> sea = newest_sea();
+        const bool arrived = sea.has_value();
+        if (arrived) {
             sea_before_ = sea_now_ ? std::move(sea_now_) : std::optional<TimedSea>(*sea);
             sea_now_ = std::move(sea);
         }
         if (!sea_now_) return;
+        // The sea moved from before to now over this frame only if a new one came; a frame with
+        // none (the read-back still in flight) holds the latest (still water for its drag) rather
+        // than replaying the last frame's motion.
+        const step07::MapSea& before = arrived ? sea_before_->sea : sea_now_->sea;
         if (bodies_built_for_ != bodies_changed_.value || bodies_.empty()) {
             bodies_built_for_ = bodies_changed_.value;
             drop_bodies();
         }
         steer_boat();
-        for (auto& body : bodies_) body.step(sea_before_->sea, sea_now_->sea, dt);
+        const double sea_interval = sea_now_->time - sea_before_->time;
+        for (auto& body : bodies_) body.step(before, sea_now_->sea, dt, sea_interval);
         run_extra_queries();
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             trajectory_.push_back({time, int(b), bodies_[b].position(), bodies_[b].orientation()});
