@@ -1,7 +1,9 @@
 // The bookkeeping both read-backs share (map_readback.hpp, gpu_queries.hpp): two slots, each a
-// copy queued on the GPU with a fence after it. A copy goes into a free slot; the oldest slot whose
-// fence has signalled is handed back, without ever waiting; with both in flight the GPU is two
-// frames behind and the next copy is dropped.
+// copy queued on the GPU with a fence after it. A copy goes into a free slot; the oldest in flight
+// is handed back a frame later. Its owner asks for it before queuing the frame's own copy, and
+// waits for it: a copy queued a whole frame ago has long landed on a GPU that keeps up (the wait
+// costs nothing there), and the latency is then exactly one frame, so runs on a fixed clock are
+// the same run after run (llvmpipe, busy, may take longer).
 #pragma once
 
 #include "common/gl.hpp"
@@ -33,23 +35,25 @@ public:
         fences_[std::size_t(s)] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
         order_[std::size_t(s)] = sent_++;
     }
-    // The oldest slot whose copy has landed (its fence then deleted); nothing if it has not yet.
+    // The oldest slot in flight, once its copy has landed (waited for: see above); its fence is
+    // deleted. Nothing when no copy is in flight.
     std::optional<int> landed() {
         int oldest = -1;
         for (int s = 0; s < kSlots; ++s)
             if (fences_[std::size_t(s)] != nullptr && (oldest < 0 || order_[std::size_t(s)] < order_[std::size_t(oldest)])) oldest = s;
         if (oldest < 0) return std::nullopt;
-        // Timeout 0: only asks. GL_SYNC_FLUSH_COMMANDS_BIT makes sure the fence reaches the GPU.
-        const GLenum state = glClientWaitSync(fences_[std::size_t(oldest)], GL_SYNC_FLUSH_COMMANDS_BIT, 0);
-        if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED) return std::nullopt;
+        // GL_SYNC_FLUSH_COMMANDS_BIT makes sure the fence reaches the GPU; 10 s: a GPU that lost
+        // the copy rather than one that is slow.
+        const GLenum state = glClientWaitSync(fences_[std::size_t(oldest)], GL_SYNC_FLUSH_COMMANDS_BIT, 10000000000ull);
         glDeleteSync(fences_[std::size_t(oldest)]);
         fences_[std::size_t(oldest)] = nullptr;
+        if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED) return std::nullopt;
         return oldest;
     }
-    int in_flight() const {
-        int n = 0;
-        for (GLsync f : fences_) n += f != nullptr ? 1 : 0;
-        return n;
+    // Drops every copy in flight (their results would be stale: the maps came from elsewhere).
+    void forget() {
+        for (GLsync& f : fences_)
+            if (f != nullptr) glDeleteSync(f), f = nullptr;
     }
 
 private:

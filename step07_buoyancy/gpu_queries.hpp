@@ -40,7 +40,8 @@ public:
     // `steps` Newton steps each. Dropped when both buffers are still in flight.
     void submit(const std::vector<glm::vec2>& points, const step05::OceanSimulation& ocean,
                 const step06::CascadeView& view, double time, int steps = 4);
-    // The oldest batch that has been answered, if any (never waits).
+    // The oldest batch in flight (an earlier frame's: call it before submit), waited for if it is
+    // not answered yet (fenced_slots.hpp says why that costs nothing on a GPU).
     std::optional<GpuAnswers> take();
 
 private:

@@ -100,16 +100,17 @@ private:
         std::vector<double> tiles;
         for (const auto& s : spectra_) tiles.push_back(s->patch_size);
         if (const step05::CpuSimulation* cpu = gpu_->maps_on_cpu()) {
+            readback_.forget();  // auto's trial frames switch backends: no older GPU maps after these
             const auto& level = cpu->levels()[0];
             latency_frames_ = 0;
             return TimedSea{step07::sea_from_layers(level.displacement, level.slopes, level.size, tiles), time()};
         }
+        // Last frame's copy first (exactly a frame late), then this frame's is queued.
+        std::optional<step07::ArrivedMaps> arrived = readback_.take();
         readback_.request(*gpu_, time());
-        if (auto arrived = readback_.take()) {
-            latency_frames_ = 1 + readback_.frames_in_flight();
-            return TimedSea{step07::sea_from_layers(arrived->displacement, arrived->slopes, arrived->n, tiles), arrived->time};
-        }
-        return std::nullopt;
+        if (!arrived) return std::nullopt;
+        latency_frames_ = 1;
+        return TimedSea{step07::sea_from_layers(arrived->displacement, arrived->slopes, arrived->n, tiles), arrived->time};
     }
 
     // The three bodies, in front of the camera (anywhere on the ocean: positions in double).
@@ -179,8 +180,9 @@ private:
         if (!gpu_queries_) gpu_queries_ = std::make_unique<step07::GpuQueries>(program_factory());
         std::vector<glm::vec2> relative;
         for (const auto& w : world) relative.emplace_back(w - cascade_view_.origin);
+        std::optional<step07::GpuAnswers> arrived = gpu_queries_->take();  // last frame's, then this frame's
         gpu_queries_->submit(relative, *gpu_, cascade_view_, time());
-        if (auto arrived = gpu_queries_->take()) {
+        if (arrived) {
             query_dots_.resize(arrived->points.size());
             for (std::size_t i = 0; i < arrived->points.size(); ++i) {
                 const glm::dvec2 w = arrived->origin + glm::dvec2(arrived->points[i]);

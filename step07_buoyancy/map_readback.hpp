@@ -25,11 +25,13 @@ struct ArrivedMaps {
 class MapReadback {
 public:
     // Queues the copy of both maps' level 0 (every cascade) made for `time`; returns at once.
-    // With both buffers still in flight the request is dropped (the GPU is two frames behind).
+    // With both buffers still in flight the request is dropped.
     void request(const step05::OceanSimulation& ocean, double time);
-    // The oldest copy that has landed since, if any (never waits).
+    // The oldest copy in flight (an earlier frame's: call it before request), waited for if it has
+    // not landed yet (fenced_slots.hpp says why that costs nothing on a GPU).
     std::optional<ArrivedMaps> take();
-    int frames_in_flight() const { return slots_.in_flight(); }
+    // Drops the copies in flight (this frame's maps came from the CPU).
+    void forget() { slots_.forget(); }
 
 private:
     struct Copy {
