@@ -1,8 +1,8 @@
 // Height queries answered on the GPU (shaders/height_query.comp), for the many small things that
 // only need a height: particles, floating debris, a camera that must stay above the waves. The
 // points go up, one dispatch answers them all from the maps already on the GPU, and only the
-// answers come back (16 bytes each), through a buffer and a fence as map_readback does: a frame
-// late, never waiting.
+// answers come back (16 bytes each), through a buffer and a fence as map_readback does: exactly a
+// frame late (fenced_slots.hpp).
 #pragma once
 
 #include "common/gl.hpp"
