@@ -104,7 +104,7 @@ int App::run_loop(const Options& options) {
     if (!fs::is_directory(shader_dir)) throw Error("shader directory '" + shader_dir + "' does not exist");
     programs_.set_shader_dir(where_.dir + "/shaders", shader_dir);
 
-    context_ = Context::create({headless, options.width, options.height, step_name()});
+    context_ = Context::create({headless, options.width, options.height, step_name(), info_.window_samples});
     enable_gl_debug_output();
     std::cout << step_name() << ": " << context_->description() << "\n";
     empty_vao_ = make_vertex_array();

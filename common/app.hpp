@@ -47,6 +47,10 @@ struct StepInfo {
     std::string title;          // "Sum of sines in 3D"
     std::string notes_sections;  // "1.2.2"; empty for a chapter beyond the notes
     std::string description;    // a paragraph: what the step shows and what is new
+    // Multisampling of the window (a headless run has none): 4 smooths the edges of a mesh drawn
+    // straight into it; 0 for a step that draws its scene off-screen and sends it to the window in
+    // one full-screen pass, where the samples would only cost.
+    int window_samples = 4;
     // "notes 1.2.2", or "beyond the notes" (--help's first line, the panel, the contact sheet).
     std::string notes_label() const { return notes_sections.empty() ? "beyond the notes" : "notes " + notes_sections; }
 };

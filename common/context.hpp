@@ -19,6 +19,7 @@ struct ContextOptions {
     bool headless = false;
     int width = 1280, height = 720;
     std::string title;
+    int samples = 4;  // the window's multisampling (StepInfo::window_samples); headless: none
 };
 
 class Context {

@@ -46,7 +46,15 @@ public:
     FoamSky() : FoamSky(step_info()) {}
 
 protected:
-    explicit FoamSky(ocean::StepInfo info) : App(std::move(info)) { declare(params()); }
+    explicit FoamSky(ocean::StepInfo info) : App(drawn_off_screen(std::move(info))) { declare(params()); }
+
+    // The scene is drawn into post_'s targets and reaches the window in the tonemapper's one
+    // full-screen triangle: a multisampled window would only cost (on llvmpipe a tenth of the
+    // windowed frame, the tonemapper writing four samples a pixel and the swap resolving them).
+    static ocean::StepInfo drawn_off_screen(ocean::StepInfo info) {
+        info.window_samples = 0;
+        return info;
+    }
 
     // Called after the sea is drawn into the HDR scene (its depth is there) and before the sky
     // behind it, with the frame's view-projection (from the world origin, world_origin()).
