@@ -129,7 +129,7 @@ int App::run_loop(const Options& options) {
             closed_early = true;
             break;
         }
-        const FrameClock::Tick tick = clock.tick(frame, paused_);
+        const FrameClock::Tick tick = clock.tick(frame, paused_, warming_up_ && warming_up_());
         if (frame > 0) time_ += tick.dt;
         if (tick.wall - last_reload_check_ > 0.5) {
             last_reload_check_ = tick.wall;
@@ -147,7 +147,7 @@ int App::run_loop(const Options& options) {
     // Closed before the last frame: a headless target still holds the last picture.
     if (closed_early && headless && frame > 0 && !options.screenshot.empty())
         screenshot = capture_frame(*context_, framebuffer_size_);
-    write_outputs(options, screenshot, frame, clock.bench_seconds());
+    write_outputs(options, screenshot, frame, clock.bench_first_frame(), clock.bench_seconds());
 
     const GlDebugStats& gl = gl_debug_stats();
     if (gl.errors > 0 && headless) {

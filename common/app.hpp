@@ -101,6 +101,9 @@ protected:
     // milliseconds), printed and carried in the machine-readable line (a step's FFT backends).
     using BenchFigures = std::vector<std::pair<std::string, double>>;
     void offer_bench_figures(std::function<BenchFigures()> measure) { bench_figures_ = std::move(measure); }
+    // --bench times the steady state: while `warming_up` says so (a backend still being chosen on
+    // the frames themselves), its frames-per-second clock waits (run_support.hpp's FrameClock).
+    void offer_warm_up(std::function<bool()> warming_up) { warming_up_ = std::move(warming_up); }
     // A line for the panel (a preset saved, a step that is not built): shown until the next one.
     void show_message(std::string message) { panel_message_ = std::move(message); }
     // Every step of the repository, in order (CMake's list of stepNN_* folders).
@@ -145,7 +148,8 @@ private:
     int run_loop(const Options& options);
     void frame(const class TestProbes& probes, int frame, double dt, double real_dt);
     // Output writing (app_output.cpp): --record, the screenshot, --export, --bench.
-    void write_outputs(const Options& options, const struct Image& screenshot, int frames, double bench_seconds);
+    void write_outputs(const Options& options, const struct Image& screenshot, int frames, int bench_first_frame,
+                       double bench_seconds);
     void record_frame(const std::string& dir, int frame);
     // The ImGui layer (imgui_layer.cpp) and the panel (panel.cpp).
     void init_imgui(bool draw_panel);
@@ -182,6 +186,7 @@ private:
     std::function<SplitVariants()> split_variants_;
     std::function<void(const std::string&)> export_;
     std::function<BenchFigures()> bench_figures_;
+    std::function<bool()> warming_up_;
     std::string panel_message_;
     std::vector<std::string> next_step_command_;
     std::vector<std::string> all_steps_;

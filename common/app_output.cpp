@@ -23,7 +23,8 @@ void App::record_frame(const std::string& dir, int frame) {
     save_screenshot(capture_frame(*context_, framebuffer_size_), (fs::path(dir) / name).string());
 }
 
-void App::write_outputs(const Options& options, const Image& screenshot, int frames, double bench_seconds) {
+void App::write_outputs(const Options& options, const Image& screenshot, int frames, int bench_first_frame,
+                        double bench_seconds) {
     if (!screenshot.rgba.empty()) {
         const std::string path = options.screenshot.empty() ? "screenshots/" + step_name() + ".png" : options.screenshot;
         std::cout << "screenshot: " << save_screenshot(screenshot, path) << "\n";
@@ -33,10 +34,11 @@ void App::write_outputs(const Options& options, const Image& screenshot, int fra
         std::cout << "export: " << fs::absolute(options.export_dir).string() << "\n";
     }
     if (options.bench) {
-        std::cout << timers_.report(bench_seconds, std::max(0, frames - 1));
+        const int timed_frames = std::max(0, frames - bench_first_frame);
+        std::cout << timers_.report(bench_seconds, timed_frames, bench_first_frame);
         // The step prints its own lines, then hands the figures.
         const BenchFigures extra = bench_figures_ ? bench_figures_() : BenchFigures{};
-        std::cout << bench_csv_line(step_name(), framebuffer_size_, timers_, bench_seconds, std::max(0, frames - 1),
+        std::cout << bench_csv_line(step_name(), framebuffer_size_, timers_, bench_seconds, timed_frames,
                                     extra);
     }
 }

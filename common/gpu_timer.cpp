@@ -67,7 +67,7 @@ std::vector<GpuTimers::PassStats> GpuTimers::stats() {
     return out;
 }
 
-std::string GpuTimers::report(double wall_seconds, int frames) {
+std::string GpuTimers::report(double wall_seconds, int frames, int warm_up_frames) {
     std::ostringstream out;
     char line[160];
     // Medians, not means: one stalled frame (a shader compile, a swap) would dominate a mean.
@@ -83,8 +83,9 @@ std::string GpuTimers::report(double wall_seconds, int frames) {
     std::snprintf(line, sizeof line, "bench: %-16s %13.3f %11s %15.3f\n", "all passes", total, "", total_wall);
     out << line;
     const double fps = wall_seconds > 0 ? frames / wall_seconds : 0;
-    std::snprintf(line, sizeof line, "bench: %d frames in %.3f s: %.1f frames per second (wall clock)\n",
-                  frames, wall_seconds, fps);
+    std::snprintf(line, sizeof line,
+                  "bench: %d frames after %d warm-up frames in %.3f s: %.1f frames per second (wall clock)\n", frames,
+                  warm_up_frames, wall_seconds, fps);
     out << line;
     return out.str();
 }

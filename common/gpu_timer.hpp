@@ -36,8 +36,8 @@ public:
     };
     // In the order the passes first ran.
     std::vector<PassStats> stats();
-    // The table --bench prints.
-    std::string report(double wall_seconds, int frames);
+    // The table --bench prints; `frames` were timed in `wall_seconds`, after `warm_up_frames`.
+    std::string report(double wall_seconds, int frames, int warm_up_frames);
 
 private:
     struct Pending { std::string pass; Query query; };

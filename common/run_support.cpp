@@ -22,19 +22,24 @@ FrameClock::FrameClock(const Options& options)
       fixed_dt_(options.fixed_dt.value_or(0.0)),
       start_time_(options.start_time.value_or(options.start_at.value_or(0.0))) {}
 
-FrameClock::Tick FrameClock::tick(int frame, bool paused) {
+FrameClock::Tick FrameClock::tick(int frame, bool paused, bool warming_up) {
     const auto now = Clock::now();
     Tick t;
     t.real_dt = std::chrono::duration<double>(now - previous_).count();
     t.wall = std::chrono::duration<double>(now - start_).count();
     t.dt = paused ? 0.0 : (fixed_ ? fixed_dt_ : t.real_dt);
     previous_ = now;
-    if (frame == 1) bench_start_ = now;
+    if (frame == 1) frame_one_ = now;
+    if (frame >= 1 && !warming_up && !bench_started_) {
+        bench_started_ = true;
+        bench_start_ = now;
+        bench_first_frame_ = frame;
+    }
     return t;
 }
 
 double FrameClock::bench_seconds() const {
-    return std::chrono::duration<double>(Clock::now() - bench_start_).count();
+    return std::chrono::duration<double>(Clock::now() - (bench_started_ ? bench_start_ : frame_one_)).count();
 }
 
 namespace {

@@ -28,15 +28,22 @@ public:
         double real_dt;  // wall seconds since the previous frame (camera speed, the panel)
         double wall;     // wall seconds since the start
     };
-    Tick tick(int frame, bool paused);
-    // Wall seconds since frame 1: the first frame pays for compilation and uploads.
+    // `warming_up`: the step is not in its steady state yet (App::offer_warm_up).
+    Tick tick(int frame, bool paused, bool warming_up = false);
+    // What --bench times: the steady state, from the first frame after frame 0 (which pays for
+    // compilation and uploads) that the step no longer spends warming up (auto's backend trial,
+    // which runs the slower backend on half of its frames), to now. A run that never leaves its
+    // warm-up is timed from frame 1.
     double bench_seconds() const;
+    int bench_first_frame() const { return bench_started_ ? bench_first_frame_ : 1; }
 
 private:
     using Clock = std::chrono::steady_clock;
     bool fixed_;
     double fixed_dt_, start_time_;
-    Clock::time_point start_ = Clock::now(), previous_ = start_, bench_start_ = start_;
+    Clock::time_point start_ = Clock::now(), previous_ = start_, frame_one_ = start_, bench_start_ = start_;
+    bool bench_started_ = false;
+    int bench_first_frame_ = 1;
 };
 
 // Ctrl-C (SIGINT) and SIGTERM close the step like its window's close button while this object

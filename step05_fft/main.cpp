@@ -62,6 +62,7 @@ public:
             for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
             return times.figures();
         });
+        offer_warm_up([this] { return Backend(backend_) == Backend::Auto && (!gpu_ || gpu_->auto_deciding()); });
         offer_split_view([this] {
             return SplitVariants{"naive DFT", "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
         });

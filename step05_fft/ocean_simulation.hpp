@@ -71,6 +71,9 @@ public:
     // Backend::Auto's choice when it has just been made, once, for the log: "at N = 256: GPU FFT
     // 77.1 ms, FFTW 45.3 ms a frame (median of 3): FFTW"; nothing on every other call.
     std::optional<std::string> take_auto_decision() { return std::exchange(auto_decision_, std::nullopt); }
+    // Backend::Auto is still timing both backends at this resolution: its frames alternate
+    // between them, so they are not the steady state a benchmark should time.
+    bool auto_deciding() const { return n_ == 0 || !auto_.decided; }
 
     int resolution() const { return n_; }
     int cascade_count() const { return int(cascades_.size()); }
