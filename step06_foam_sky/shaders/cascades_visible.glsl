@@ -109,8 +109,14 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
         // agree on it.
         float bias = log2(footprint / implicit_long);
         vec4 slopes = vec4(0.0);
-        for (int i = 0; i < taps; ++i)
+        // A do-while, not a for: every pixel takes at least one piece, and a loop that tests at
+        // its top runs its body once more, masked off, after the last pixel's last piece on a
+        // machine that runs neighbouring pixels in lockstep (llvmpipe: one wasted fetch per
+        // cascade, 6 to 11 % of the ocean pass; ./ocean bench --against, docs/performance.md).
+        int i = 0;
+        do {
             slopes += texture(u_slopes, cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c), bias);
+        } while (++i < taps);
         slopes /= float(taps);
         s.displacement += texture(u_displacement, cascade_uv(p, c), log2(long_length / implicit_long));
         s.slopes += slopes;
@@ -122,20 +128,26 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
 }
 
 // Foam at rest position p (fragment shaders): the finest level that holds p, blended into the
-// next one over the outer tenth of its window, none beyond the largest window. Every level is
-// read, in uniform control flow (so texture() may take its level from the pixel's neighbours, with
-// the bias): skipping the levels a pixel does not need saved nothing where neighbouring pixels run
-// together (llvmpipe runs masked-off branches anyway), and the textureGrad that the branches
-// needed takes a level per pixel, which is slower.
+// next one over the outer tenth of its window, none beyond the largest window. The levels are
+// read in uniform control flow (so texture() may take its level from the pixel's neighbours, with
+// the bias): a branch per pixel saved nothing where neighbouring pixels run together (llvmpipe
+// runs masked-off branches anyway), and the textureGrad that it needed takes a level per pixel,
+// which is slower. What does save is leaving the loop, at its bottom, once no pixel of the group
+// has weight left for a coarser level: near the camera the finest level takes it all.
 float foam_at(vec2 p, float bias) {
     float foam = 0.0, left = 1.0;  // left: the weight the finer levels did not take
-    for (int level = 0; level < FOAM_LEVELS; ++level) {
+    int level = 0;
+    do {
         vec2 offset = abs(p - u_foam_centre[level]);
         float inside = 0.5 * u_foam_extent[level] - max(offset.x, offset.y);  // metres from the edge
         float weight = clamp(inside / (0.1 * u_foam_extent[level]), 0.0, 1.0);
         foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level)), bias).r;
         left *= 1.0 - weight;
-    }
+#ifdef GL_ARB_shader_group_vote
+    } while (++level < FOAM_LEVELS && anyInvocationARB(left > 0.0));
+#else
+    } while (++level < FOAM_LEVELS);
+#endif
     return foam;
 }
 
