@@ -68,7 +68,6 @@ void Sky::render(const SkySettings& s) {
         p->set("u_horizon_colour", s.horizon);
         p->set("u_cloud_cover", s.cloud_cover);
         p->set("u_cloud_offset", s.cloud_offset);
-        p->set("u_cloud_octaves", kCloudOctaves);
         p->set("u_sun_size", s.sun_size);
         p->set("u_sun_disc_gain", s.sun_disc_gain);
     }
@@ -102,7 +101,7 @@ double value_noise(glm::dvec2 p) {
 
 double clouds(glm::dvec2 p) {
     double sum = 0, amplitude = 0.5;
-    for (int octave = 0; octave < kCloudOctaves; ++octave) {
+    for (int octave = 0; octave < 5; ++octave) {
         sum += amplitude * value_noise(p);
         p = p * 2.03 + glm::dvec2(17.0, 9.0);
         amplitude *= 0.5;

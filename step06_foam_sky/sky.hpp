@@ -50,7 +50,6 @@ private:
 std::uint32_t pcg_hash(std::uint32_t v);
 double lattice_hash(int x, int y);
 double value_noise(glm::dvec2 p);
-constexpr int kCloudOctaves = 5;  // sky.glsl's u_cloud_octaves
 double clouds(glm::dvec2 p);
 
 // The direction through the centre of texel (x, y) of cubemap face `face` (the GL layout,

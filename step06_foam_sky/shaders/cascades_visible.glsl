@@ -128,26 +128,20 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
 }
 
 // Foam at rest position p (fragment shaders): the finest level that holds p, blended into the
-// next one over the outer tenth of its window, none beyond the largest window. The levels are
-// read in uniform control flow (so texture() may take its level from the pixel's neighbours, with
-// the bias): a branch per pixel saved nothing where neighbouring pixels run together (llvmpipe
-// runs masked-off branches anyway), and the textureGrad that it needed takes a level per pixel,
-// which is slower. What does save is leaving the loop, at its bottom, once no pixel of the group
-// has weight left for a coarser level: near the camera the finest level takes it all.
+// next one over the outer tenth of its window, none beyond the largest window. Every level is
+// read, in uniform control flow (so texture() may take its level from the pixel's neighbours, with
+// the bias): skipping the levels a pixel does not need saved nothing where neighbouring pixels run
+// together (llvmpipe runs masked-off branches anyway), and the textureGrad that the branches
+// needed takes a level per pixel, which is slower.
 float foam_at(vec2 p, float bias) {
     float foam = 0.0, left = 1.0;  // left: the weight the finer levels did not take
-    int level = 0;
-    do {
+    for (int level = 0; level < FOAM_LEVELS; ++level) {
         vec2 offset = abs(p - u_foam_centre[level]);
         float inside = 0.5 * u_foam_extent[level] - max(offset.x, offset.y);  // metres from the edge
         float weight = clamp(inside / (0.1 * u_foam_extent[level]), 0.0, 1.0);
         foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level)), bias).r;
         left *= 1.0 - weight;
-#ifdef GL_ARB_shader_group_vote
-    } while (++level < FOAM_LEVELS && anyInvocationARB(left > 0.0));
-#else
-    } while (++level < FOAM_LEVELS);
-#endif
+    }
     return foam;
 }
 

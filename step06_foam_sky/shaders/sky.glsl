@@ -11,12 +11,6 @@ uniform float u_cloud_cover;    // 0..1
 uniform vec2 u_cloud_offset;    // metres the clouds have drifted
 uniform float u_sun_size;       // angular radius, radians
 uniform float u_sun_disc_gain;  // disc radiance / sunlight
-// The octaves of the clouds' noise (sky.hpp's kCloudOctaves). A uniform, not a constant, so that
-// the loop stays a loop: a processor that runs neighbouring texels in lockstep (llvmpipe's 8-wide
-// vectors) runs the clouds below the horizon too, masked off, where a loop it could unroll would
-// be straight code; a loop it leaves once none of its texels is in it, after one octave. Half the
-// cube is below the horizon (llvmpipe: the sky pass about a third cheaper).
-uniform int u_cloud_octaves;
 
 // A random number in [0, 1) for each lattice point, from integers alone (PCG's output function:
 // Jarzynski and Olano, "Hash Functions for GPU Rendering", 2020), so every GPU draws the same
@@ -41,12 +35,11 @@ float value_noise(vec2 p) {
 
 float clouds(vec2 p) {
     float sum = 0.0, amplitude = 0.5;
-    int octave = 0;
-    do {  // tested at the bottom: a loop tested at its top runs its body once more, masked off
+    for (int i = 0; i < 5; ++i) {
         sum += amplitude * value_noise(p);
         p = p * 2.03 + vec2(17.0, 9.0);
         amplitude *= 0.5;
-    } while (++octave < u_cloud_octaves);
+    }
     return sum;
 }
 

@@ -440,7 +440,6 @@ TEST_F(Step06Gpu, CloudsAreTheSameOnEveryGpu) {
     ocean::ShaderProgram program("eval_clouds", {std::string(OCEAN_SOURCE_DIR) + "/step06_foam_sky/tests/eval_clouds.comp"});
     ASSERT_FALSE(program.build()) << program.last_error();
     program.set("u_count", kPoints);
-    program.set("u_cloud_octaves", step06::kCloudOctaves);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
     glUseProgram(program.id());
