@@ -27,6 +27,15 @@ set(OCEAN_TESTS_DIR "${CMAKE_CURRENT_LIST_DIR}/../tests")
 function(add_step name)
   cmake_parse_arguments(ARG "" "GOLDEN" "SOURCES;LIBRARY;SHADERS;LINKS;TESTS;GPU_TESTS;TEST_SHADERS;EXERCISES" ${ARGN})
   list(TRANSFORM ARG_SHADERS PREPEND "${CMAKE_CURRENT_SOURCE_DIR}/")
+  # Every file in the chapter's shaders/ folder is listed: the shader tests walk the lists, and a
+  # file left out (a shader a change stopped using, say) would never be compiled by any of them.
+  file(GLOB _shaders_on_disk "${CMAKE_CURRENT_SOURCE_DIR}/shaders/*")
+  foreach(file IN LISTS _shaders_on_disk)
+    if(NOT file IN_LIST ARG_SHADERS)
+      message(FATAL_ERROR "${name}: ${file} is in shaders/ but not in add_step's SHADERS; list it, "
+                          "or delete it if nothing reads it")
+    endif()
+  endforeach()
   add_executable(${name} ${ARG_SOURCES} ${ARG_SHADERS} README.md)
   target_link_libraries(${name} PRIVATE ocean_common ${ARG_LINKS})
   if(ARG_LIBRARY)
