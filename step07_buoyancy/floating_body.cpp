@@ -68,12 +68,14 @@ FloatingBody::FloatingBody(const BodySettings& settings, glm::dvec3 position, gl
     volume_ = shape_volume(settings.shape);
     mass_ = settings.density * volume_;
     inertia_ = mass_ * inertia_per_mass(settings.shape);
-    // No closed form for a hull, nor about a shifted centre of mass: from the cells, as point masses.
+    // No closed form for a hull, nor about a shifted centre of mass: from the cells, each a small
+    // box, its own inertia about its centre plus its mass at its offset (parallel axes; exact for
+    // a box's cells).
     if (settings.shape.kind == ShapeKind::Hull || settings.ballast != glm::dvec3(0.0)) {
         glm::dvec3 sum(0.0);
         for (const HullCell& c : cells_) {
-            const glm::dvec3 o2 = c.offset * c.offset;
-            sum += c.volume * glm::dvec3(o2.y + o2.z, o2.x + o2.z, o2.x + o2.y);
+            const glm::dvec3 o2 = c.offset * c.offset, s2 = c.size * c.size / 12.0;
+            sum += c.volume * (glm::dvec3(o2.y + o2.z, o2.x + o2.z, o2.x + o2.y) + glm::dvec3(s2.y + s2.z, s2.x + s2.z, s2.x + s2.y));
         }
         inertia_ = settings.density * sum;
     }

@@ -82,6 +82,21 @@ TEST(FloatingBody, ASphereSinksToTheCapThatWeighsAsMuch) {
     }
 }
 
+TEST(FloatingBody, BallastMovesTheAxesAsTheParallelAxisTheoremSays) {
+    // A 2 x 1 x 3 m box whose mass sits 0.2 m below its middle: about its centre of mass the roll
+    // inertia is the box's own, m (1 + 9) / 12, plus m 0.2^2 (Steiner). Its inertia is then summed
+    // from the cells; an impulse of 1 N s along z, 1 m above the centre of mass, spins it at
+    // 1 / I_xx rad/s about x.
+    BodySettings s = box({2, 1, 3}, 500);
+    s.ballast = {0, -0.2, 0};
+    FloatingBody body(s, {0, 0, 0});
+    body.push({0, 0, 1}, {0, 1, 0});
+    const double m = body.mass(), expected = 1 / (m * (1 + 9) / 12.0 + m * 0.2 * 0.2);
+    EXPECT_NEAR(body.angular_velocity().x, expected, 1e-9 * expected);
+    EXPECT_NEAR(body.angular_velocity().y, 0.0, 1e-12);
+    EXPECT_NEAR(body.angular_velocity().z, 0.0, 1e-12);
+}
+
 TEST(FloatingBody, ABallastedHullRightsItselfAndALightOneLists) {
     // The hull (hull_half_beam: fine bow, V bottom), 9 x 1.5 x 3 m, heeled 0.3 rad and dropped.
     // It displaces its weight (1 %). With its mass a quarter of its depth below the volume's
