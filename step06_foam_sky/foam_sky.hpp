@@ -112,7 +112,10 @@ protected:
             for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
             return times.figures();
         });
-        offer_warm_up([this] { return kBackends[std::size_t(backend_)] == step05::Backend::Auto && (!gpu_ || gpu_->auto_deciding()); });
+        offer_warm_up([this] {
+            return kBackends[std::size_t(backend_)] == step05::Backend::Auto &&
+                   (!gpu_ || gpu_->auto_deciding());
+        });
         // The rendered surface (all cascades) and the foam, on one grid around the camera.
         offer_export([this](const std::string& dir) {
             ocean::ProgramFactory programs = program_factory();

@@ -70,20 +70,21 @@ std::vector<glm::vec3> BodyMeshes::hull_triangles() {
     for (float sign : {-1.0f, 1.0f})
         for (int i = 0; i < sections; ++i)
             for (int j = 0; j < levels; ++j) {
-                const glm::vec3 a = side_point(i, j, sign), b = side_point(i + 1, j, sign), c = side_point(i + 1, j + 1, sign),
-                                d = side_point(i, j + 1, sign);
+                const glm::vec3 a = side_point(i, j, sign), b = side_point(i + 1, j, sign),
+                                c = side_point(i + 1, j + 1, sign), d = side_point(i, j + 1, sign);
                 const glm::vec3 outward(0.0f, -0.3f, sign);  // out of the side, and down near the keel
                 triangle(a, b, c, outward);
                 triangle(a, c, d, outward);
             }
     for (int i = 0; i < sections; ++i) {  // the deck, y = 0.5
-        const glm::vec3 a = side_point(i, levels, -1), b = side_point(i + 1, levels, -1), c = side_point(i + 1, levels, 1),
-                        d = side_point(i, levels, 1);
+        const glm::vec3 a = side_point(i, levels, -1), b = side_point(i + 1, levels, -1),
+                        c = side_point(i + 1, levels, 1), d = side_point(i, levels, 1);
         triangle(a, b, c, {0, 1, 0});
         triangle(a, c, d, {0, 1, 0});
     }
     for (int j = 0; j < levels; ++j) {  // the transom, x = -0.5
-        const glm::vec3 a = side_point(0, j, -1), b = side_point(0, j, 1), c = side_point(0, j + 1, 1), d = side_point(0, j + 1, -1);
+        const glm::vec3 a = side_point(0, j, -1), b = side_point(0, j, 1), c = side_point(0, j + 1, 1),
+                        d = side_point(0, j + 1, -1);
         triangle(a, b, c, {-1, 0, 0});
         triangle(a, c, d, {-1, 0, 0});
     }

@@ -19,7 +19,8 @@ double shape_volume(const Shape& shape) {
     if (shape.kind == ShapeKind::Hull) {  // the half-beam integrated over x and y (midpoints, 128 x 128)
         double sum = 0;
         for (int i = 0; i < 128; ++i)
-            for (int j = 0; j < 128; ++j) sum += 2 * hull_half_beam((i + 0.5) / 128 - 0.5, (j + 0.5) / 128 - 0.5);
+            for (int j = 0; j < 128; ++j)
+                sum += 2 * hull_half_beam((i + 0.5) / 128 - 0.5, (j + 0.5) / 128 - 0.5);
         return sum / (128.0 * 128.0) * shape.size.x * shape.size.y * shape.size.z;
     }
     return shape.size.x * shape.size.y * shape.size.z;
@@ -41,7 +42,8 @@ std::vector<HullCell> hull_cells(const Shape& shape, int n) {
                 const glm::dvec3 offset = corner + (glm::dvec3(i, j, k) + 0.5) * side;
                 if (shape.kind == ShapeKind::Sphere && glm::length(offset) > 0.5 * shape.size.x) continue;
                 if (shape.kind == ShapeKind::Hull &&
-                    std::abs(offset.z) > shape.size.z * hull_half_beam(offset.x / shape.size.x, offset.y / shape.size.y))
+                    std::abs(offset.z) >
+                        shape.size.z * hull_half_beam(offset.x / shape.size.x, offset.y / shape.size.y))
                     continue;
                 cells.push_back({offset, side, side.x * side.y * side.z});
             }
@@ -75,7 +77,8 @@ FloatingBody::FloatingBody(const BodySettings& settings, glm::dvec3 position, gl
         glm::dvec3 sum(0.0);
         for (const HullCell& c : cells_) {
             const glm::dvec3 o2 = c.offset * c.offset, s2 = c.size * c.size / 12.0;
-            sum += c.volume * (glm::dvec3(o2.y + o2.z, o2.x + o2.z, o2.x + o2.y) + glm::dvec3(s2.y + s2.z, s2.x + s2.z, s2.x + s2.y));
+            sum += c.volume * (glm::dvec3(o2.y + o2.z, o2.x + o2.z, o2.x + o2.y) +
+                               glm::dvec3(s2.y + s2.z, s2.x + s2.z, s2.x + s2.y));
         }
         inertia_ = settings.density * sum;
     }
@@ -84,7 +87,8 @@ FloatingBody::FloatingBody(const BodySettings& settings, glm::dvec3 position, gl
 glm::dmat3 FloatingBody::world_inertia(bool inverse) const {
     const glm::dmat3 r = glm::mat3_cast(orientation_);
     const glm::dvec3 d = inverse ? 1.0 / inertia_ : inertia_;
-    return r * glm::dmat3(glm::dvec3(d.x, 0, 0), glm::dvec3(0, d.y, 0), glm::dvec3(0, 0, d.z)) * glm::transpose(r);
+    return r * glm::dmat3(glm::dvec3(d.x, 0, 0), glm::dvec3(0, d.y, 0), glm::dvec3(0, 0, d.z)) *
+           glm::transpose(r);
 }
 
 void FloatingBody::step(const Surface& before, const Surface& now, double dt, double sea_interval) {
