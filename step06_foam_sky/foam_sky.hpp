@@ -228,6 +228,7 @@ protected:
         foam_->bind(p, UNIT_FOAM);
         foam_->bind_pattern(p, UNIT_FOAM_PATTERN);
         glBindTextureUnit(UNIT_SKY, sky_->cubemap());
+        glBindTextureUnit(UNIT_SKY_HORIZON, sky_->horizon());
         p.set("u_unresolved_slope_variance", unresolved_by_level_);
     }
 

@@ -1,11 +1,13 @@
 #include "step06_foam_sky/sky.hpp"
 
 #include "common/error.hpp"
+#include "step06_foam_sky/texture_units.h"
 
 #include <stb_image.h>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <sys/stat.h>
@@ -22,6 +24,11 @@ Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(program
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    horizon_ = ocean::make_texture(GL_TEXTURE_1D);
+    glTextureStorage1D(horizon_.id(), 1, GL_RGBA32F, kHorizonTexels);
+    glTextureParameteri(horizon_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(horizon_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(horizon_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the horizon goes round
 }
 
 float Sky::max_lod() const { return float(std::log2(double(size_))); }
@@ -76,7 +83,32 @@ void Sky::render(const SkySettings& s) {
     glDispatchCompute(GLuint((size_ + 7) / 8), GLuint((size_ + 7) / 8), 6);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     glGenerateTextureMipmap(cubemap_.id());  // rough reflections read the blurrier levels
+    tabulate_horizon();
     image_rendered_ = bool(equirect_);
+}
+
+void Sky::tabulate_horizon() {
+    ocean::ShaderProgram* p = programs_("sky_horizon.comp", {std::string(kShaders) + "sky_horizon.comp"}, {});
+    if (p == nullptr) throw ocean::Error("sky_horizon.comp does not build");
+    p->set("u_lod", horizon_lod());
+    glBindTextureUnit(UNIT_SKY, cubemap_.id());
+    glBindImageTexture(0, horizon_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glUseProgram(p->id());
+    glDispatchCompute(GLuint((kHorizonTexels + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+double horizon_coordinate(glm::dvec2 d) {
+    const double s = d.y / std::max(std::abs(d.x) + std::abs(d.y), 1e-300);
+    return 0.25 * (d.x >= 0 ? s : 2 - s);
+}
+
+glm::dvec2 horizon_direction(double u) {
+    const double a = 4 * u;
+    if (a < 1) return {1 - a, a};
+    if (a < 2) return {1 - a, 2 - a};
+    if (a < 3) return {a - 3, 2 - a};
+    return {a - 3, a - 4};
 }
 
 std::uint32_t pcg_hash(std::uint32_t v) {

@@ -34,14 +34,22 @@ public:
     void render(const SkySettings& settings);  // procedural: every call; image: once
 
     GLuint cubemap() const { return cubemap_.id(); }
+    // The fog's colour around the horizon (sky_horizon.glsl): kHorizonTexels of the cube at
+    // horizon_lod, made by every render.
+    GLuint horizon() const { return horizon_.id(); }
     int size() const { return size_; }
     float max_lod() const;
+    // The cube's level the fog reads: halfway to the coarsest, so that the horizon's colour is
+    // blurred over some tens of degrees (a single cloud does not tint the fog).
+    float horizon_lod() const { return 0.5f * max_lod(); }
     bool uses_image() const { return bool(equirect_); }
 
 private:
+    void tabulate_horizon();  // sky_horizon.comp, from the cube just made
+
     ocean::ProgramFactory programs_;
     int size_;
-    ocean::Texture cubemap_, equirect_;
+    ocean::Texture cubemap_, equirect_, horizon_;
     bool image_rendered_ = false;
 };
 
@@ -51,6 +59,13 @@ std::uint32_t pcg_hash(std::uint32_t v);
 double lattice_hash(int x, int y);
 double value_noise(glm::dvec2 p);
 double clouds(glm::dvec2 p);
+
+// sky_horizon.glsl's table of the fog's colour, the CPU reference: the coordinate of horizontal
+// direction (x, z) (the "diamond angle" over 4: 0 at +x, 1/4 at +z, growing with the azimuth;
+// negative towards -z, where the table repeats), and the direction (on |x| + |z| = 1) at u in [0, 1).
+constexpr int kHorizonTexels = 256;  // HORIZON_TEXELS
+double horizon_coordinate(glm::dvec2 d);
+glm::dvec2 horizon_direction(double u);
 
 // The direction through the centre of texel (x, y) of cubemap face `face` (the GL layout,
 // as cube_faces.glsl): the tests find the sun's texel with it.

@@ -11,4 +11,5 @@
 #define UNIT_GBUFFER_WORLD 6  // the G-buffer's surface points (u_gbuffer_world)
 #define UNIT_GBUFFER_REST 7   // the G-buffer's rest positions and footprints (u_gbuffer_rest)
 #define UNIT_FOAM_RESIDUAL 8  // the residual foam of the streaks (foam_map.glsl's u_residual_foam)
+#define UNIT_SKY_HORIZON 9    // the fog's colour around the horizon (sky_horizon.glsl's u_sky_horizon)
 #endif

@@ -7,6 +7,7 @@
 #include "cascades_visible.glsl"
 #include "shading.glsl"
 #include "fog.glsl"
+#include "sky_horizon.glsl"
 #include "level_colour.glsl"
 
 #ifndef DEBUG_VIEW
@@ -101,6 +102,6 @@ void main() {
         vec3 foam_light = u_foam_colour * (sky_irradiance_over_pi + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
         colour = mix(water, foam_light, foam);
     }
-    if (u_show_fog) colour = apply_fog(colour, u_eye, surface_point, textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), u_sky_max_lod * 0.5).rgb);
+    if (u_show_fog) colour = apply_fog(colour, u_eye, surface_point, horizon_colour(-v));
     out_colour = vec4(colour, 1.0);
 }

@@ -3,6 +3,7 @@
 // cube's coarsest level, as step06 lights its foam), under step06's height fog. Linear HDR.
 #include "step06_foam_sky/texture_units.h"
 #include "step06_foam_sky/shaders/fog.glsl"
+#include "step06_foam_sky/shaders/sky_horizon.glsl"
 
 in vec3 v_position, v_normal;
 out vec4 out_colour;
@@ -20,6 +21,6 @@ void main() {
     vec3 sky = textureLod(u_sky, n, u_sky_max_lod).rgb;
     vec3 colour = u_colour * (sky + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
     vec3 v = normalize(u_eye - v_position);
-    if (u_show_fog) colour = apply_fog(colour, u_eye, v_position, textureLod(u_sky, normalize(vec3(-v.x, 0.0, -v.z)), u_sky_max_lod * 0.5).rgb);
+    if (u_show_fog) colour = apply_fog(colour, u_eye, v_position, horizon_colour(-v));
     out_colour = vec4(colour, 1.0);
 }
