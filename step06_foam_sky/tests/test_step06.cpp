@@ -364,6 +364,31 @@ TEST(Step06Clouds, LatticeHashIsUniformAndUncorrelated) {
 // The fog's closed form against the density summed along the ray by quadrature (Simpson, 2000
 // intervals), for rays up, down, level and long; and what a viewer sees: more fog farther away,
 // less for the same distance higher up, none at zero density.
+// sky_horizon.glsl's coordinate (the fog's colour table), by its definition: the axes at the
+// quarters, the same for any length, inverted by horizon_direction, and growing with the azimuth
+// all the way round, so the table holds the horizon in order and its linear filter blends
+// neighbours on the sky.
+TEST(Step06Sky, TheHorizonTableGoesRoundTheHorizonInOrder) {
+    EXPECT_EQ(step06::horizon_coordinate({1, 0}), 0.0);
+    EXPECT_EQ(step06::horizon_coordinate({0, 1}), 0.25);
+    EXPECT_EQ(step06::horizon_coordinate({-1, 0}), 0.5);
+    EXPECT_EQ(step06::horizon_coordinate({0, -1}), -0.25);  // 3/4: the table repeats
+    const auto turn = [](double u) { return u - std::floor(u); };
+    double previous = -1;
+    for (int i = 0; i < 3600; ++i) {
+        const double azimuth = 2 * step05::kPi * (i + 0.5) / 3600;
+        const glm::dvec2 d(std::cos(azimuth), std::sin(azimuth));
+        const double u = turn(step06::horizon_coordinate(d));
+        EXPECT_GT(u, previous) << "azimuth " << azimuth;
+        previous = u;
+        EXPECT_NEAR(turn(step06::horizon_coordinate(7.5 * d)), u, 1e-15);
+        const glm::dvec2 back = step06::horizon_direction(u);
+        EXPECT_NEAR(std::abs(back.x) + std::abs(back.y), 1.0, 1e-12) << "on the square";
+        EXPECT_NEAR(std::atan2(back.y, back.x), std::atan2(d.y, d.x), 1e-12) << "the same azimuth";
+    }
+    EXPECT_LT(previous, 1.0);
+}
+
 TEST(Step06Fog, OpticalDepthIsTheDensitySummedAlongTheRay) {
     const double density = 0.0012, falloff = 0.02;
     auto by_quadrature = [&](const step03::Vec3& eye, const step03::Vec3& p) {
