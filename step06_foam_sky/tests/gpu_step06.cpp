@@ -460,7 +460,6 @@ TEST_F(Step06Gpu, CloudsAreTheSameOnEveryGpu) {
     EXPECT_LT(worst_clouds, 1e-4);
 }
 
-
 // The fog's colour table (sky_horizon.glsl) against what it replaced, the cube read at
 // Sky::horizon_lod towards the same azimuth, at 2048 random directions (looking up, down and level;
 // the sun low, so that the horizon has its brightest and its darkest side), and its coordinate
