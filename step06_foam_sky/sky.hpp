@@ -39,8 +39,8 @@ public:
     GLuint horizon() const { return horizon_.id(); }
     int size() const { return size_; }
     float max_lod() const;
-    // The cube's level the fog reads: halfway to the coarsest, so that the horizon's colour is
-    // blurred over some tens of degrees (a single cloud does not tint the fog).
+    // The cube's level the fog reads: halfway to the coarsest (a texel there spans 6 to 11
+    // degrees), so that the fog takes the horizon's colour, not each cloud's.
     float horizon_lod() const { return 0.5f * max_lod(); }
     bool uses_image() const { return bool(equirect_); }
 
