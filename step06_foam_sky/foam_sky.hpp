@@ -227,8 +227,7 @@ protected:
         gpu_->bind_maps(p);
         foam_->bind(p, UNIT_FOAM);
         foam_->bind_pattern(p, UNIT_FOAM_PATTERN);
-        glBindTextureUnit(UNIT_SKY, sky_->cubemap());
-        glBindTextureUnit(UNIT_SKY_HORIZON, sky_->horizon());
+        sky_->bind();
         p.set("u_unresolved_slope_variance", unresolved_by_level_);
     }
 
@@ -268,7 +267,7 @@ protected:
         sky->set("u_sun_size", sky_settings_.sun_size);
         sky->set("u_draw_sun_disc", int(!sky_->uses_image()));
         sky->set("u_inverse_view_projection", glm::inverse(view_projection));
-        glBindTextureUnit(UNIT_SKY, sky_->cubemap());
+        sky_->bind();
         glUseProgram(sky->id());
         draw_at_far_plane(GL_LEQUAL);
     }

@@ -87,6 +87,11 @@ void Sky::render(const SkySettings& s) {
     image_rendered_ = bool(equirect_);
 }
 
+void Sky::bind() const {
+    glBindTextureUnit(UNIT_SKY, cubemap_.id());
+    glBindTextureUnit(UNIT_SKY_HORIZON, horizon_.id());
+}
+
 void Sky::tabulate_horizon() {
     ocean::ShaderProgram* p = programs_("sky_horizon.comp", {std::string(kShaders) + "sky_horizon.comp"}, {});
     if (p == nullptr) throw ocean::Error("sky_horizon.comp does not build");

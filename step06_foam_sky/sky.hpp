@@ -37,6 +37,9 @@ public:
     // The fog's colour around the horizon (sky_horizon.glsl): kHorizonTexels of the cube at
     // horizon_lod, made by every render.
     GLuint horizon() const { return horizon_.id(); }
+    // Both, on their units (texture_units.h: UNIT_SKY, UNIT_SKY_HORIZON), for a pass that shades
+    // with the sky: a shader reading one has the other at hand.
+    void bind() const;
     int size() const { return size_; }
     float max_lod() const;
     // The cube's level the fog reads: halfway to the coarsest (a texel there spans 6 to 11

@@ -225,8 +225,7 @@ private:
         p->set("u_view_projection", view_projection);
         p->set("u_eye", eye_from_origin());
         p->set("u_sky_max_lod", sky_->max_lod());
-        glBindTextureUnit(UNIT_SKY, sky_->cubemap());
-        glBindTextureUnit(UNIT_SKY_HORIZON, sky_->horizon());
+        sky_->bind();
         glUseProgram(p->id());
         glEnable(GL_DEPTH_TEST);
         const glm::vec3 colours[3] = {{0.8f, 0.12f, 0.03f}, {0.35f, 0.22f, 0.12f}, {0.75f, 0.75f, 0.72f}};

@@ -10,7 +10,6 @@
 #include "step06_foam_sky/patch_grid.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/tessellation.hpp"
-#include "step06_foam_sky/texture_units.h"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
@@ -484,8 +483,7 @@ TEST_F(Step06Gpu, TheFogsHorizonTableIsTheSkyCubeAtTheHorizon) {
     ASSERT_NE(program, nullptr);
     program->set("u_count", kCount);
     program->set("u_lod", sky.horizon_lod());
-    glBindTextureUnit(UNIT_SKY, sky.cubemap());
-    glBindTextureUnit(UNIT_SKY_HORIZON, sky.horizon());
+    sky.bind();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
     glUseProgram(program->id());
