@@ -109,13 +109,17 @@ int App::run_loop(const Options& options) {
     std::cout << step_name() << ": " << context_->description() << "\n";
     empty_vao_ = make_vertex_array();
     all_steps_ = repository_steps();
-    timers_.set_enabled(options.bench);
+    // --bench with a frame limit times the passes one by one (a glFinish around each) on the last
+    // quarter of the frames only, and the frames per second on the frames before them
+    // (FrameClock::stop); without a limit, every frame's passes.
+    const int frame_limit = options.frames > 0 ? options.frames : (headless ? 10 : 0);
+    const int pass_timed_frames = options.bench && frame_limit > 0 ? std::max(1, (frame_limit - 1) / 4) : 0;
+    timers_.set_enabled(options.bench && pass_timed_frames == 0);
     framebuffer_size_ = context_->framebuffer_size();
     panel_visible_ = !headless || options.show_ui;
     init_imgui(panel_visible_);
     init();
 
-    const int frame_limit = options.frames > 0 ? options.frames : (headless ? 10 : 0);
     FrameClock clock(options);
     time_ = clock.start_time();
     Image screenshot;
@@ -130,6 +134,11 @@ int App::run_loop(const Options& options) {
             break;
         }
         const FrameClock::Tick tick = clock.tick(frame, paused_, warming_up_ && warming_up_());
+        if (pass_timed_frames > 0 && frame == frame_limit - pass_timed_frames) {
+            glFinish();  // the frames before it have finished: the clock's end
+            clock.stop(frame);
+            timers_.set_enabled(true);
+        }
         if (frame > 0) time_ += tick.dt;
         if (tick.wall - last_reload_check_ > 0.5) {
             last_reload_check_ = tick.wall;
@@ -147,7 +156,7 @@ int App::run_loop(const Options& options) {
     // Closed before the last frame: a headless target still holds the last picture.
     if (closed_early && headless && frame > 0 && !options.screenshot.empty())
         screenshot = capture_frame(*context_, framebuffer_size_);
-    write_outputs(options, screenshot, frame, clock.bench_first_frame(), clock.bench_seconds());
+    write_outputs(options, screenshot, clock, frame);
 
     const GlDebugStats& gl = gl_debug_stats();
     if (gl.errors > 0 && headless) {

@@ -147,9 +147,10 @@ protected:
 private:
     int run_loop(const Options& options);
     void frame(const class TestProbes& probes, int frame, double dt, double real_dt);
-    // Output writing (app_output.cpp): --record, the screenshot, --export, --bench.
-    void write_outputs(const Options& options, const struct Image& screenshot, int frames, int bench_first_frame,
-                       double bench_seconds);
+    // Output writing (app_output.cpp): --record, the screenshot, --export, --bench (what `clock`
+    // timed of the run's `frames`).
+    void write_outputs(const Options& options, const struct Image& screenshot, const class FrameClock& clock,
+                       int frames);
     void record_frame(const std::string& dir, int frame);
     // The ImGui layer (imgui_layer.cpp) and the panel (panel.cpp).
     void init_imgui(bool draw_panel);

@@ -23,8 +23,7 @@ void App::record_frame(const std::string& dir, int frame) {
     save_screenshot(capture_frame(*context_, framebuffer_size_), (fs::path(dir) / name).string());
 }
 
-void App::write_outputs(const Options& options, const Image& screenshot, int frames, int bench_first_frame,
-                        double bench_seconds) {
+void App::write_outputs(const Options& options, const Image& screenshot, const FrameClock& clock, int frames) {
     if (!screenshot.rgba.empty()) {
         const std::string path = options.screenshot.empty() ? "screenshots/" + step_name() + ".png" : options.screenshot;
         std::cout << "screenshot: " << save_screenshot(screenshot, path) << "\n";
@@ -34,8 +33,13 @@ void App::write_outputs(const Options& options, const Image& screenshot, int fra
         std::cout << "export: " << fs::absolute(options.export_dir).string() << "\n";
     }
     if (options.bench) {
-        const int timed_frames = std::max(0, frames - bench_first_frame);
-        std::cout << timers_.report(bench_seconds, timed_frames, bench_first_frame);
+        const int timed_frames = std::max(0, clock.bench_frames(frames));
+        const double bench_seconds = clock.bench_seconds();
+        std::cout << timers_.report(bench_seconds, timed_frames, clock.bench_first_frame());
+        if (clock.stopped())
+            std::cout << "bench: the passes were timed one by one (a glFinish around each) on the last "
+                      << frames - clock.bench_first_frame() - timed_frames
+                      << " frames; the frames per second come from the frames before them, drawn without those waits\n";
         // The step prints its own lines, then hands the figures.
         const BenchFigures extra = bench_figures_ ? bench_figures_() : BenchFigures{};
         std::cout << bench_csv_line(step_name(), framebuffer_size_, timers_, bench_seconds, timed_frames,

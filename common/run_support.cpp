@@ -39,7 +39,15 @@ FrameClock::Tick FrameClock::tick(int frame, bool paused, bool warming_up) {
 }
 
 double FrameClock::bench_seconds() const {
-    return std::chrono::duration<double>(Clock::now() - (bench_started_ ? bench_start_ : frame_one_)).count();
+    return std::chrono::duration<double>((stopped_ ? stop_ : Clock::now()) - (bench_started_ ? bench_start_ : frame_one_))
+        .count();
+}
+
+void FrameClock::stop(int frame) {
+    if (stopped_ || !bench_started_ || frame <= bench_first_frame_) return;
+    stopped_ = true;
+    stop_ = Clock::now();
+    stop_frame_ = frame;
 }
 
 namespace {

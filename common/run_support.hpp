@@ -36,14 +36,23 @@ public:
     // warm-up is timed from frame 1.
     double bench_seconds() const;
     int bench_first_frame() const { return bench_started_ ? bench_first_frame_ : 1; }
+    // Ends the clock before `frame` (after the caller's glFinish), where --bench starts timing the
+    // passes one by one: a glFinish around each serialises the CPU and llvmpipe's threads, so the
+    // frames per second come from the frames before, drawn as a user sees them. Ignored unless
+    // the clock has started before `frame` (then it times to the end, as without a stop).
+    void stop(int frame);
+    // How many of a run's `frames` the clock timed.
+    int bench_frames(int frames) const { return (stopped_ ? stop_frame_ : frames) - bench_first_frame(); }
+    bool stopped() const { return stopped_; }
 
 private:
     using Clock = std::chrono::steady_clock;
     bool fixed_;
     double fixed_dt_, start_time_;
     Clock::time_point start_ = Clock::now(), previous_ = start_, frame_one_ = start_, bench_start_ = start_;
-    bool bench_started_ = false;
-    int bench_first_frame_ = 1;
+    bool bench_started_ = false, stopped_ = false;
+    int bench_first_frame_ = 1, stop_frame_ = 0;
+    Clock::time_point stop_ = start_;
 };
 
 // Ctrl-C (SIGINT) and SIGTERM close the step like its window's close button while this object

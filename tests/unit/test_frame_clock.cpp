@@ -1,4 +1,5 @@
-// The clock --bench reads: it times the steady state, after frame 0 and after a step's warm-up.
+// The clock --bench reads: it times the steady state, after frame 0 and after a step's warm-up,
+// and before the frames that time the passes one by one (stop).
 // Only lower bounds on time are tested (a sleep may overrun on a busy machine, never fall short).
 #include "common/run_support.hpp"
 
@@ -45,6 +46,35 @@ TEST(FrameClock, ARunThatNeverLeavesItsWarmUpIsTimedFromFrameOne) {
     const TwoClocks c = run(4, 100);
     EXPECT_EQ(c.warm.bench_first_frame(), 1);
     EXPECT_GE(c.warm.bench_seconds(), 3 * kFrameMs * 1e-3);
+}
+
+TEST(FrameClock, StopEndsTheClockBeforeThePassTimedFrames) {
+    // --bench's last frames time the passes one by one: the clock stops before frame 5 of 8.
+    ocean::FrameClock clock{ocean::Options{}};
+    for (int frame = 0; frame < 8; ++frame) {
+        clock.tick(frame, false, false);
+        if (frame == 5) clock.stop(frame);
+        std::this_thread::sleep_for(std::chrono::milliseconds(kFrameMs));
+    }
+    EXPECT_TRUE(clock.stopped());
+    EXPECT_EQ(clock.bench_frames(8), 4);  // frames 1 to 4
+    const double seconds = clock.bench_seconds();
+    EXPECT_GE(seconds, 4 * kFrameMs * 1e-3);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2 * kFrameMs));
+    EXPECT_EQ(clock.bench_seconds(), seconds);  // the frames after the stop are not in it
+}
+
+TEST(FrameClock, AStopBeforeTheWarmUpEndsIsIgnored) {
+    // Warming up until frame 6, asked to stop at 5: nothing would be timed, so the clock times to
+    // the end as without a stop.
+    ocean::FrameClock clock{ocean::Options{}};
+    for (int frame = 0; frame < 8; ++frame) {
+        clock.tick(frame, false, frame < 6);
+        if (frame == 5) clock.stop(frame);
+    }
+    EXPECT_FALSE(clock.stopped());
+    EXPECT_EQ(clock.bench_first_frame(), 6);
+    EXPECT_EQ(clock.bench_frames(8), 2);
 }
 
 }  // namespace
