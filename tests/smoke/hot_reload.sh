@@ -9,16 +9,16 @@ victim="$out/shaders/ocean.frag"
 [ -f "$victim" ] || victim=$(ls "$out"/shaders/*.frag | head -n 1)
 cp "$victim" "$out/good.frag"
 "$exe" --headless --frames 100000000 --size 96x54 --shader-dir "$out/shaders" --screenshot "$out/last.png" \
-  > "$out/run.log" 2>&1 &
+  --resource-log 1 > "$out/run.log" 2>&1 &
 pid=$!
-# Break it only once the step is drawing: its context line is printed before its programs build;
-# then a few seconds for the first frames (a loaded machine is slow to start a step).
-for _ in $(seq 60); do grep -q "OpenGL [0-9]" "$out/run.log" 2> /dev/null && break; sleep 0.5; done
-sleep 3
+# Each step waits for what the step prints (a frame drawn, the failure seen, the reload), not for
+# a fixed time: under ASan on a loaded machine a frame can take longer than any fixed sleep.
+wait_for() { for _ in $(seq 240); do grep -q "$1" "$out/run.log" 2> /dev/null && return; sleep 0.25; done; }
+wait_for "resources: frame 2 "                                 # the step is drawing
 printf '#version 450 core\nthis is not GLSL;\n' > "$victim"   # break it while the step runs
-sleep 2
+wait_for "shader reload failed"
 cp "$out/good.frag" "$victim" && touch "$victim"             # and mend it
-sleep 2
+wait_for "reloaded"
 kill -INT "$pid" 2> /dev/null  # ends the run loop like a closed window
 wait "$pid"
 status=$?
