@@ -39,13 +39,13 @@ FrameClock::Tick FrameClock::tick(int frame, bool paused, bool warming_up) {
 }
 
 double FrameClock::bench_seconds() const {
-    return std::chrono::duration<double>((stopped_ ? stop_ : Clock::now()) - (bench_started_ ? bench_start_ : frame_one_))
+    return std::chrono::duration<double>((stopped() ? stop_ : Clock::now()) -
+                                         (bench_started_ ? bench_start_ : frame_one_))
         .count();
 }
 
 void FrameClock::stop(int frame) {
-    if (stopped_ || !bench_started_ || frame <= bench_first_frame_) return;
-    stopped_ = true;
+    if (stopped() || !bench_started_ || frame <= bench_first_frame_) return;
     stop_ = Clock::now();
     stop_frame_ = frame;
 }

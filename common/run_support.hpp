@@ -42,16 +42,16 @@ public:
     // the clock has started before `frame` (then it times to the end, as without a stop).
     void stop(int frame);
     // How many of a run's `frames` the clock timed.
-    int bench_frames(int frames) const { return (stopped_ ? stop_frame_ : frames) - bench_first_frame(); }
-    bool stopped() const { return stopped_; }
+    int bench_frames(int frames) const { return (stopped() ? stop_frame_ : frames) - bench_first_frame(); }
+    bool stopped() const { return stop_frame_ > 0; }  // a stop is always after frame 1
 
 private:
     using Clock = std::chrono::steady_clock;
     bool fixed_;
     double fixed_dt_, start_time_;
     Clock::time_point start_ = Clock::now(), previous_ = start_, frame_one_ = start_, bench_start_ = start_;
-    bool bench_started_ = false, stopped_ = false;
-    int bench_first_frame_ = 1, stop_frame_ = 0;
+    bool bench_started_ = false;
+    int bench_first_frame_ = 1, stop_frame_ = 0;  // stop_frame_: 0 until stop() takes
     Clock::time_point stop_ = start_;
 };
 
