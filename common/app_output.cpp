@@ -23,7 +23,8 @@ void App::record_frame(const std::string& dir, int frame) {
     save_screenshot(capture_frame(*context_, framebuffer_size_), (fs::path(dir) / name).string());
 }
 
-void App::write_outputs(const Options& options, const Image& screenshot, const FrameClock& clock, int frames) {
+void App::write_outputs(const Options& options, const Image& screenshot, const FrameClock& clock,
+                        int frames) {
     if (!screenshot.rgba.empty()) {
         const std::string path = options.screenshot.empty() ? "screenshots/" + step_name() + ".png" : options.screenshot;
         std::cout << "screenshot: " << save_screenshot(screenshot, path) << "\n";
@@ -39,7 +40,8 @@ void App::write_outputs(const Options& options, const Image& screenshot, const F
         if (clock.stopped())
             std::cout << "bench: the passes were timed one by one (a glFinish around each) on the last "
                       << frames - clock.bench_first_frame() - timed_frames
-                      << " frames; the frames per second come from the frames before them, drawn without those waits\n";
+                      << " frames; the frames per second come from the frames before them, drawn without "
+                         "those waits\n";
         // The step prints its own lines, then hands the figures.
         const BenchFigures extra = bench_figures_ ? bench_figures_() : BenchFigures{};
         std::cout << bench_csv_line(step_name(), framebuffer_size_, timers_, bench_seconds, timed_frames,
