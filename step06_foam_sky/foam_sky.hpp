@@ -244,7 +244,10 @@ protected:
                 // each of those pixels is shaded once.
                 gbuffer_.resize(framebuffer_size(), post_.depth_texture());
                 gbuffer_.bind();
-                draw_mesh("ocean", {}, view_projection);
+                // The view coloured by tessellation level has the mesh record the level where the
+                // shading otherwise reads the choppy normal's cross term (ocean.frag).
+                if (view_ == 4) draw_mesh("ocean_levels", {"LEVEL_VIEW 1"}, view_projection);
+                else draw_mesh("ocean", {}, view_projection);
                 post_.bind_scene();
                 shade_sea();
             }

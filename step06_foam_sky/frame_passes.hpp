@@ -12,6 +12,7 @@ namespace step06 {
 
 using step05::FramePass;
 
+// The G-buffer's world target carries the mesh's l dDx/dz, so the shading reads the slopes only.
 // Texture units as main.cpp binds them (texture_units.h): 0-1 the cascades' maps, 3 foam, 4 sky,
 // 5 the bubble pattern, 6-7 the G-buffer, 8 the residual foam, 9 the fog's horizon table.
 constexpr std::array<FramePass, 8> kFramePasses{{
@@ -24,7 +25,7 @@ constexpr std::array<FramePass, 8> kFramePasses{{
     {"ocean", "ocean.vert, ocean.tesc, ocean.tese, ocean.frag: the G-buffer", "displacement (4 layers)",
      "G-buffer (world RGBA32F, rest RGBA32UI);depth"},
     {"ocean", "ocean_shade.frag where depth < far: shading.glsl, fog.glsl, sky_horizon.glsl",
-     "G-buffer (world RGBA32F, rest RGBA32UI);depth;displacement (4 layers);slopes (4 layers);foam (r32f, 3 levels);bubble pattern;sky (cubemap);horizon (1D, 256)",
+     "G-buffer (world RGBA32F, rest RGBA32UI);depth;slopes (4 layers);foam (r32f, 3 levels);bubble pattern;sky (cubemap);horizon (1D, 256)",
      "scene (RGBA16F, HDR)"},
     {"background", "sky.frag where depth = far: sky and sun disc", "depth;sky (cubemap)", "scene (RGBA16F, HDR)"},
     {"bloom", "bloom_down.frag down the levels, bloom_up.frag back up", "scene (RGBA16F, HDR)", "bloom (quarter size, 5 levels)"},

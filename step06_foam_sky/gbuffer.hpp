@@ -21,7 +21,8 @@ public:
     // shading pass can test against the mesh's depth.
     void resize(glm::ivec2 size, GLuint depth);
     void bind() const;  // as the draw target, with the depth buffer
-    // RGBA32F: the displaced surface point (world metres) and the tessellation level.
+    // RGBA32F: the displaced surface point (world metres) and the choppy normal's cross term
+    // l dDx/dz from the vertices (ocean.frag; the tessellation level in the view coloured by it).
     GLuint world_texture() const { return world_.id(); }
     // RGBA32UI: the rest position (float bits) and its screen derivatives d/dx, d/dy (half pairs).
     GLuint rest_texture() const { return rest_.id(); }

@@ -33,9 +33,9 @@ struct SurfaceFootprint {
 // The longer side of the footprint GL assumes for texture(): from the quad's differences of p.
 float implicit_long_side(vec2 p) { return max(max(length(dFdxCoarse(p)), length(dFdyCoarse(p))), 1e-20); }
 
-// What the pixel sees of the summed surface: set by sample_surface.
+// What the pixel sees of the summed surface: set by sample_surface. Not the displacement: the
+// mesh has moved the point, and the normal's cross term l dDx/dz comes from its vertices too.
 struct SurfaceSample {
-    vec4 displacement;  // (l Dx, h, l Dz, l dDx/dz)
     vec4 slopes;        // (dh/dx, dh/dz, l dDx/dx, l dDz/dz): derivatives of a sum are sums
     // The slope variance the footprint averages away (Bruneton, Neyret and Holzschuch 2010): for
     // each cascade what the mip level of the pixel's footprint leaves out, and all of the variance
@@ -59,7 +59,6 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
     float texels = float(textureSize(u_slopes, 0).x);
 
     SurfaceSample s;
-    s.displacement = vec4(0.0);
     s.slopes = vec4(0.0);
     s.unresolved_slope_variance = 0.0;
     for (int c = 0; c < CASCADES; ++c) {
@@ -101,8 +100,7 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
             continue;
         }
         // The slopes, which make the highlights, piece by piece: texture() with GL's own level
-        // moved by a bias to the piece's width. The displacement (it moves
-        // the normal only through its choppy term) once, over the whole footprint. texture(), not
+        // moved by a bias to the piece's width. texture(), not
         // textureGrad: llvmpipe picks one level per 2 x 2 pixels for implicit derivatives and one
         // per pixel for explicit ones, which made the pass 30 % slower. Everything that decides
         // the loop comes from the recorded coarse (per 2 x 2) derivatives, so the 2 x 2 pixels
@@ -118,7 +116,6 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
             slopes += texture(u_slopes, cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c), bias);
         } while (++i < taps);
         slopes /= float(taps);
-        s.displacement += texture(u_displacement, cascade_uv(p, c), log2(long_length / implicit_long));
         s.slopes += slopes;
         // The pixel's normal is the mean slope over its long x short footprint: what that averages
         // away is about what a square of the same area does (the level of sqrt(long x short)).

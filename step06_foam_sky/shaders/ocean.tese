@@ -12,7 +12,8 @@ uniform float u_tess_scale;  // the control shader's: level = tess_scale * patch
 
 out vec3 v_world_position;
 out vec2 v_rest_xz;
-out float v_level;  // for the wireframe view coloured by tessellation level
+out float v_cross_term;  // l dDx/dz: the choppy normal's cross term (ocean.frag says why per vertex)
+out float v_level;       // for the views coloured by tessellation level
 
 void main() {
     vec2 bottom = mix(te_rest_xz[0], te_rest_xz[1], gl_TessCoord.x);
@@ -25,7 +26,9 @@ void main() {
     // spacing is a function of the position alone, so two patches sharing an edge displace its
     // vertices alike and no crack opens.
     float spacing = length(vec3(v_rest_xz.x, 0.0, v_rest_xz.y) - u_eye) / u_tess_scale;
-    v_world_position = vec3(v_rest_xz.x, 0.0, v_rest_xz.y) + displacement_at(v_rest_xz, 2.0 * spacing).xyz;
+    vec4 displacement = displacement_at(v_rest_xz, 2.0 * spacing);
+    v_world_position = vec3(v_rest_xz.x, 0.0, v_rest_xz.y) + displacement.xyz;
+    v_cross_term = displacement.w;
     v_level = gl_TessLevelInner[0];
     gl_Position = u_view_projection * vec4(v_world_position, 1.0);
 }

@@ -16,7 +16,7 @@
 
 out vec4 out_colour;
 
-layout(binding = UNIT_GBUFFER_WORLD) uniform sampler2D u_gbuffer_world;   // (surface point, tessellation level)
+layout(binding = UNIT_GBUFFER_WORLD) uniform sampler2D u_gbuffer_world;   // (surface point, l dDx/dz; the level in view 4)
 layout(binding = UNIT_GBUFFER_REST) uniform usampler2D u_gbuffer_rest;   // (rest position, its d/dx and d/dy as half pairs)
 uniform vec3 u_eye;
 uniform vec3 u_to_sun;
@@ -41,11 +41,12 @@ void main() {
     vec4 world = texelFetch(u_gbuffer_world, pixel, 0);
     uvec4 packed_rest = texelFetch(u_gbuffer_rest, pixel, 0);
     vec3 surface_point = world.xyz;
-    float level = world.w;
     vec2 rest_xz = uintBitsToFloat(packed_rest.xy);
     SurfaceFootprint footprint = SurfaceFootprint(unpackHalf2x16(packed_rest.z), unpackHalf2x16(packed_rest.w));
     SurfaceSample surface = sample_surface(rest_xz, footprint);
-    vec4 displacement = surface.displacement, slopes = surface.slopes;
+    // The slopes per pixel; the choppy cross term l dDx/dz interpolated from the mesh's vertices
+    // (ocean.frag says why). choppy_normal and jacobian read only its w.
+    vec4 displacement = vec4(0.0, 0.0, 0.0, world.w), slopes = surface.slopes;
     vec3 n = choppy_normal(displacement, slopes);
     vec3 to_eye = u_eye - surface_point;
     float distance = length(to_eye);
@@ -61,7 +62,7 @@ void main() {
     float j = jacobian(displacement, slopes);
     out_colour = vec4(j < 0.0 ? vec3(1.0, 0.0, 0.0) : vec3(clamp(j, 0.0, 2.0) * 0.5), 1.0); return;
 #elif DEBUG_VIEW == 4
-    out_colour = vec4(level_colour(level), 1.0); return;
+    out_colour = vec4(level_colour(world.w), 1.0); return;  // the mesh wrote the level there (LEVEL_VIEW)
 #endif
 
     // Waves too small for this pixel are not lost: their slopes become microfacets, and so do the
