@@ -39,6 +39,10 @@
 
 namespace step06 {
 
+// The `view` parameter's choices, in its order. Normals to TessellationLevel are also
+// ocean_shade.frag's DEBUG_VIEW numbers.
+enum View : int { kViewShaded, kViewNormals, kViewFoam, kViewJacobian, kViewTessellationLevel, kViewCascadeMap };
+
 // Step06's program: step07 derives from it (its own StepInfo, drawing its bodies in the scene with
 // draw_in_scene, and reading the sea through the protected members below).
 class FoamSky : public ocean::App {
@@ -246,7 +250,7 @@ protected:
                 gbuffer_.bind();
                 // The view coloured by tessellation level has the mesh record the level where the
                 // shading otherwise reads the choppy normal's cross term (ocean.frag).
-                if (view_ == 4) draw_mesh("ocean_levels", {"LEVEL_VIEW 1"}, view_projection);
+                if (view_ == kViewTessellationLevel) draw_mesh("ocean_levels", {"LEVEL_VIEW 1"}, view_projection);
                 else draw_mesh("ocean", {}, view_projection);
                 post_.bind_scene();
                 shade_sea();
@@ -325,7 +329,7 @@ protected:
 
     // ocean_shade.frag over the whole screen, run only where the mesh wrote depth.
     void shade_sea() {
-        const int debug = view_ >= 1 && view_ <= 4 ? view_ : 0;
+        const int debug = view_ >= kViewNormals && view_ <= kViewTessellationLevel ? view_ : 0;
         ocean::ShaderProgram* shade =
             program("ocean_shade", {"fullscreen.vert", "ocean_shade.frag"},
                     {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug),
@@ -360,7 +364,7 @@ protected:
     }
 
     void render() override {
-        if (view_ == 5) {
+        if (view_ == kViewCascadeMap) {
             bind_target();
             clear_target({0, 0, 0});
             draw_cascade_map();
@@ -370,7 +374,7 @@ protected:
         post_.bind_scene();
         clear_target({0, 0, 0});
         draw_sea();
-        const bool bloom = look_.show(step06::Effect::Bloom) && view_ == 0;
+        const bool bloom = look_.show(step06::Effect::Bloom) && view_ == kViewShaded;
         if (bloom) {
             ocean::GpuScope timed(timers(), "bloom");
             ocean::ShaderProgram* first = program("bloom_first", {"fullscreen.vert", "bloom_down.frag"}, {"FIRST_LEVEL 1"});
@@ -383,11 +387,11 @@ protected:
         bind_target();
         ocean::ShaderProgram* tonemap =
             program("tonemap", {"fullscreen.vert", "tonemap.frag"},
-                    {"TONEMAPPER " + std::to_string(view_ == 0 ? look_.tonemapper : 2)});
+                    {"TONEMAPPER " + std::to_string(view_ == kViewShaded ? look_.tonemapper : 2)});
         if (tonemap == nullptr) return;
         tonemap->set("u_scene", 0);
         tonemap->set("u_bloom", 1);
-        tonemap->set("u_exposure", view_ == 0 ? look_.exposure : 1.0f);
+        tonemap->set("u_exposure", view_ == kViewShaded ? look_.exposure : 1.0f);
         tonemap->set("u_bloom_strength", bloom ? look_.bloom_strength : 0.0f);
         glBindTextureUnit(0, post_.scene_texture());
         glBindTextureUnit(1, post_.bloom_texture());
@@ -425,7 +429,7 @@ protected:
     glm::dvec2 wind_heading_{1.0, 0.0};  // made with the spectra (short_waves.hpp's wind_heading)
     step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with
     int split_effect_ = 0;
-    int patch_count_ = 96, view_ = 0, debug_cascade_ = 0, debug_map_ = 0;
+    int patch_count_ = 96, view_ = kViewShaded, debug_cascade_ = 0, debug_map_ = 0;
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
     int anisotropy_ = 4;
