@@ -16,7 +16,7 @@
 
 out vec4 out_colour;
 
-layout(binding = UNIT_GBUFFER_WORLD) uniform sampler2D u_gbuffer_world;   // (surface point, l dDx/dz; the level in view 4)
+layout(binding = UNIT_GBUFFER_WORLD) uniform sampler2D u_gbuffer_world;   // (surface point, l dDx/dz; the level for DEBUG_VIEW 4)
 layout(binding = UNIT_GBUFFER_REST) uniform usampler2D u_gbuffer_rest;   // (rest position, its d/dx and d/dy as half pairs)
 uniform vec3 u_eye;
 uniform vec3 u_to_sun;
