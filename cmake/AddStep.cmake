@@ -115,7 +115,7 @@ function(add_step name)
 
   add_test(NAME ${name}.smoke
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/smoke.sh" $<TARGET_FILE:${name}>
-            $<TARGET_FILE:image_compare> "${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke")
+            $<TARGET_FILE:image_compare> "${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke/${name}")
   set_tests_properties(${name}.smoke PROPERTIES LABELS "smoke;gpu;${name}" TIMEOUT 300)
 
   add_test(NAME ${name}.windowed

@@ -47,7 +47,7 @@ endfunction()
 function(step_smoke case golden)
   step_test(smoke ${case} LABELS gpu TIMEOUT 300
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/smoke.sh" $<TARGET_FILE:${OCEAN_STEP}> $<TARGET_FILE:image_compare>
-            "${CMAKE_CURRENT_SOURCE_DIR}/${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke" ${ARGN})
+            "${CMAKE_CURRENT_SOURCE_DIR}/${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke/${OCEAN_STEP}" ${ARGN})
 endfunction()
 
 # step_split(LEFT RIGHT [ARGS...]): --split against two plain renders of its variants, the

@@ -38,14 +38,18 @@ vec4 displacement_at(vec2 p, float footprint) {
 }
 
 // The summed surface at p as seen by a sample `footprint` metres wide (compute shaders: foam,
-// export): each cascade at the mip level that averages that footprint, and none whose tile is
-// under two footprints (its mipmapped mean is zero), as the fragment shader does.
+// export): each cascade at the whole mip level nearest that footprint, and none whose tile is
+// under two footprints (its mipmapped mean is zero), as the fragment shader does. A whole level,
+// not a blend of the two around the footprint: its box is within a factor of 1.4 of the
+// footprint either way, and a fetch that lands on a whole level reads one level where a blend
+// reads two (a quarter of foam.comp's time on llvmpipe, docs/performance.md). Every texel of a
+// foam level has the same footprint, so the level is the same all over it: no seam.
 void surface_at(vec2 p, float footprint, out vec4 displacement, out vec4 slopes) {
     displacement = vec4(0.0);
     slopes = vec4(0.0);
     for (int c = 0; c < CASCADES; ++c) {
         if (!u_cascade_enabled[c] || footprint >= 0.5 * u_patch_sizes[c]) continue;
-        float lod = cascade_lod(c, footprint);
+        float lod = floor(cascade_lod(c, footprint) + 0.5);  // nearest, halves up (as the tests' reference)
         displacement += textureLod(u_displacement, cascade_uv(p, c), lod);
         slopes += textureLod(u_slopes, cascade_uv(p, c), lod);
     }

@@ -163,6 +163,121 @@ TEST_F(Step06Gpu, FoamComesFromTheJacobianOfTheSummedCascades) {
     EXPECT_LT(worst, 2 * weight_gap + 1e-5);
 }
 
+// One field of one cascade's CPU maps at mip level k, as glGenerateMipmap makes it (each texel the
+// mean of 2^k x 2^k texels of level 0), sampled bilinearly where GL samples level k: map_uv's half
+// texel of level 0 puts x at level-k texel (x / L + 0.5 / N) N_k - 0.5. weight_bits as bilinear's.
+struct MipField {
+    int n0, n;
+    double patch_size;
+    std::vector<double> texels;
+    MipField(const step05::OceanMaps& maps, step05::Field field, int level)
+        : n0(maps.n), n(maps.n >> level), patch_size(maps.patch_size), texels(std::size_t(n) * std::size_t(n)) {
+        const int box = 1 << level;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                double sum = 0;
+                for (int b = 0; b < box; ++b)
+                    for (int a = 0; a < box; ++a) sum += maps[field][std::size_t(j * box + b) * std::size_t(n0) + std::size_t(i * box + a)];
+                texels[std::size_t(j) * std::size_t(n) + std::size_t(i)] = sum / (box * box);
+            }
+    }
+    double at(double x, double z, int weight_bits = 0) const {
+        const double u = (x / patch_size + 0.5 / n0) * n - 0.5, v = (z / patch_size + 0.5 / n0) * n - 0.5;
+        const double fu = std::floor(u), fv = std::floor(v);
+        const double steps = std::ldexp(1.0, weight_bits);
+        const double a = weight_bits > 0 ? std::floor((u - fu) * steps) / steps : u - fu;
+        const double b = weight_bits > 0 ? std::floor((v - fv) * steps) / steps : v - fv;
+        auto texel = [&](double i, double j) {
+            const int wi = ((int(i) % n) + n) % n, wj = ((int(j) % n) + n) % n;
+            return texels[std::size_t(wj) * std::size_t(n) + std::size_t(wi)];
+        };
+        return (1 - a) * (1 - b) * texel(fu, fv) + a * (1 - b) * texel(fu + 1, fv) + (1 - a) * b * texel(fu, fv + 1) +
+               a * b * texel(fu + 1, fv + 1);
+    }
+};
+
+TEST_F(Step06Gpu, FoamReadsEachCascadeAtTheWholeMipLevelNearestItsTexel) {
+    // Clipmap level 1 at N = 64 has 4 m texels. Cascade 0 (7.8 m texels) is magnified; the others
+    // are minified, each between two mip levels: 4 m over 2.1 m (level 0.93), 0.64 m (2.64) and
+    // 0.18 m (4.47). surface_at reads the nearest whole level of each (1, 3, 4); the reference
+    // box-filters the FFTW maps to those levels and samples them as GL does. A blend of the two
+    // levels around each footprint, what trilinear filtering reads, must fall far outside the
+    // tolerance, or this test could not tell the two apart.
+    const float choppiness = 1.6f;
+    const WindySea sea = windy_sea(factory(), 7.0, choppiness);
+    step06::FoamSimulation foam(factory());
+    foam.resize(64);
+    step06::FoamSettings settings;
+    settings.injection = 3;
+    settings.threshold = 1.0;  // the 4 m texels average the folds away: foam wherever J < 1
+    foam.update(*sea.gpu, all_cascades(), {37.0, -12.0}, {0, 1}, 0.0, settings);
+    const auto values = foam.read_level(1);
+    const step06::FoamWindow& window = foam.window(1);
+    ASSERT_NEAR(window.texel_size, 4.0, 1e-12);
+    // Each cascade's levels: below (floor of the footprint's level), above, the blend's weight,
+    // and the nearest whole level (halves up, as the shader). None is skipped: the finest tile,
+    // 11.5 m, is over two texels.
+    const std::array<step05::Field, 3> fields{step05::DDxDx, step05::DDzDz, step05::DDxDz};
+    struct CascadeLevels {
+        std::vector<MipField> below, above, nearest;
+        double blend;
+    };
+    std::vector<CascadeLevels> cascades;
+    std::vector<double> levels_read;
+    for (const auto& maps : sea.cpu) {
+        ASSERT_LT(window.texel_size, 0.5 * maps.patch_size);
+        const double level = std::max(0.0, std::log2(window.texel_size * maps.n / maps.patch_size));
+        const int below = int(std::floor(level)), nearest = int(std::floor(level + 0.5));
+        CascadeLevels c;
+        c.blend = level - below;
+        for (const auto f : fields) {
+            c.below.emplace_back(maps, f, below);
+            c.above.emplace_back(maps, f, below + 1);
+            c.nearest.emplace_back(maps, f, nearest);
+        }
+        cascades.push_back(std::move(c));
+        levels_read.push_back(level);
+    }
+    // J from the three summed derivatives, then the steady state foam.update starts every texel at.
+    const auto foam_from = [&](const glm::dvec2& p, auto&& field_at) {
+        double xx = 1, zz = 1, xz = 0;
+        for (const auto& c : cascades) {
+            xx += choppiness * field_at(c, 0, p);
+            zz += choppiness * field_at(c, 1, p);
+            xz += choppiness * field_at(c, 2, p);
+        }
+        const double jacobian = xx * zz - xz * xz;
+        return std::pair(jacobian, step06::foam_steady_state(jacobian, settings));
+    };
+    double worst = 0, weight_gap = 0, blend_gap = 0;
+    int folded = 0;
+    for (int j = 0; j < 64; ++j)
+        for (int i = 0; i < 64; ++i) {
+            const glm::dvec2 p = window.cell_centre(i, j);
+            const auto [jacobian, expected] = foam_from(p, [](const CascadeLevels& c, int f, const glm::dvec2& q) {
+                return c.nearest[std::size_t(f)].at(q.x, q.y);
+            });
+            const double truncated = foam_from(p, [](const CascadeLevels& c, int f, const glm::dvec2& q) {
+                return c.nearest[std::size_t(f)].at(q.x, q.y, 8);
+            }).second;
+            const double blended = foam_from(p, [](const CascadeLevels& c, int f, const glm::dvec2& q) {
+                return (1 - c.blend) * c.below[std::size_t(f)].at(q.x, q.y) + c.blend * c.above[std::size_t(f)].at(q.x, q.y);
+            }).second;
+            worst = std::max(worst, std::abs(values[std::size_t(j) * 64 + i] - expected));
+            weight_gap = std::max(weight_gap, std::abs(truncated - expected));
+            blend_gap = std::max(blend_gap, std::abs(blended - expected));
+            folded += jacobian < settings.threshold;
+        }
+    const double tolerance = 2 * weight_gap + 1e-5;  // as FoamComesFromTheJacobianOfTheSummedCascades
+    std::printf("foam at clipmap level 1 (cascades at mip levels %.2f %.2f %.2f %.2f, read at the nearest whole): "
+                "%d of 4096 texels below the threshold, worst |GPU - CPU| = %.2e (tolerance %.2e); the blend of "
+                "two levels would differ by up to %.2e\n",
+                levels_read[0], levels_read[1], levels_read[2], levels_read[3], folded, worst, tolerance, blend_gap);
+    ASSERT_GT(folded, 20) << "the test needs some foam to compare";
+    EXPECT_GT(blend_gap, 10 * tolerance) << "whole levels and blended ones must be told apart";
+    EXPECT_LT(worst, tolerance);
+}
+
 // The same foam at 6 and at 60 frames a second, texel by texel, on a windy sea held still (J
 // fixed: the step is exact then, so only float rounding separates the two clocks). Each run starts
 // from no foam and grows it for 1 s. The explicit step it replaced (f e^{-r dt} + q dt) made 7 %
