@@ -1,4 +1,6 @@
 #include "step06_foam_sky/foam.hpp"
+
+#include "step06_foam_sky/box_mipmaps.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/texture_units.h"
 
@@ -11,6 +13,10 @@
 #include <utility>
 
 namespace step06 {
+
+namespace {
+int mip_levels(int n) { return 1 + int(std::log2(double(n))); }  // n x n down to 1 x 1
+}  // namespace
 
 FoamWindow foam_window(int level, int n, glm::dvec2 centre) {
     FoamWindow w;
@@ -30,12 +36,12 @@ void FoamSimulation::resize(int n) {
     if (n == n_ && texture_) return;
     n_ = n;
     texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(texture_.id(), 1 + int(std::log2(double(n))), GL_R32F, n, n, kFoamLevels);
+    glTextureStorage3D(texture_.id(), mip_levels(n), GL_R32F, n, n, kFoamLevels);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the toroidal addressing
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
     residual_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(residual_.id(), 1 + int(std::log2(double(n))), GL_R32F, n, n);
+    glTextureStorage2D(residual_.id(), mip_levels(n), GL_R32F, n, n);
     glTextureParameteri(residual_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(residual_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(residual_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
@@ -84,8 +90,9 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     const GLuint groups = GLuint((n_ + 7) / 8);
     glDispatchCompute(groups, groups, GLuint(kFoamLevels));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    glGenerateTextureMipmap(texture_.id());  // distant foam averages instead of sparkling
-    if (streak_share_ > 0) glGenerateTextureMipmap(residual_.id());  // read only from Beaufort 7
+    // Distant foam averages instead of sparkling. The residual is read only from Beaufort 7.
+    make_box_mipmaps(programs_, texture_.id(), MipTarget::Array, GL_R32F, n_, kFoamLevels, mip_levels(n_));
+    if (streak_share_ > 0) make_box_mipmaps(programs_, residual_.id(), MipTarget::Plain, GL_R32F, n_, 1, mip_levels(n_));
 }
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {

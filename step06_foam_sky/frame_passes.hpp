@@ -18,9 +18,9 @@ using step05::FramePass;
 constexpr std::array<FramePass, 8> kFramePasses{{
     {"simulation", "step05's evolve.comp, fft.comp x 2, assemble.comp: 4 cascades as layers", "h0, omega (SSBOs, once)",
      "displacement (4 layers);slopes (4 layers)"},
-    {"foam", "foam.comp (foam_step.glsl): 3 clipmap levels", "displacement (4 layers);slopes (4 layers);foam (r32f, 3 levels)",
+    {"foam", "foam.comp (foam_step.glsl): 3 clipmap levels; box_mip.comp", "displacement (4 layers);slopes (4 layers);foam (r32f, 3 levels)",
      "foam (r32f, 3 levels)"},
-    {"sky", "sky_cube.comp (6 faces) or sky_equirect.comp, mipmaps; sky_horizon.comp", "",
+    {"sky", "sky_cube.comp (6 faces) or sky_equirect.comp; box_mip.comp; sky_horizon.comp", "",
      "sky (cubemap);horizon (1D, 256)"},
     {"ocean", "ocean.vert, ocean.tesc, ocean.tese, ocean.frag: the G-buffer", "displacement (4 layers)",
      "G-buffer (world RGBA32F, rest RGBA32UI);depth"},

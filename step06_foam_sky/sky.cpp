@@ -1,6 +1,7 @@
 #include "step06_foam_sky/sky.hpp"
 
 #include "common/error.hpp"
+#include "step06_foam_sky/box_mipmaps.hpp"
 #include "step06_foam_sky/texture_units.h"
 
 #include <stb_image.h>
@@ -20,7 +21,7 @@ constexpr const char* kShaders = "step06_foam_sky/shaders/";
 
 Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(programs)), size_(size) {
     cubemap_ = ocean::make_texture(GL_TEXTURE_CUBE_MAP);
-    glTextureStorage2D(cubemap_.id(), int(std::log2(double(size))) + 1, GL_RGBA16F, size, size);
+    glTextureStorage2D(cubemap_.id(), levels(), GL_RGBA16F, size, size);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -81,8 +82,9 @@ void Sky::render(const SkySettings& s) {
     glBindImageTexture(0, cubemap_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     glUseProgram(p->id());
     glDispatchCompute(GLuint((size_ + 7) / 8), GLuint((size_ + 7) / 8), 6);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    glGenerateTextureMipmap(cubemap_.id());  // rough reflections read the blurrier levels
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    // Rough reflections read the blurrier levels.
+    make_box_mipmaps(programs_, cubemap_.id(), MipTarget::Cube, GL_RGBA16F, size_, 6, levels());
     tabulate_horizon();
     image_rendered_ = bool(equirect_);
 }

@@ -1,0 +1,35 @@
+#version 450 core
+// One mip level made from the level above it (box_mipmaps.hpp): each texel the mean of the 2 x 2
+// texels it covers, what glGenerateMipmap makes of a power-of-two texture, for every layer (or
+// cube face: z) at once. glGenerateMipmap would do, but llvmpipe turns it into a blit per level
+// and per layer: 42 small draws for the sky's cube, most of the sky pass.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#ifndef FORMAT
+#define FORMAT rgba16f  // the texture's format: rgba16f (the sky) or r32f (the foam)
+#endif
+#ifndef IMAGE
+#define IMAGE imageCube  // imageCube, image2DArray (z: the layer) or image2D
+#endif
+#ifndef LAYERED
+#define LAYERED 1  // 0 for image2D
+#endif
+
+layout(FORMAT, binding = 0) readonly uniform IMAGE u_above;   // level l - 1
+layout(FORMAT, binding = 1) writeonly uniform IMAGE u_below;  // level l
+uniform int u_size;  // texels per side of level l
+
+#if LAYERED
+#define AT(xy) ivec3(xy, gl_GlobalInvocationID.z)
+#else
+#define AT(xy) ivec2(xy)
+#endif
+
+void main() {
+    ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+    if (texel.x >= u_size || texel.y >= u_size) return;
+    ivec2 corner = 2 * texel;
+    vec4 sum = imageLoad(u_above, AT(corner)) + imageLoad(u_above, AT(corner + ivec2(1, 0))) +
+               imageLoad(u_above, AT(corner + ivec2(0, 1))) + imageLoad(u_above, AT(corner + ivec2(1, 1)));
+    imageStore(u_below, AT(texel), 0.25 * sum);
+}
