@@ -1,7 +1,8 @@
 // step06 on the GPU: foam decay at two frame rates, foam made by the summed surface (against
-// the CPU reference) and kept in world space when the camera moves, tessellation (primitive
-// counts against the CPU level, culling behind the camera), and the sky cubemap (the sun's
-// texel, an image sky, missing and corrupt files).
+// the CPU reference, at mip level 0 and at whole levels below it) and kept in world space when
+// the camera moves, the box mipmaps (against the 2 x 2 mean and glGenerateMipmap), tessellation
+// (primitive counts against the CPU level, culling behind the camera), and the sky cubemap (the
+// sun's texel, an image sky, missing and corrupt files).
 #include "common/frustum.hpp"
 #include "common/image.hpp"
 #include "step06_foam_sky/box_mipmaps.hpp"
@@ -96,22 +97,26 @@ WindySea windy_sea(ocean::ProgramFactory factory, double time, float choppiness)
     return sea;
 }
 
-// A field of the CPU maps at world position (x, z), bilinear between the samples x_i = i L / N
-// (the convention the shaders' half-texel offset keeps), wrapping with the tile. weight_bits > 0
-// truncates the weights to that many fractional bits, as a GPU's texture unit may.
-double bilinear(const step05::OceanMaps& maps, step05::Field field, double x, double z, int weight_bits = 0) {
-    const int n = maps.n;
-    const double u = x / maps.patch_size * n, v = z / maps.patch_size * n;
+// Bilinear interpolation of an n x n grid that wraps, at grid coordinates (u, v) (texel (i, j) at
+// (i, j)); texel(i, j) reads the grid. weight_bits > 0 truncates the weights to that many
+// fractional bits, as a GPU's texture unit may.
+template <typename Texel>
+double bilinear_wrapped(int n, double u, double v, int weight_bits, const Texel& texel) {
     const double fu = std::floor(u), fv = std::floor(v);
     const double steps = std::ldexp(1.0, weight_bits);
     const double a = weight_bits > 0 ? std::floor((u - fu) * steps) / steps : u - fu;
     const double b = weight_bits > 0 ? std::floor((v - fv) * steps) / steps : v - fv;
-    auto at = [&](double i, double j) {
-        const int wi = ((int(i) % n) + n) % n, wj = ((int(j) % n) + n) % n;
-        return maps[field][std::size_t(wj) * n + std::size_t(wi)];
-    };
+    auto at = [&](double i, double j) { return texel(((int(i) % n) + n) % n, ((int(j) % n) + n) % n); };
     return (1 - a) * (1 - b) * at(fu, fv) + a * (1 - b) * at(fu + 1, fv) + (1 - a) * b * at(fu, fv + 1) +
            a * b * at(fu + 1, fv + 1);
+}
+
+// A field of the CPU maps at world position (x, z), bilinear between the samples x_i = i L / N
+// (the convention the shaders' half-texel offset keeps).
+double bilinear(const step05::OceanMaps& maps, step05::Field field, double x, double z, int weight_bits = 0) {
+    const int n = maps.n;
+    return bilinear_wrapped(n, x / maps.patch_size * n, z / maps.patch_size * n, weight_bits,
+                            [&](int i, int j) { return double(maps[field][std::size_t(j) * std::size_t(n) + std::size_t(i)]); });
 }
 
 TEST_F(Step06Gpu, FoamComesFromTheJacobianOfTheSummedCascades) {
@@ -183,17 +188,8 @@ struct MipField {
             }
     }
     double at(double x, double z, int weight_bits = 0) const {
-        const double u = (x / patch_size + 0.5 / n0) * n - 0.5, v = (z / patch_size + 0.5 / n0) * n - 0.5;
-        const double fu = std::floor(u), fv = std::floor(v);
-        const double steps = std::ldexp(1.0, weight_bits);
-        const double a = weight_bits > 0 ? std::floor((u - fu) * steps) / steps : u - fu;
-        const double b = weight_bits > 0 ? std::floor((v - fv) * steps) / steps : v - fv;
-        auto texel = [&](double i, double j) {
-            const int wi = ((int(i) % n) + n) % n, wj = ((int(j) % n) + n) % n;
-            return texels[std::size_t(wj) * std::size_t(n) + std::size_t(wi)];
-        };
-        return (1 - a) * (1 - b) * texel(fu, fv) + a * (1 - b) * texel(fu + 1, fv) + (1 - a) * b * texel(fu, fv + 1) +
-               a * b * texel(fu + 1, fv + 1);
+        return bilinear_wrapped(n, (x / patch_size + 0.5 / n0) * n - 0.5, (z / patch_size + 0.5 / n0) * n - 0.5, weight_bits,
+                                [&](int i, int j) { return texels[std::size_t(j) * std::size_t(n) + std::size_t(i)]; });
     }
 };
 
