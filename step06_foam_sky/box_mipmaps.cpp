@@ -7,24 +7,32 @@
 
 namespace step06 {
 
-void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture, MipTarget target, GLenum format,
-                      int size, int layers, int levels) {
+void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture) {
+    GLint target = 0, levels = 0, format = 0, size = 0, layers = 1;
+    glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &target);
+    glGetTextureParameteriv(texture, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &size);
+    if (target == GL_TEXTURE_2D_ARRAY) glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_DEPTH, &layers);
+    if (target == GL_TEXTURE_CUBE_MAP) layers = 6;
     if (format != GL_RGBA16F && format != GL_R32F) throw ocean::Error("make_box_mipmaps: only RGBA16F and R32F");
-    const char* image = target == MipTarget::Cube ? "imageCube" : target == MipTarget::Array ? "image2DArray" : "image2D";
+    if (target != GL_TEXTURE_2D && target != GL_TEXTURE_2D_ARRAY && target != GL_TEXTURE_CUBE_MAP)
+        throw ocean::Error("make_box_mipmaps: only 2D textures, 2D arrays and cube maps");
+    const bool layered = target != GL_TEXTURE_2D;
+    const char* image = target == GL_TEXTURE_CUBE_MAP ? "imageCube" : layered ? "image2DArray" : "image2D";
     const std::vector<std::string> defines{std::string("FORMAT ") + (format == GL_RGBA16F ? "rgba16f" : "r32f"),
                                            std::string("IMAGE ") + image,
-                                           std::string("LAYERED ") + (target == MipTarget::Plain ? "0" : "1")};
+                                           std::string("LAYERED ") + (layered ? "1" : "0")};
     ocean::ShaderProgram* p = programs("box_mip.comp", {"step06_foam_sky/shaders/box_mip.comp"}, defines);
     if (p == nullptr) throw ocean::Error("box_mip.comp does not build");
     glUseProgram(p->id());
-    const GLboolean layered = target == MipTarget::Plain ? GL_FALSE : GL_TRUE;
     for (int level = 1; level < levels; ++level) {
         const int level_size = std::max(1, size >> level);
         p->set("u_size", level_size);
-        glBindImageTexture(0, texture, level - 1, layered, 0, GL_READ_ONLY, format);
-        glBindImageTexture(1, texture, level, layered, 0, GL_WRITE_ONLY, format);
+        glBindImageTexture(0, texture, level - 1, layered, 0, GL_READ_ONLY, GLenum(format));
+        glBindImageTexture(1, texture, level, layered, 0, GL_WRITE_ONLY, GLenum(format));
         const GLuint groups = GLuint((level_size + 7) / 8);
-        glDispatchCompute(groups, groups, GLuint(target == MipTarget::Plain ? 1 : layers));
+        glDispatchCompute(groups, groups, GLuint(layers));
         // The next level reads this one through its image.
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }

@@ -9,13 +9,10 @@
 
 namespace step06 {
 
-// What the texture is: a cube map, a 2D array or a plain 2D texture.
-enum class MipTarget { Cube, Array, Plain };
-
-// Levels 1 to levels - 1 of `texture` (square, `size` texels a side at level 0, `layers` layers:
-// 6 for a cube), from level 0 down. `format` is GL_RGBA16F or GL_R32F, the formats step06 filters.
-// Ends with the barrier that lets texture fetches read the new levels.
-void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture, MipTarget target, GLenum format,
-                      int size, int layers, int levels);
+// In place of glGenerateTextureMipmap(texture): levels 1 and below of a square, immutable
+// power-of-two texture, from level 0 down. The texture says what it is (a cube map, a 2D array or
+// a 2D texture; its size, layers and levels); its format must be GL_RGBA16F or GL_R32F, the
+// formats step06 filters. Ends with the barrier that lets texture fetches read the new levels.
+void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture);
 
 }  // namespace step06

@@ -91,8 +91,8 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     glDispatchCompute(groups, groups, GLuint(kFoamLevels));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     // Distant foam averages instead of sparkling. The residual is read only from Beaufort 7.
-    make_box_mipmaps(programs_, texture_.id(), MipTarget::Array, GL_R32F, n_, kFoamLevels, mip_levels(n_));
-    if (streak_share_ > 0) make_box_mipmaps(programs_, residual_.id(), MipTarget::Plain, GL_R32F, n_, 1, mip_levels(n_));
+    make_box_mipmaps(programs_, texture_.id());
+    if (streak_share_ > 0) make_box_mipmaps(programs_, residual_.id());
 }
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {

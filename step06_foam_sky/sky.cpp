@@ -21,7 +21,7 @@ constexpr const char* kShaders = "step06_foam_sky/shaders/";
 
 Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(programs)), size_(size) {
     cubemap_ = ocean::make_texture(GL_TEXTURE_CUBE_MAP);
-    glTextureStorage2D(cubemap_.id(), levels(), GL_RGBA16F, size, size);
+    glTextureStorage2D(cubemap_.id(), int(std::log2(double(size))) + 1, GL_RGBA16F, size, size);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -84,7 +84,7 @@ void Sky::render(const SkySettings& s) {
     glDispatchCompute(GLuint((size_ + 7) / 8), GLuint((size_ + 7) / 8), 6);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     // Rough reflections read the blurrier levels.
-    make_box_mipmaps(programs_, cubemap_.id(), MipTarget::Cube, GL_RGBA16F, size_, 6, levels());
+    make_box_mipmaps(programs_, cubemap_.id());
     tabulate_horizon();
     image_rendered_ = bool(equirect_);
 }

@@ -9,7 +9,6 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -42,7 +41,6 @@ public:
     // with the sky: a shader reading one has the other at hand.
     void bind() const;
     int size() const { return size_; }
-    int levels() const { return int(std::log2(double(size_))) + 1; }  // the cube's mip levels, down to 1 x 1
     float max_lod() const;
     // The cube's level the fog reads: halfway to the coarsest (a texel there spans 6 to 11
     // degrees), so that the fog takes the horizon's colour, not each cloud's.

@@ -216,16 +216,17 @@ TEST_F(Step06Gpu, FoamReadsEachCascadeAtTheWholeMipLevelNearestItsTexel) {
     // 11.5 m, is over two texels.
     const std::array<step05::Field, 3> fields{step05::DDxDx, step05::DDzDz, step05::DDxDz};
     struct CascadeLevels {
+        double level;  // of the footprint, fractional
         std::vector<MipField> below, above, nearest;
         double blend;
     };
     std::vector<CascadeLevels> cascades;
-    std::vector<double> levels_read;
     for (const auto& maps : sea.cpu) {
         ASSERT_LT(window.texel_size, 0.5 * maps.patch_size);
         const double level = std::max(0.0, std::log2(window.texel_size * maps.n / maps.patch_size));
         const int below = int(std::floor(level)), nearest = int(std::floor(level + 0.5));
         CascadeLevels c;
+        c.level = level;
         c.blend = level - below;
         for (const auto f : fields) {
             c.below.emplace_back(maps, f, below);
@@ -233,7 +234,6 @@ TEST_F(Step06Gpu, FoamReadsEachCascadeAtTheWholeMipLevelNearestItsTexel) {
             c.nearest.emplace_back(maps, f, nearest);
         }
         cascades.push_back(std::move(c));
-        levels_read.push_back(level);
     }
     // J from the three summed derivatives, then the steady state foam.update starts every texel at.
     const auto foam_from = [&](const glm::dvec2& p, auto&& field_at) {
@@ -269,7 +269,7 @@ TEST_F(Step06Gpu, FoamReadsEachCascadeAtTheWholeMipLevelNearestItsTexel) {
     std::printf("foam at clipmap level 1 (cascades at mip levels %.2f %.2f %.2f %.2f, read at the nearest whole): "
                 "%d of 4096 texels below the threshold, worst |GPU - CPU| = %.2e (tolerance %.2e); the blend of "
                 "two levels would differ by up to %.2e\n",
-                levels_read[0], levels_read[1], levels_read[2], levels_read[3], folded, worst, tolerance, blend_gap);
+                cascades[0].level, cascades[1].level, cascades[2].level, cascades[3].level, folded, worst, tolerance, blend_gap);
     ASSERT_GT(folded, 20) << "the test needs some foam to compare";
     EXPECT_GT(blend_gap, 10 * tolerance) << "whole levels and blended ones must be told apart";
     EXPECT_LT(worst, tolerance);
@@ -481,17 +481,17 @@ float degrees_between(glm::vec3 a, glm::vec3 b) {
 // and the same as glGenerateMipmap makes of the same level 0.
 TEST_F(Step06Gpu, BoxMipmapsAreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
     struct Case {
+        const char* name;
         GLenum gl_target;
-        step06::MipTarget target;
         GLenum format;
         int layers, channels;
         double relative;  // one rounding to the format, with a margin of 2
     };
     // Half floats keep 10 bits of mantissa: one step is up to 2^-10 of the value (llvmpipe
     // truncates, and reaches 9.5e-4 here), floats 2^-23.
-    const Case cases[] = {{GL_TEXTURE_CUBE_MAP, step06::MipTarget::Cube, GL_RGBA16F, 6, 4, 2.0 / 1024},
-                          {GL_TEXTURE_2D_ARRAY, step06::MipTarget::Array, GL_R32F, 3, 1, 1e-6},
-                          {GL_TEXTURE_2D, step06::MipTarget::Plain, GL_R32F, 1, 1, 1e-6}};
+    const Case cases[] = {{"cube RGBA16F", GL_TEXTURE_CUBE_MAP, GL_RGBA16F, 6, 4, 2.0 / 1024},
+                          {"2D array R32F", GL_TEXTURE_2D_ARRAY, GL_R32F, 3, 1, 1e-6},
+                          {"2D R32F", GL_TEXTURE_2D, GL_R32F, 1, 1, 1e-6}};
     const int size = 16, levels = 5;
     std::mt19937 random(7);
     std::uniform_real_distribution<float> value(0.0f, 4.0f);
@@ -518,7 +518,7 @@ TEST_F(Step06Gpu, BoxMipmapsAreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
         ocean::Texture ours = ocean::make_texture(c.gl_target), gl = ocean::make_texture(c.gl_target);
         upload(ours);
         upload(gl);
-        step06::make_box_mipmaps(factory(), ours.id(), c.target, c.format, size, c.layers, levels);
+        step06::make_box_mipmaps(factory(), ours.id());
         glGenerateTextureMipmap(gl.id());
         double worst_box = 0, worst_gl = 0;
         for (int level = 1; level < levels; ++level) {
@@ -538,7 +538,7 @@ TEST_F(Step06Gpu, BoxMipmapsAreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
                         }
         }
         std::printf("%s: worst relative gap to the 2 x 2 mean %.2e, to glGenerateMipmap %.2e (levels 1-%d)\n",
-                    c.target == step06::MipTarget::Cube ? "cube RGBA16F" : c.target == step06::MipTarget::Array ? "2D array R32F" : "2D R32F",
+                    c.name,
                     worst_box, worst_gl, levels - 1);
         EXPECT_LT(worst_box, c.relative);
         // glGenerateMipmap's own rounding compounds over the levels: four roundings.
