@@ -100,6 +100,10 @@ protected:
         p.add_int("anisotropy", &anisotropy_, 1, 16,
                   "most samples of each cascade along a pixel's long footprint (1: isotropic trilinear)")
             .in_group("geometry");
+        p.add_int("combined_texels", &combined_texels_, 0, 8192,
+                  "0: off; n: the slopes only as fine as the cascades combined around the camera into "
+                  "levels of n x n texels could show (Crest's design, measured; README)")
+            .in_group("geometry");
         look_.declare(p);
         p.add_choice("view", &view_, {"shaded", "normals", "foam", "jacobian", "tessellation", "cascade_map"},
                      "the final picture, or one ingredient");
@@ -333,7 +337,8 @@ protected:
         ocean::ShaderProgram* shade =
             program("ocean_shade", {"fullscreen.vert", "ocean_shade.frag"},
                     {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug),
-                     "ANISOTROPIC_TAPS " + std::to_string(anisotropy_)});
+                     "ANISOTROPIC_TAPS " + std::to_string(anisotropy_),
+                     "COMBINED_LEVEL_TEXELS " + std::to_string(combined_texels_)});
         if (shade == nullptr) return;
         bind_cascades(*shade);
         look_.upload_shading(*shade);
@@ -433,6 +438,7 @@ protected:
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
     int anisotropy_ = 4;
+    int combined_texels_ = 0;  // 0: off (the README says why the cascades are not combined)
     // The backends step06 offers (not the naive DFT: its cascades are larger than it can do), in
     // the `backend` parameter's order; the first, auto, is the default.
     static constexpr std::array<step05::Backend, 3> kBackends = {step05::Backend::Auto, step05::Backend::GpuFft,

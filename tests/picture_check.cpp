@@ -37,6 +37,12 @@
 //       (13.9 m/s), "well-marked streaks" from force 8 (17.2 m/s). The same three pictures, closer
 //       (streaks are tens of centimetres wide); the faint foam (cover below 0.15) must vary at least
 //       twice as much across the wind as along it from force 8, at most 1.3 times below force 7.
+//   picture_check detail IMAGE FROM TO
+//       The detail across the view in a band of the picture (rows FROM to TO, fractions of its
+//       height): the mean step in luma (display values, 0 to 255) from each pixel to its right-hand
+//       neighbour. Broken ripples make it large; the horizontal smears of a sea filtered too coarsely
+//       across the view make it small (step06's README, "Filtering at grazing angles"). Only prints
+//       it: what it must be is the calling test's (step06_foam_sky/tests/combined_levels.sh).
 // Prints the figures; exit 0 when they hold, 1 otherwise (and 2 on bad input).
 #include "common/image.hpp"
 #include "tests/export_reader.hpp"
@@ -339,6 +345,34 @@ int whitecaps(const std::vector<std::string>& args) {
     });
 }
 
+double fraction(const std::string& text) {
+    std::size_t used = 0;
+    double value = 0;
+    try {
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size()) throw std::runtime_error("detail: '" + text + "' is not a number");
+    return value;
+}
+
+int detail(const std::string& path, double from, double to) {
+    if (!(from >= 0 && from < to && to <= 1)) throw std::runtime_error("detail: the band must be 0 <= FROM < TO <= 1");
+    const ocean::Image image = load(path);
+    const auto luma = [&](int x, int y) {
+        const std::uint8_t* p = &image.rgba[(std::size_t(y) * image.width + x) * 4];
+        return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    };
+    double sum = 0;
+    long steps = 0;
+    for (int y = int(from * image.height); y < int(to * image.height); ++y)
+        for (int x = 1; x < image.width; ++x, ++steps) sum += std::abs(luma(x, y) - luma(x - 1, y));
+    if (steps == 0) throw std::runtime_error("detail: '" + path + "' has no pixels in the band");
+    std::printf("%s: detail across the view %.3f\n", path.c_str(), sum / double(steps));
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -349,7 +383,9 @@ int main(int argc, char** argv) {
             const std::vector<std::string> args(argv + 2, argv + argc);
             return mode == "whitecaps" ? whitecaps(args) : streaks(args);
         }
-        std::fprintf(stderr, "usage: picture_check glitter DIR IMAGE [DIR IMAGE]... | whitecaps|streaks DIR FOAM WATER WHITE...\n");
+        if (mode == "detail" && argc == 5) return detail(argv[2], fraction(argv[3]), fraction(argv[4]));
+        std::fprintf(stderr, "usage: picture_check glitter DIR IMAGE [DIR IMAGE]... | whitecaps|streaks DIR FOAM WATER WHITE... | "
+                             "detail IMAGE FROM TO\n");
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "picture_check: %s\n", e.what());

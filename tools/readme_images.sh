@@ -55,3 +55,14 @@ crop=0,0.3,0.625,0.6
   "before: one trilinear fetch|$scratch/isotropic.png|$crop" "2 pieces|$scratch/two.png|$crop" \
   "4 pieces (the default)|$scratch/four.png|$crop" "reference: 16x supersampled|$scratch/reference.png|$crop"
 echo step06_foam_sky/streaks.png
+# What the cascades combined around the camera would keep (README, "Why the cascades are not
+# combined around the camera"): the same strip, closer, with combined_texels.
+strip combined_256 --set combined_texels=256
+strip combined_512 --set combined_texels=512
+near=0.1,0.34,0.45,0.5
+"$build/tools/image_panel" "$root/step06_foam_sky/combined_levels.png" 560x128 2 \
+  "the cascades sampled per pixel (what step06 does)|$scratch/four.png|$near" \
+  "reference: 16x supersampled|$scratch/reference.png|$near" \
+  "combined around the camera, 256 x 256 a level|$scratch/combined_256.png|$near" \
+  "combined, 512 x 512 a level|$scratch/combined_512.png|$near"
+echo step06_foam_sky/combined_levels.png

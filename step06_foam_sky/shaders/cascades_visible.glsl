@@ -30,6 +30,13 @@ struct SurfaceFootprint {
     vec2 dx, dy;
 };
 
+// The footprint made no finer than `finest` metres along either of its axes: what a sampling that
+// cannot resolve less than `finest` would see (combined_levels.glsl; ocean_shade.frag).
+SurfaceFootprint no_finer_than(SurfaceFootprint f, float finest) {
+    return SurfaceFootprint(f.dx * max(1.0, finest / max(length(f.dx), 1e-20)),
+                            f.dy * max(1.0, finest / max(length(f.dy), 1e-20)));
+}
+
 // The longer side of the footprint GL assumes for texture(): from the quad's differences of p.
 float implicit_long_side(vec2 p) { return max(max(length(dFdxCoarse(p)), length(dFdyCoarse(p))), 1e-20); }
 

@@ -9,9 +9,13 @@
 #include "fog.glsl"
 #include "sky_horizon.glsl"
 #include "level_colour.glsl"
+#include "combined_levels.glsl"
 
 #ifndef DEBUG_VIEW
 #define DEBUG_VIEW 0  // 0 shaded; 1 normals; 2 foam; 3 Jacobian; 4 tessellation level
+#endif
+#ifndef COMBINED_LEVEL_TEXELS
+#define COMBINED_LEVEL_TEXELS 0  // > 0: the slopes only as fine as cascades combined into levels of this many texels would be
 #endif
 
 out vec4 out_colour;
@@ -43,7 +47,15 @@ void main() {
     vec3 surface_point = world.xyz;
     vec2 rest_xz = uintBitsToFloat(packed_rest.xy);
     SurfaceFootprint footprint = SurfaceFootprint(unpackHalf2x16(packed_rest.z), unpackHalf2x16(packed_rest.w));
+#if COMBINED_LEVEL_TEXELS > 0
+    // What Crest's design would let this pixel see (the setting combined_texels; README, "Why the
+    // cascades are not combined around the camera"): the levels are centred on the camera.
+    float finest_texel = u_patch_sizes[CASCADES - 1] / float(textureSize(u_slopes, 0).x);
+    float level_texel = combined_level_texel(rest_xz - u_eye.xz, float(COMBINED_LEVEL_TEXELS), finest_texel);
+    SurfaceSample surface = sample_surface(rest_xz, no_finer_than(footprint, level_texel));
+#else
     SurfaceSample surface = sample_surface(rest_xz, footprint);
+#endif
     // The slopes per pixel; the choppy cross term l dDx/dz interpolated from the mesh's vertices
     // (ocean.frag says why). choppy_normal and jacobian read only its w.
     vec4 displacement = vec4(0.0, 0.0, 0.0, world.w), slopes = surface.slopes;

@@ -7,6 +7,7 @@
 #include "common/image.hpp"
 #include "step06_foam_sky/box_mipmaps.hpp"
 #include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/combined_levels.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/patch_grid.hpp"
@@ -23,6 +24,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <set>
 
 namespace {
 
@@ -689,6 +691,52 @@ TEST_F(Step06Gpu, TheFogsHorizonTableIsTheSkyCubeAtTheHorizon) {
     ASSERT_GT(brightest, 0.1) << "the sky must be lit for the comparison to mean anything";
     EXPECT_LT(worst_colour, 0.0025 * brightest);
     EXPECT_LT(worst_coordinate, 1e-6);
+}
+
+// combined_levels.glsl against combined_levels.hpp in double, at 4096 random offsets within 3 km of
+// the centre (and the centre itself): the texels are powers of two times the finest, so they agree
+// but for float rounding (relative 1e-6), except within 1e-4 of a level's edge, where a float and a
+// double may fall on either side (those points are left out, and must be few).
+TEST_F(Step06Gpu, CombinedLevelTexelsAreTheCpuReferences) {
+    constexpr int kCount = 4096;
+    const float texels = 256, finest = 0.045f;
+    std::mt19937 random(29);
+    std::uniform_real_distribution<float> metres(-3000, 3000), scale(-6, 0);
+    std::vector<glm::vec2> offsets{{0, 0}};
+    // Spread over the levels: |offset| from about 3 mm to 3 km, evenly in its logarithm.
+    while (int(offsets.size()) < kCount) offsets.emplace_back(glm::vec2(metres(random), metres(random)) * std::exp2(scale(random) * 3.3f));
+    ocean::Buffer in = ocean::make_buffer(), out = ocean::make_buffer();
+    glNamedBufferStorage(in.id(), GLsizeiptr(offsets.size() * sizeof(glm::vec2)), offsets.data(), 0);
+    glNamedBufferStorage(out.id(), GLsizeiptr(offsets.size() * sizeof(float)), nullptr, 0);
+    ocean::ShaderProgram* program = cache("eval_combined_levels", {"step06_foam_sky/tests/eval_combined_levels.comp"}, {});
+    ASSERT_NE(program, nullptr);
+    program->set("u_count", kCount);
+    program->set("u_texels", texels);
+    program->set("u_finest_texel", finest);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+    glUseProgram(program->id());
+    glDispatchCompute(kCount / 64, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<float> gpu(offsets.size());
+    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
+    double worst = 0;
+    int compared = 0;
+    std::set<double> levels;
+    for (std::size_t i = 0; i < offsets.size(); ++i) {
+        const glm::dvec2 offset(offsets[i]);
+        const double edge = std::log2(2 * std::max(std::abs(offset.x), std::abs(offset.y)) / (double(texels) * finest));
+        if (edge > 0 && std::abs(edge - std::round(edge)) < 1e-4) continue;
+        const double cpu = step06::combined_level_texel(offset, texels, finest);
+        worst = std::max(worst, std::abs(gpu[i] - cpu) / cpu);
+        levels.insert(cpu);
+        ++compared;
+    }
+    std::printf("combined levels: %d of %d offsets compared, %zu levels, worst relative |GPU - CPU| %.1e\n", compared,
+                kCount, levels.size(), worst);
+    EXPECT_GT(compared, kCount * 99 / 100);
+    EXPECT_GE(levels.size(), 8u) << "the offsets should reach across most levels";
+    EXPECT_LT(worst, 1e-6);
 }
 
 }  // namespace

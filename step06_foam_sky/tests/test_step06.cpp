@@ -3,6 +3,7 @@
 #include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
 #include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/combined_levels.hpp"
 #include "step06_foam_sky/fog.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
@@ -439,4 +440,23 @@ TEST(Step06Effects, OneTableOfNamesAndAMisspeltNameIsRefused) {
         EXPECT_FALSE(registry.set(std::string("show_") + name, "false").has_value()) << name;
         EXPECT_FALSE(look.show(step06::effect_named(name))) << name;
     }
+}
+
+// The cascades combined around the camera (combined_levels.hpp): nested squares, each twice the
+// extent of the one inside it and each `texels` on a side, so level k reaches texels * t0 * 2^k / 2
+// from the centre with texels t0 * 2^k. A point just inside a level's reach has its texel, just
+// outside it twice that; the reach is the square's (max(|x|, |z|)), not the circle's.
+TEST(Step06CombinedLevels, EachLevelTwiceTheExtentAndTheTexelOfTheOneInside) {
+    const double texels = 256, finest = 0.05;
+    EXPECT_DOUBLE_EQ(step06::combined_level_texel({0, 0}, texels, finest), finest);
+    for (int k = 0; k < 10; ++k) {
+        const double reach = texels * finest * std::exp2(k) / 2, texel = finest * std::exp2(k);
+        EXPECT_DOUBLE_EQ(step06::combined_level_texel({reach * 0.999, 0}, texels, finest), texel) << "level " << k;
+        EXPECT_DOUBLE_EQ(step06::combined_level_texel({0, -reach * 1.001}, texels, finest), 2 * texel) << "level " << k;
+        // A corner of the square: farther than the reach as the crow flies, still inside.
+        EXPECT_DOUBLE_EQ(step06::combined_level_texel({-reach * 0.99, reach * 0.99}, texels, finest), texel) << "level " << k;
+    }
+    // Twice the texels a level: the same point one level further in, at the same texel size there.
+    EXPECT_DOUBLE_EQ(step06::combined_level_texel({1000, 0}, 256, finest), finest * 256);  // 2000 / 12.8 = 156: level 8
+    EXPECT_DOUBLE_EQ(step06::combined_level_texel({1000, 0}, 512, finest), finest * 128);
 }
