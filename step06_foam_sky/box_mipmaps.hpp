@@ -7,6 +7,8 @@
 
 #include "common/shader.hpp"
 
+#include <cmath>
+
 namespace step06 {
 
 // In place of glGenerateTextureMipmap(texture): levels 1 and below of a square, immutable
@@ -14,5 +16,9 @@ namespace step06 {
 // a 2D texture; its size, layers and levels); its format must be GL_RGBA16F or GL_R32F, the
 // formats step06 filters. Ends with the barrier that lets texture fetches read the new levels.
 void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture);
+
+// The levels of a full mip chain of a size x size texture, down to 1 x 1: what its storage needs
+// for make_box_mipmaps (or glGenerateTextureMipmap) to fill.
+inline int mip_levels(int size) { return 1 + int(std::floor(std::log2(double(size)))); }
 
 }  // namespace step06

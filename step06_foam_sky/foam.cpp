@@ -8,15 +8,10 @@
 
 #include <glm/geometric.hpp>
 
-#include <cmath>
 #include <string>
 #include <utility>
 
 namespace step06 {
-
-namespace {
-int mip_levels(int n) { return 1 + int(std::log2(double(n))); }  // n x n down to 1 x 1
-}  // namespace
 
 FoamWindow foam_window(int level, int n, glm::dvec2 centre) {
     FoamWindow w;
@@ -99,8 +94,7 @@ FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::
     const FoamPatternSettings settings;
     const std::vector<std::uint8_t> bytes = to_r8(foam_pattern(settings));
     pattern_ = ocean::make_texture(GL_TEXTURE_2D);
-    const int levels = 1 + int(std::floor(std::log2(double(settings.size))));
-    glTextureStorage2D(pattern_.id(), levels, GL_R8, settings.size, settings.size);
+    glTextureStorage2D(pattern_.id(), mip_levels(settings.size), GL_R8, settings.size, settings.size);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTextureSubImage2D(pattern_.id(), 0, 0, 0, settings.size, settings.size, GL_RED, GL_UNSIGNED_BYTE, bytes.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);

@@ -21,7 +21,7 @@ constexpr const char* kShaders = "step06_foam_sky/shaders/";
 
 Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(programs)), size_(size) {
     cubemap_ = ocean::make_texture(GL_TEXTURE_CUBE_MAP);
-    glTextureStorage2D(cubemap_.id(), int(std::log2(double(size))) + 1, GL_RGBA16F, size, size);
+    glTextureStorage2D(cubemap_.id(), mip_levels(size), GL_RGBA16F, size, size);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -32,7 +32,7 @@ Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(program
     glTextureParameteri(horizon_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the horizon goes round
 }
 
-float Sky::max_lod() const { return float(std::log2(double(size_))); }
+float Sky::max_lod() const { return float(mip_levels(size_) - 1); }  // the 1 x 1 level
 
 std::optional<std::string> Sky::use_image(const std::string& path) {
     equirect_.reset();
