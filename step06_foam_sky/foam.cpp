@@ -13,13 +13,7 @@
 
 namespace step06 {
 
-FoamWindow foam_window(int level, int n, glm::dvec2 centre) {
-    FoamWindow w;
-    w.n = n;
-    w.texel_size = foam_extent(level) / n;
-    w.origin = glm::ivec2(glm::floor(centre / w.texel_size)) - n / 2;
-    return w;
-}
+FoamWindow foam_window(int level, int n, glm::dvec2 centre) { return window_around(centre, foam_extent(level) / n, n); }
 
 glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_xz) {
     const double length = glm::length(forward_xz);

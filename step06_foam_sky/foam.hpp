@@ -21,6 +21,7 @@
 #include "common/params.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/texel_window.hpp"
 
 #include <glm/vec2.hpp>
 
@@ -88,17 +89,8 @@ constexpr double kFoamLevelRatio = 4;
 constexpr int kResidualFoamLevel = 1;
 inline double foam_extent(int level) { return kFoamExtent0 * std::pow(kFoamLevelRatio, level); }
 
-// Where a level's window lies: its first cell (in texels of the level) and the texel size. Cell
-// c covers [c t, (c + 1) t) and its texel holds the value at the centre (c + 0.5) t.
-struct FoamWindow {
-    glm::ivec2 origin{0};
-    double texel_size = 1;
-    int n = 0;
-    glm::dvec2 centre() const { return (glm::dvec2(origin) + 0.5 * n) * texel_size; }
-    glm::dvec2 cell_centre(int i, int j) const { return (glm::dvec2(origin + glm::ivec2(i, j)) + 0.5) * texel_size; }
-    // The cell whose corner is `world_origin` (a multiple of kOriginStep: a whole number of cells).
-    glm::ivec2 cell_of(glm::dvec2 world_origin) const { return glm::ivec2(glm::round(world_origin / texel_size)); }
-};
+// A level's window (texel_window.hpp): it moves in whole texels.
+using FoamWindow = TexelWindow;
 // The window of `level` around `centre` (x, z): it moves in whole texels.
 FoamWindow foam_window(int level, int n, glm::dvec2 centre);
 // Where a level's window is centred: ahead of the camera by 30 % of its side along the view's

@@ -16,6 +16,7 @@
 #include "step05_fft/ocean_simulation.hpp"
 #include "step05_fft/ocean_params.hpp"
 #include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/combined_surface.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/gbuffer.hpp"
 #include "step06_foam_sky/look_params.hpp"
@@ -100,6 +101,13 @@ protected:
         p.add_int("anisotropy", &anisotropy_, 1, 16,
                   "most samples of each cascade along a pixel's long footprint (1: isotropic trilinear)")
             .in_group("geometry");
+        p.add_choice("surface", &surface_, {"cascades", "combined"},
+                     "what the mesh and the shading read: the four cascades, or the cascades combined once a "
+                     "frame into levels around the camera (Crest's design; README)")
+            .in_group("geometry");
+        p.add_choice("combined_size", &combined_size_, {"256", "512", "1024", "2048"},
+                     "surface=combined: texels on a side of each level")
+            .in_group("geometry");
         p.add_int("combined_texels", &combined_texels_, 0, 8192,
                   "0: off; n: the slopes only as fine as the cascades combined around the camera into "
                   "levels of n x n texels could show (Crest's design, measured; README)")
@@ -142,6 +150,7 @@ protected:
         gpu_ = std::make_unique<step05::OceanSimulation>(program_factory());
         sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
         foam_ = std::make_unique<step06::FoamSimulation>(program_factory());
+        combined_ = std::make_unique<step06::CombinedSurface>(program_factory());
     }
 
     void update(double /*time*/, double dt) override {
@@ -185,6 +194,7 @@ protected:
         // Once a frame, whatever the split view shows: the sea, its foam and the sky move on.
         simulate();
         update_foam(dt);
+        if (combined()) combine();
         ocean::GpuScope timed(timers(), "sky");
         sky_settings_ = look_.sky(time(), ocean_params_.spectrum.wind_direction);
         sky_->render(sky_settings_);
@@ -203,6 +213,30 @@ protected:
         const glm::dvec3 eye = camera().eye_world();
         const glm::vec3 forward = camera().forward();
         foam_->update(*gpu_, cascade_view_, {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
+    }
+
+    bool combined() const { return surface_ == kSurfaceCombined; }
+
+    // surface=combined: the cascades summed into levels around the camera, enough of them to
+    // hold the whole mesh (its half side, a patch for the grid's snap, and the sea's largest
+    // displacement), the finest at the finest cascade's texel (combined_surface.hpp).
+    void combine() {
+        ocean::GpuScope timed(timers(), "combine");
+        const int n = 256 << combined_size_;
+        const double finest_texel = double(cascade_view_.patch_sizes[step06::kCascades - 1]) / ocean_params_.spectrum.resolution;
+        const double texel0 = step06::combined_texel0(finest_texel);
+        const double reach = 0.5 * patch_count_ * double(tess_patch_size_) + double(tess_patch_size_) +
+                             step05::largest_displacement(height_variance_, ocean_params_.choppiness);
+        combined_->resize(n, step06::combined_level_count(reach, n, texel0), texel0);
+        const glm::dvec3 eye = camera().eye_world();
+        combined_->update(*gpu_, cascade_view_, {eye.x, eye.z});
+    }
+
+    // The defines and the textures of the surface the mesh and the shading read (surface=).
+    std::string surface_define() const { return "COMBINED_SURFACE " + std::to_string(int(combined())); }
+    void bind_surface(const ocean::ShaderProgram& p) {
+        const glm::dvec3 eye = camera().eye_world();
+        if (combined()) combined_->bind(p, {eye.x, eye.z});
     }
 
     // What the panel says of each cascade, made when the spectra are (not every frame in ui()).
@@ -301,10 +335,13 @@ protected:
     // The tessellated patches around the camera (depth tested and written): ocean.frag records
     // the G-buffer, or with WIREFRAME 1 draws the edges.
     void draw_mesh(const std::string& name, const std::vector<std::string>& defines, const glm::mat4& view_projection) {
-        ocean::ShaderProgram* mesh = program(name, {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"}, defines);
+        std::vector<std::string> all_defines = defines;
+        all_defines.push_back(surface_define());
+        ocean::ShaderProgram* mesh = program(name, {"ocean.vert", "ocean.tesc", "ocean.tese", "ocean.frag"}, all_defines);
         if (mesh == nullptr) return;
         cascade_view_.upload(*mesh);
         gpu_->bind_maps(*mesh);
+        bind_surface(*mesh);
         // The grid follows the camera in whole patches of the world (in double), then is placed
         // from the world origin.
         const glm::dvec3 eye = camera().eye_world();
@@ -338,9 +375,10 @@ protected:
             program("ocean_shade", {"fullscreen.vert", "ocean_shade.frag"},
                     {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug),
                      "ANISOTROPIC_TAPS " + std::to_string(anisotropy_),
-                     "COMBINED_LEVEL_TEXELS " + std::to_string(combined_texels_)});
+                     "COMBINED_LEVEL_TEXELS " + std::to_string(combined_texels_), surface_define()});
         if (shade == nullptr) return;
         bind_cascades(*shade);
+        bind_surface(*shade);
         look_.upload_shading(*shade);
         shade->set("u_short_wave_slope_variance",
                    glm::vec2(float(short_wave_slope_variance_.upwind), float(short_wave_slope_variance_.crosswind)));
@@ -420,6 +458,7 @@ protected:
     std::unique_ptr<step06::Sky> sky_;
     std::vector<std::unique_ptr<step05::InitialSpectrum>> spectra_;
     std::unique_ptr<step06::FoamSimulation> foam_;
+    std::unique_ptr<step06::CombinedSurface> combined_;
     unsigned sky_image_loaded_for_ = 0;
     step06::FoamSettings foam_settings_;
     unsigned spectrum_built_for_ = 0;
@@ -438,6 +477,8 @@ protected:
     bool cascade_on_[step06::kCascades] = {true, true, true, true};
     bool cull_ = true, wireframe_ = false;
     int anisotropy_ = 4;
+    static constexpr int kSurfaceCombined = 1;  // the `surface` parameter's second choice
+    int surface_ = 0, combined_size_ = 2;       // cascades; 1024 texels when combined
     int combined_texels_ = 0;  // 0: off (the README says why the cascades are not combined)
     // The backends step06 offers (not the naive DFT: its cascades are larger than it can do), in
     // the `backend` parameter's order; the first, auto, is the default.

@@ -12,4 +12,6 @@
 #define UNIT_GBUFFER_REST 7   // the G-buffer's rest positions and footprints (u_gbuffer_rest)
 #define UNIT_FOAM_RESIDUAL 8  // the residual foam of the streaks (foam_map.glsl's u_residual_foam)
 #define UNIT_SKY_HORIZON 9    // the fog's colour around the horizon (sky_horizon.glsl's u_sky_horizon)
+#define UNIT_COMBINED_DISPLACEMENT 10  // the cascades combined around the camera (combined_surface.glsl)
+#define UNIT_COMBINED_SLOPES 11
 #endif

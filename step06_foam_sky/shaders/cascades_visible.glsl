@@ -6,6 +6,7 @@
 // the footprint asks for.
 #extension GL_ARB_shader_group_vote : enable  // sample_surface: one loop length for neighbours (below)
 #include "cascades.glsl"
+#include "combined_surface.glsl"
 #include "foam_map.glsl"
 
 #ifndef ANISOTROPIC_TAPS
@@ -130,6 +131,46 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
     }
     return s;
 }
+
+#if COMBINED_SURFACE
+// The pieces of the pixel's long footprint in one combined level: sample_surface's anisotropic
+// filtering with one fetch a piece where the cascades take four. A piece is no shorter than the
+// level's texel (below it the level is magnified: one fetch is exact).
+vec4 combined_slopes_in(int level, vec2 p, vec2 long_axis, float long_length, float short_length) {
+    float texel = combined_texel(level);
+    int taps = clamp(int(long_length / max(short_length, texel) + 0.5), 1, ANISOTROPIC_TAPS);
+    float lod = combined_lod(level, max(short_length, long_length / float(taps)));
+    vec4 slopes = vec4(0.0);
+    for (int i = 0; i < taps; ++i)
+        slopes += textureLod(u_combined_slopes, combined_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), level), lod);
+    return slopes / float(taps);
+}
+
+// sample_surface from the combined levels (surface=combined): the same slopes and unresolved
+// variance, one level read (two in the band where a level hands over) instead of four cascades.
+// textureLod at the piece's own level, per pixel: nothing here needs the pixel's neighbours.
+SurfaceSample sample_combined_surface(vec2 p, SurfaceFootprint f) {
+    float lx = length(f.dx), ly = length(f.dy);
+    vec2 long_axis = lx > ly ? f.dx : f.dy;
+    float long_length = max(lx, ly), short_length = min(lx, ly);
+    CombinedLevels at = combined_levels_at(p);
+    SurfaceSample s;
+    s.slopes = combined_slopes_in(at.level, p, long_axis, long_length, short_length);
+    if (at.next_weight > 0.0)
+        s.slopes = mix(s.slopes, combined_slopes_in(at.level + 1, p, long_axis, long_length, short_length), at.next_weight);
+    // What the footprint averages away of each cascade, as sample_surface counts it, with the
+    // footprint no finer than the level's texel: a level holds nothing finer (arithmetic only).
+    float texels = float(textureSize(u_slopes, 0).x);
+    float level_texel = combined_texel(at.level);
+    s.unresolved_slope_variance = 0.0;
+    for (int c = 0; c < CASCADES; ++c) {
+        if (!u_cascade_enabled[c]) continue;
+        float texel = u_patch_sizes[c] / texels;
+        s.unresolved_slope_variance += unresolved_at(c, cascade_lod(c, max(sqrt(long_length * max(short_length, texel)), level_texel)));
+    }
+    return s;
+}
+#endif
 
 // Foam at rest position p (fragment shaders): the finest level that holds p, blended into the
 // next one over the outer tenth of its window, none beyond the largest window. Every level is

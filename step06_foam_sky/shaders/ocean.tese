@@ -3,6 +3,7 @@
 // displacement of all cascades.
 layout(quads, equal_spacing, ccw) in;
 #include "cascades.glsl"
+#include "combined_surface.glsl"
 
 in vec2 te_rest_xz[];
 
@@ -26,7 +27,11 @@ void main() {
     // spacing is a function of the position alone, so two patches sharing an edge displace its
     // vertices alike and no crack opens.
     float spacing = length(vec3(v_rest_xz.x, 0.0, v_rest_xz.y) - u_eye) / u_tess_scale;
+#if COMBINED_SURFACE
+    vec4 displacement = combined_displacement_at(v_rest_xz, 2.0 * spacing);  // the levels around the camera
+#else
     vec4 displacement = displacement_at(v_rest_xz, 2.0 * spacing);
+#endif
     v_world_position = vec3(v_rest_xz.x, 0.0, v_rest_xz.y) + displacement.xyz;
     v_cross_term = displacement.w;
     v_level = gl_TessLevelInner[0];

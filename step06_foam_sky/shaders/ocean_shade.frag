@@ -47,7 +47,10 @@ void main() {
     vec3 surface_point = world.xyz;
     vec2 rest_xz = uintBitsToFloat(packed_rest.xy);
     SurfaceFootprint footprint = SurfaceFootprint(unpackHalf2x16(packed_rest.z), unpackHalf2x16(packed_rest.w));
-#if COMBINED_LEVEL_TEXELS > 0
+#if COMBINED_SURFACE
+    // The cascades combined around the camera (surface=combined): one level, not four cascades.
+    SurfaceSample surface = sample_combined_surface(rest_xz, footprint);
+#elif COMBINED_LEVEL_TEXELS > 0
     // What Crest's design would let this pixel see (the setting combined_texels; README, "Why the
     // cascades are not combined around the camera"): the levels are centred on the camera.
     float finest_texel = u_patch_sizes[CASCADES - 1] / float(textureSize(u_slopes, 0).x);

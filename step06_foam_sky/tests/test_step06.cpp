@@ -4,6 +4,7 @@
 #include "step05_fft/spectrum.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/combined_levels.hpp"
+#include "step06_foam_sky/combined_surface.hpp"
 #include "step06_foam_sky/fog.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
@@ -459,4 +460,36 @@ TEST(Step06CombinedLevels, EachLevelTwiceTheExtentAndTheTexelOfTheOneInside) {
     // Twice the texels a level: the same point one level further in, at the same texel size there.
     EXPECT_DOUBLE_EQ(step06::combined_level_texel({1000, 0}, 256, finest), finest * 256);  // 2000 / 12.8 = 156: level 8
     EXPECT_DOUBLE_EQ(step06::combined_level_texel({1000, 0}, 512, finest), finest * 128);
+}
+
+// surface=combined (combined_surface.hpp): the levels hold the whole mesh, the finest texel is a
+// power of two no coarser than the finest cascade's (so every level's texel divides kOriginStep),
+// and the level a point is read from hands over to the next without a jump: the blended level
+// (level + the next one's weight) grows continuously with the reach, and the level holds the point.
+TEST(Step06CombinedSurface, LevelsHoldTheMeshAndHandOverWithoutAJump) {
+    const double finest = 500 / 3.7 / 3.3 / 3.55 / 256;  // the default sea's finest texel, 4.5 cm
+    const double texel0 = step06::combined_texel0(finest);
+    EXPECT_DOUBLE_EQ(texel0, 1.0 / 32);
+    EXPECT_DOUBLE_EQ(step06::combined_texel0(0.125), 0.125);
+    EXPECT_DOUBLE_EQ(std::fmod(step06::kOriginStep, texel0), 0.0);
+    for (int n : {256, 1024}) {
+        const double side0 = n * texel0, reach = 0.5 * 96 * 16 + 16 + 12;  // the default mesh's half side
+        const int levels = step06::combined_level_count(reach, n, texel0);
+        EXPECT_GE(step06::kLevelReach * side0 * std::exp2(levels - 1), reach) << n;  // the last level holds it
+        EXPECT_LT(step06::kLevelReach * side0 * std::exp2(levels - 2), reach) << n;  // and no level is spare
+        double before = 0;
+        for (double r = 0; r <= reach; r += side0 / 4096) {
+            const step06::LevelChoice at = step06::combined_level_at(r, side0, levels);
+            const double side = side0 * std::exp2(at.level);
+            ASSERT_LE(r, step06::kLevelReach * side + 1e-9) << "level " << at.level << " does not hold r = " << r;
+            const double blended = at.level + at.next_weight;
+            ASSERT_LE(std::abs(blended - before), 0.02) << "a jump at r = " << r;
+            ASSERT_GE(blended, before - 1e-12) << "the level should only grow with the reach";
+            before = blended;
+        }
+        EXPECT_EQ(step06::combined_level_at(0, side0, levels).level, 0);
+        EXPECT_EQ(step06::combined_level_at(reach, side0, levels).next_weight, 0.0);  // past the last: no next
+    }
+    // A vast mesh gets the most levels there are (kMaxCombinedLevels), not more.
+    EXPECT_EQ(step06::combined_level_count(1e9, 256, texel0), step06::kMaxCombinedLevels);
 }
