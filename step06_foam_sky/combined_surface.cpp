@@ -36,7 +36,8 @@ void CombinedSurface::resize(int n, int levels, double texel0) {
     windows_.assign(std::size_t(levels), TexelWindow{});
 }
 
-void CombinedSurface::update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz) {
+void CombinedSurface::update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
+                             int combined_cascades) {
     ocean::ShaderProgram* p = programs_("combine.comp", {"step06_foam_sky/shaders/combine.comp"}, {});
     if (p == nullptr) throw ocean::Error("combine.comp does not build");
     origin_ = cascades.origin;
@@ -47,7 +48,10 @@ void CombinedSurface::update(const step05::OceanSimulation& ocean, const Cascade
         p->set("u_origin" + index, w.origin - w.cell_of(origin_));  // cells from the world origin
         p->set("u_texel_size" + index, float(w.texel_size));
     }
-    cascades.upload(*p);
+    combined_cascades_ = combined_cascades;
+    CascadeView in_levels = cascades;  // the cascades the levels hold
+    for (int c = combined_cascades; c < kCascades; ++c) in_levels.enabled[std::size_t(c)] = false;
+    in_levels.upload(*p);
     p->set("u_n", n_);
     p->set("u_levels", levels_);
     ocean.bind_maps(*p);
@@ -65,6 +69,7 @@ void CombinedSurface::bind(const ocean::ShaderProgram& program, glm::dvec2 eye_x
     std::vector<glm::vec2> corners;
     for (const TexelWindow& w : windows_) corners.emplace_back(glm::dvec2(w.origin) * w.texel_size - origin_);
     program.set("u_combined_levels", levels_);
+    program.set("u_combined_cascades", combined_cascades_);
     program.set("u_combined_n", n_);
     program.set("u_combined_side0", float(texel0_ * n_));
     program.set("u_combined_centre", glm::vec2(eye_xz - origin_));

@@ -68,8 +68,10 @@ public:
     // `levels` levels of n x n (a power of two) texels, the finest of texel0 metres; new textures
     // only when one of them changed.
     void resize(int n, int levels, double texel0);
-    // This frame's levels around the camera (x, z in world metres).
-    void update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz);
+    // This frame's levels around the camera (x, z in world metres), holding cascades 0 to
+    // `combined_cascades` - 1; the shaders read the others as the cascades path does.
+    void update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
+                int combined_cascades = kCascades);
     // The textures on their units (texture_units.h) and combined_surface.glsl's uniforms.
     void bind(const ocean::ShaderProgram& program, glm::dvec2 eye_xz) const;
 
@@ -82,7 +84,7 @@ public:
 private:
     ocean::ProgramFactory programs_;
     ocean::Texture displacement_, slopes_;
-    int n_ = 0, levels_ = 0;
+    int n_ = 0, levels_ = 0, combined_cascades_ = kCascades;
     double texel0_ = 0;
     glm::dvec2 origin_{0.0};  // the world origin of the last update (CascadeView::origin)
     std::vector<TexelWindow> windows_;

@@ -108,6 +108,10 @@ protected:
         p.add_choice("combined_size", &combined_size_, {"256", "512", "1024", "2048"},
                      "surface=combined: texels on a side of each level")
             .in_group("geometry");
+        p.add_int("combined_cascades", &combined_cascades_, 1, step06::kCascades,
+                  "surface=combined: the cascades (from the longest) summed into the levels; the finer ones "
+                  "are read per pixel as before")
+            .in_group("geometry");
         p.add_int("combined_texels", &combined_texels_, 0, 8192,
                   "0: off; n: the slopes only as fine as the cascades combined around the camera into "
                   "levels of n x n texels could show (Crest's design, measured; README)")
@@ -223,13 +227,15 @@ protected:
     void combine() {
         ocean::GpuScope timed(timers(), "combine");
         const int n = 256 << combined_size_;
-        const double finest_texel = double(cascade_view_.patch_sizes[step06::kCascades - 1]) / ocean_params_.spectrum.resolution;
+        // The finest texel of the cascades the levels hold.
+        const double finest_texel = double(cascade_view_.patch_sizes[std::size_t(combined_cascades_ - 1)]) /
+                                    ocean_params_.spectrum.resolution;
         const double texel0 = step06::combined_texel0(finest_texel);
         const double reach = 0.5 * patch_count_ * double(tess_patch_size_) + double(tess_patch_size_) +
                              step05::largest_displacement(height_variance_, ocean_params_.choppiness);
         combined_->resize(n, step06::combined_level_count(reach, n, texel0), texel0);
         const glm::dvec3 eye = camera().eye_world();
-        combined_->update(*gpu_, cascade_view_, {eye.x, eye.z});
+        combined_->update(*gpu_, cascade_view_, {eye.x, eye.z}, combined_cascades_);
     }
 
     // The defines and the textures of the surface the mesh and the shading read (surface=).
@@ -478,7 +484,9 @@ protected:
     bool cull_ = true, wireframe_ = false;
     int anisotropy_ = 4;
     static constexpr int kSurfaceCombined = 1;  // the `surface` parameter's second choice
-    int surface_ = 0, combined_size_ = 2;       // cascades; 1024 texels when combined
+    // The cascades by default; when combined, levels of 512 texels holding the three longest cascades,
+    // the finest read per pixel: what keeps the look (README, "The cascades combined around the camera").
+    int surface_ = 0, combined_size_ = 1, combined_cascades_ = 3;
     int combined_texels_ = 0;  // 0: off (the README says why the cascades are not combined)
     // The backends step06 offers (not the naive DFT: its cascades are larger than it can do), in
     // the `backend` parameter's order; the first, auto, is the default.

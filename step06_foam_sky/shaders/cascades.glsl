@@ -29,11 +29,13 @@ float cascade_lod(int c, float footprint) {
 // them: a vertex of a mesh whose vertices are footprint / 2 apart can carry no wave shorter than
 // the footprint (two vertices a wavelength), so each cascade is read at the mip level that
 // averages the footprint, and one whose whole tile is under two footprints not at all.
+vec4 cascade_displacement_at(int c, vec2 p, float footprint) {
+    if (!u_cascade_enabled[c] || footprint >= 0.5 * u_patch_sizes[c]) return vec4(0.0);
+    return textureLod(u_displacement, cascade_uv(p, c), cascade_lod(c, footprint));
+}
 vec4 displacement_at(vec2 p, float footprint) {
     vec4 sum = vec4(0.0);
-    for (int c = 0; c < CASCADES; ++c)
-        if (u_cascade_enabled[c] && footprint < 0.5 * u_patch_sizes[c])
-            sum += textureLod(u_displacement, cascade_uv(p, c), cascade_lod(c, footprint));
+    for (int c = 0; c < CASCADES; ++c) sum += cascade_displacement_at(c, p, footprint);
     return sum;
 }
 

@@ -58,77 +58,78 @@ struct SurfaceSample {
 // ANISOTROPIC_TAPS pieces, each fetched at the mip level of its own width, and the pieces are
 // averaged: what hardware anisotropic filtering does, written out because llvmpipe's is 26x
 // slower.
-SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
-    vec2 dx = f.dx, dy = f.dy;
-    float lx = length(dx), ly = length(dy);
+// One cascade's part of sample_surface, added to s: its slopes over the pixel's footprint (the
+// long axis cut into pieces) and the slope variance the footprint averages away.
+void add_cascade(int c, vec2 p, vec2 long_axis, float long_length, float short_length, inout SurfaceSample s) {
+    if (!u_cascade_enabled[c]) return;
     float implicit_long = implicit_long_side(p);
-    vec2 long_axis = lx > ly ? dx : dy;
-    float long_length = max(lx, ly), short_length = min(lx, ly);
     float texels = float(textureSize(u_slopes, 0).x);
+    // Pieces no shorter than the short axis, nor than a texel (below a texel the map is
+    // magnified: one fetch is exact), so a long tile near the camera takes one fetch.
+    float texel = u_patch_sizes[c] / texels;
+    // Rounded, not ceiled: a footprint less than 1.5 times longer than wide takes one fetch
+    // (slightly over-blurred), which spares most of the near sea a second one.
+    int taps = clamp(int(long_length / max(short_length, texel) + 0.5), 1, ANISOTROPIC_TAPS);
+#ifdef GL_ARB_shader_group_vote
+    // Neighbouring pixels run in lockstep (a GPU's warp, llvmpipe's 8-wide vectors): a loop
+    // whose length differs between them runs as long as the longest, its other pixels masked
+    // off, and the masking itself costs (llvmpipe: 95 ms for the pass against 83). So the
+    // group agrees on its longest: a pixel given more pieces than it needs cuts its footprint
+    // finer, which filters it no worse.
+    int wanted = taps;
+    taps = 1;
+    for (int more = 2; more <= ANISOTROPIC_TAPS; ++more)
+        if (anyInvocationARB(wanted >= more)) taps = more;
+#endif
+    float footprint = max(short_length, long_length / float(taps));  // metres each tap averages
+    // Where one tap covers more than half a cascade's tile, the cascade's mipmaps have averaged
+    // it to its mean, which is zero (a periodic tile has no mean slope or displacement):
+    // skipping it changes nothing but its variance, and saves its fetches (the small cascades,
+    // over most of the distant sea).
+    bool averaged_away = footprint >= 0.5 * u_patch_sizes[c];
+#ifdef GL_ARB_shader_group_vote
+    // Skipped only where the whole group agrees: the texture() calls below take their level
+    // from the 2 x 2 quad, which must all run them. A quad straddling two triangles of the
+    // mesh (thin ones near the horizon) has two footprints; where only some of its pixels
+    // skipped, NVIDIA's driver gave the others undefined levels: dark dashes along the
+    // horizon (llvmpipe runs the whole quad anyway). A pixel that reads a cascade it could
+    // skip reads its mean, about zero, and the variance below is the whole cascade's.
+    averaged_away = allInvocationsARB(averaged_away);
+#endif
+    if (averaged_away) {
+        s.unresolved_slope_variance += u_unresolved_slope_variance[c * MIP_LEVELS + MIP_LEVELS - 1];
+        return;
+    }
+    // The slopes, which make the highlights, piece by piece: texture() with GL's own level
+    // moved by a bias to the piece's width. texture(), not
+    // textureGrad: llvmpipe picks one level per 2 x 2 pixels for implicit derivatives and one
+    // per pixel for explicit ones, which made the pass 30 % slower. Everything that decides
+    // the loop comes from the recorded coarse (per 2 x 2) derivatives, so the 2 x 2 pixels
+    // agree on it.
+    float bias = log2(footprint / implicit_long);
+    vec4 slopes = vec4(0.0);
+    // A do-while, not a for: every pixel takes at least one piece, and a loop that tests at
+    // its top runs its body once more, masked off, after the last pixel's last piece on a
+    // machine that runs neighbouring pixels in lockstep (llvmpipe: one wasted fetch per
+    // cascade, 6 to 11 % of the ocean pass; ./ocean bench --against, docs/performance.md).
+    int i = 0;
+    do {
+        slopes += texture(u_slopes, cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c), bias);
+    } while (++i < taps);
+    s.slopes += slopes / float(taps);
+    // The pixel's normal is the mean slope over its long x short footprint: what that averages
+    // away is about what a square of the same area does (the level of sqrt(long x short)).
+    s.unresolved_slope_variance += unresolved_at(c, cascade_lod(c, sqrt(long_length * max(short_length, texel))));
+}
 
+SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
+    float lx = length(f.dx), ly = length(f.dy);
+    vec2 long_axis = lx > ly ? f.dx : f.dy;
+    float long_length = max(lx, ly), short_length = min(lx, ly);
     SurfaceSample s;
     s.slopes = vec4(0.0);
     s.unresolved_slope_variance = 0.0;
-    for (int c = 0; c < CASCADES; ++c) {
-        if (!u_cascade_enabled[c]) continue;
-        // Pieces no shorter than the short axis, nor than a texel (below a texel the map is
-        // magnified: one fetch is exact), so a long tile near the camera takes one fetch.
-        float texel = u_patch_sizes[c] / texels;
-        // Rounded, not ceiled: a footprint less than 1.5 times longer than wide takes one fetch
-        // (slightly over-blurred), which spares most of the near sea a second one.
-        int taps = clamp(int(long_length / max(short_length, texel) + 0.5), 1, ANISOTROPIC_TAPS);
-#ifdef GL_ARB_shader_group_vote
-        // Neighbouring pixels run in lockstep (a GPU's warp, llvmpipe's 8-wide vectors): a loop
-        // whose length differs between them runs as long as the longest, its other pixels masked
-        // off, and the masking itself costs (llvmpipe: 95 ms for the pass against 83). So the
-        // group agrees on its longest: a pixel given more pieces than it needs cuts its footprint
-        // finer, which filters it no worse.
-        int wanted = taps;
-        taps = 1;
-        for (int more = 2; more <= ANISOTROPIC_TAPS; ++more)
-            if (anyInvocationARB(wanted >= more)) taps = more;
-#endif
-        float footprint = max(short_length, long_length / float(taps));  // metres each tap averages
-        // Where one tap covers more than half a cascade's tile, the cascade's mipmaps have averaged
-        // it to its mean, which is zero (a periodic tile has no mean slope or displacement):
-        // skipping it changes nothing but its variance, and saves its fetches (the small cascades,
-        // over most of the distant sea).
-        bool averaged_away = footprint >= 0.5 * u_patch_sizes[c];
-#ifdef GL_ARB_shader_group_vote
-        // Skipped only where the whole group agrees: the texture() calls below take their level
-        // from the 2 x 2 quad, which must all run them. A quad straddling two triangles of the
-        // mesh (thin ones near the horizon) has two footprints; where only some of its pixels
-        // skipped, NVIDIA's driver gave the others undefined levels: dark dashes along the
-        // horizon (llvmpipe runs the whole quad anyway). A pixel that reads a cascade it could
-        // skip reads its mean, about zero, and the variance below is the whole cascade's.
-        averaged_away = allInvocationsARB(averaged_away);
-#endif
-        if (averaged_away) {
-            s.unresolved_slope_variance += u_unresolved_slope_variance[c * MIP_LEVELS + MIP_LEVELS - 1];
-            continue;
-        }
-        // The slopes, which make the highlights, piece by piece: texture() with GL's own level
-        // moved by a bias to the piece's width. texture(), not
-        // textureGrad: llvmpipe picks one level per 2 x 2 pixels for implicit derivatives and one
-        // per pixel for explicit ones, which made the pass 30 % slower. Everything that decides
-        // the loop comes from the recorded coarse (per 2 x 2) derivatives, so the 2 x 2 pixels
-        // agree on it.
-        float bias = log2(footprint / implicit_long);
-        vec4 slopes = vec4(0.0);
-        // A do-while, not a for: every pixel takes at least one piece, and a loop that tests at
-        // its top runs its body once more, masked off, after the last pixel's last piece on a
-        // machine that runs neighbouring pixels in lockstep (llvmpipe: one wasted fetch per
-        // cascade, 6 to 11 % of the ocean pass; ./ocean bench --against, docs/performance.md).
-        int i = 0;
-        do {
-            slopes += texture(u_slopes, cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c), bias);
-        } while (++i < taps);
-        slopes /= float(taps);
-        s.slopes += slopes;
-        // The pixel's normal is the mean slope over its long x short footprint: what that averages
-        // away is about what a square of the same area does (the level of sqrt(long x short)).
-        s.unresolved_slope_variance += unresolved_at(c, cascade_lod(c, sqrt(long_length * max(short_length, texel))));
-    }
+    for (int c = 0; c < CASCADES; ++c) add_cascade(c, p, long_axis, long_length, short_length, s);
     return s;
 }
 
@@ -158,16 +159,19 @@ SurfaceSample sample_combined_surface(vec2 p, SurfaceFootprint f) {
     s.slopes = combined_slopes_in(at.level, p, long_axis, long_length, short_length);
     if (at.next_weight > 0.0)
         s.slopes = mix(s.slopes, combined_slopes_in(at.level + 1, p, long_axis, long_length, short_length), at.next_weight);
-    // What the footprint averages away of each cascade, as sample_surface counts it, with the
-    // footprint no finer than the level's texel: a level holds nothing finer (arithmetic only).
+    // What the footprint averages away of each combined cascade, as sample_surface counts it,
+    // with the footprint no finer than the level's texel: a level holds nothing finer (arithmetic
+    // only). The cascades left out of the levels (u_combined_cascades and on) are read as
+    // sample_surface reads them: their waves are finer than the levels' texels.
     float texels = float(textureSize(u_slopes, 0).x);
     float level_texel = combined_texel(at.level);
     s.unresolved_slope_variance = 0.0;
-    for (int c = 0; c < CASCADES; ++c) {
+    for (int c = 0; c < u_combined_cascades; ++c) {
         if (!u_cascade_enabled[c]) continue;
         float texel = u_patch_sizes[c] / texels;
         s.unresolved_slope_variance += unresolved_at(c, cascade_lod(c, max(sqrt(long_length * max(short_length, texel)), level_texel)));
     }
+    for (int c = u_combined_cascades; c < CASCADES; ++c) add_cascade(c, p, long_axis, long_length, short_length, s);
     return s;
 }
 #endif

@@ -28,7 +28,9 @@ void main() {
     // vertices alike and no crack opens.
     float spacing = length(vec3(v_rest_xz.x, 0.0, v_rest_xz.y) - u_eye) / u_tess_scale;
 #if COMBINED_SURFACE
-    vec4 displacement = combined_displacement_at(v_rest_xz, 2.0 * spacing);  // the levels around the camera
+    // The levels around the camera, and the cascades they leave out.
+    vec4 displacement = combined_displacement_at(v_rest_xz, 2.0 * spacing);
+    for (int c = u_combined_cascades; c < CASCADES; ++c) displacement += cascade_displacement_at(c, v_rest_xz, 2.0 * spacing);
 #else
     vec4 displacement = displacement_at(v_rest_xz, 2.0 * spacing);
 #endif
