@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # combined_levels.sh STEP_EXE PICTURE_CHECK OUT_DIR: what the cascades combined around the camera
 # (Crest's design) would cost the picture, which is why step06 samples each cascade per pixel
-# (README, "Why the cascades are not combined around the camera"). The setting combined_texels=N
+# (README, "The cascades combined around the camera"). The setting combined_texels=N
 # resolves the slopes no finer than levels of N x N texels could (shaders/combined_levels.glsl).
 # On the mid-distance strip of the README's anisotropy figure (640 x 360, t = 5 s, no bloom), the
 # detail across the view (picture_check detail, rows 0.3 to 0.6):
