@@ -12,13 +12,7 @@
 set -u
 exe=$1 check=$2 out=$3
 mkdir -p "$out"
-detail() {  # detail NAME [flags...]: renders the strip and prints its detail
-  local name=$1
-  shift
-  "$exe" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 --set show_bloom=false \
-    --screenshot "$out/$name.png" "$@" > /dev/null || { echo "FAIL: the step did not run: $*" >&2; return 1; }
-  "$check" detail "$out/$name.png" 0.3 0.6 | sed -n 's/.*detail across the view \([0-9.]*\).*/\1/p'
-}
+source "$(dirname "$0")/strip_detail.sh"
 per_pixel=$(detail per_pixel) && small=$(detail combined_256 --set combined_texels=256) &&
   large=$(detail combined_4096 --set combined_texels=4096) || exit 1
 echo "detail across the view: the cascades per pixel $per_pixel, combined into 256^2 levels $small, into 4096^2 levels $large"

@@ -11,13 +11,7 @@
 set -u
 exe=$1 check=$2 out=$3
 mkdir -p "$out"
-detail() {  # detail NAME [flags...]: renders the strip and prints its detail
-  local name=$1
-  shift
-  "$exe" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 --set show_bloom=false \
-    --screenshot "$out/$name.png" "$@" > /dev/null || { echo "FAIL: the step did not run: $*" >&2; return 1; }
-  "$check" detail "$out/$name.png" 0.3 0.6 | sed -n 's/.*detail across the view \([0-9.]*\).*/\1/p'
-}
+source "$(dirname "$0")/strip_detail.sh"
 cascades=$(detail cascades) && combined=$(detail combined --set surface=combined) &&
   all_four=$(detail all_four_256 --set surface=combined --set combined_cascades=4 --set combined_size=256) || exit 1
 echo "detail across the view: the cascades per pixel $cascades, combined (default) $combined, all four in 256^2 levels $all_four"
