@@ -1,6 +1,6 @@
 #include "step06_foam_sky/combined_surface.hpp"
 
-#include "step06_foam_sky/box_mipmaps.hpp"
+#include "step05_fft/box_mipmaps.hpp"
 #include "step06_foam_sky/texture_units.h"
 
 #include "common/error.hpp"
@@ -12,7 +12,7 @@ namespace step06 {
 namespace {
 ocean::Texture make_level_array(int n, int levels) {
     ocean::Texture texture = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(texture.id(), mip_levels(n), GL_RGBA16F, n, n, levels);
+    glTextureStorage3D(texture.id(), step05::mip_levels(n), GL_RGBA16F, n, n, levels);
     glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     // A point is read well inside its level (kLevelReach): the edge is never sampled across.
@@ -61,8 +61,8 @@ void CombinedSurface::update(const step05::OceanSimulation& ocean, const Cascade
     const GLuint groups = GLuint((n_ + 7) / 8);
     glDispatchCompute(groups, groups, GLuint(levels_));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    make_box_mipmaps(programs_, displacement_.id());
-    make_box_mipmaps(programs_, slopes_.id());
+    step05::make_box_mipmaps(programs_, displacement_.id());
+    step05::make_box_mipmaps(programs_, slopes_.id());
 }
 
 void CombinedSurface::bind(const ocean::ShaderProgram& program, glm::dvec2 eye_xz) const {

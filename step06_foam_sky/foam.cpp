@@ -1,6 +1,6 @@
 #include "step06_foam_sky/foam.hpp"
 
-#include "step06_foam_sky/box_mipmaps.hpp"
+#include "step05_fft/box_mipmaps.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/texture_units.h"
 
@@ -25,12 +25,12 @@ void FoamSimulation::resize(int n) {
     if (n == n_ && texture_) return;
     n_ = n;
     texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(texture_.id(), mip_levels(n), GL_R32F, n, n, kFoamLevels);
+    glTextureStorage3D(texture_.id(), step05::mip_levels(n), GL_R32F, n, n, kFoamLevels);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the toroidal addressing
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
     residual_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(residual_.id(), mip_levels(n), GL_R32F, n, n);
+    glTextureStorage2D(residual_.id(), step05::mip_levels(n), GL_R32F, n, n);
     glTextureParameteri(residual_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(residual_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(residual_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
@@ -80,15 +80,15 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     glDispatchCompute(groups, groups, GLuint(kFoamLevels));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     // Distant foam averages instead of sparkling. The residual is read only from Beaufort 7.
-    make_box_mipmaps(programs_, texture_.id());
-    if (streak_share_ > 0) make_box_mipmaps(programs_, residual_.id());
+    step05::make_box_mipmaps(programs_, texture_.id());
+    if (streak_share_ > 0) step05::make_box_mipmaps(programs_, residual_.id());
 }
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {
     const FoamPatternSettings settings;
     const std::vector<std::uint8_t> bytes = to_r8(foam_pattern(settings));
     pattern_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(pattern_.id(), mip_levels(settings.size), GL_R8, settings.size, settings.size);
+    glTextureStorage2D(pattern_.id(), step05::mip_levels(settings.size), GL_R8, settings.size, settings.size);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTextureSubImage2D(pattern_.id(), 0, 0, 0, settings.size, settings.size, GL_RED, GL_UNSIGNED_BYTE, bytes.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);

@@ -1,7 +1,7 @@
 #include "step06_foam_sky/sky.hpp"
 
 #include "common/error.hpp"
-#include "step06_foam_sky/box_mipmaps.hpp"
+#include "step05_fft/box_mipmaps.hpp"
 #include "step06_foam_sky/texture_units.h"
 
 #include <stb_image.h>
@@ -21,7 +21,7 @@ constexpr const char* kShaders = "step06_foam_sky/shaders/";
 
 Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(programs)), size_(size) {
     cubemap_ = ocean::make_texture(GL_TEXTURE_CUBE_MAP);
-    glTextureStorage2D(cubemap_.id(), mip_levels(size), GL_RGBA16F, size, size);
+    glTextureStorage2D(cubemap_.id(), step05::mip_levels(size), GL_RGBA16F, size, size);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(cubemap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -32,7 +32,7 @@ Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(program
     glTextureParameteri(horizon_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the horizon goes round
 }
 
-float Sky::max_lod() const { return float(mip_levels(size_) - 1); }  // the 1 x 1 level
+float Sky::max_lod() const { return float(step05::mip_levels(size_) - 1); }  // the 1 x 1 level
 
 std::optional<std::string> Sky::use_image(const std::string& path) {
     equirect_.reset();
@@ -84,7 +84,7 @@ void Sky::render(const SkySettings& s) {
     glDispatchCompute(GLuint((size_ + 7) / 8), GLuint((size_ + 7) / 8), 6);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     // Rough reflections read the blurrier levels.
-    make_box_mipmaps(programs_, cubemap_.id());
+    step05::make_box_mipmaps(programs_, cubemap_.id());
     tabulate_horizon();
     image_rendered_ = bool(equirect_);
 }

@@ -5,7 +5,7 @@
 // sun's texel, an image sky, missing and corrupt files).
 #include "common/frustum.hpp"
 #include "common/image.hpp"
-#include "step06_foam_sky/box_mipmaps.hpp"
+#include "step05_fft/box_mipmaps.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/combined_levels.hpp"
 #include "step06_foam_sky/combined_surface.hpp"
@@ -339,7 +339,9 @@ TEST_F(Step06Gpu, CombinedLevelsHoldTheSummedCascadesAtEachTexel) {
                     "tolerance (8-bit filter weights, each channel); a trilinear blend of the cascades' levels %.1f\n",
                     level, window.texel_size, worst_share, blend_share);
         EXPECT_LT(worst_share, 1.0) << "level " << level;
-        if (level == 3) EXPECT_GT(blend_share, 10.0) << "whole levels and blended ones must be told apart";
+        if (level == 3) {
+            EXPECT_GT(blend_share, 10.0) << "whole levels and blended ones must be told apart";
+        }
     }
 }
 
@@ -576,8 +578,9 @@ float degrees_between(glm::vec3 a, glm::vec3 b) {
     return glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0f, 1.0f)));
 }
 
-// make_box_mipmaps: every level of a cube (RGBA16F, the sky's), a 2D array (R32F, the foam's) and
-// a plain 2D texture (R32F, the residual foam's) is the 2 x 2 mean of the level above it, as the
+// make_box_mipmaps: every level of a cube (RGBA16F, the sky's), 2D arrays (RGBA32F, step05's
+// simulated maps; RGBA16F, the combined levels; R32F, the foam's) and a plain 2D texture (R32F,
+// the residual foam's) is the 2 x 2 mean of the level above it, as the
 // GPU read it back (so each level is held to its own input, within one rounding to the format),
 // and the same as glGenerateMipmap makes of the same level 0.
 TEST_F(Step06Gpu, BoxMipmapsAreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
@@ -591,6 +594,8 @@ TEST_F(Step06Gpu, BoxMipmapsAreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
     // Half floats keep 10 bits of mantissa: one step is up to 2^-10 of the value (llvmpipe
     // truncates, and reaches 9.5e-4 here), floats 2^-23.
     const Case cases[] = {{"cube RGBA16F", GL_TEXTURE_CUBE_MAP, GL_RGBA16F, 6, 4, 2.0 / 1024},
+                          {"2D array RGBA32F", GL_TEXTURE_2D_ARRAY, GL_RGBA32F, 4, 4, 1e-6},
+                          {"2D array RGBA16F", GL_TEXTURE_2D_ARRAY, GL_RGBA16F, 3, 4, 2.0 / 1024},
                           {"2D array R32F", GL_TEXTURE_2D_ARRAY, GL_R32F, 3, 1, 1e-6},
                           {"2D R32F", GL_TEXTURE_2D, GL_R32F, 1, 1, 1e-6}};
     const int size = 16, levels = 5;
@@ -619,7 +624,7 @@ TEST_F(Step06Gpu, BoxMipmapsAreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
         ocean::Texture ours = ocean::make_texture(c.gl_target), gl = ocean::make_texture(c.gl_target);
         upload(ours);
         upload(gl);
-        step06::make_box_mipmaps(factory(), ours.id());
+        step05::make_box_mipmaps(factory(), ours.id());
         glGenerateTextureMipmap(gl.id());
         double worst_box = 0, worst_gl = 0;
         for (int level = 1; level < levels; ++level) {

@@ -1,11 +1,11 @@
-#include "step06_foam_sky/box_mipmaps.hpp"
+#include "step05_fft/box_mipmaps.hpp"
 
 #include "common/error.hpp"
 
 #include <algorithm>
 #include <string>
 
-namespace step06 {
+namespace step05 {
 
 void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture) {
     GLint target = 0, levels = 0, format = 0, size = 0, layers = 1;
@@ -15,15 +15,16 @@ void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture) {
     glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &size);
     if (target == GL_TEXTURE_2D_ARRAY) glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_DEPTH, &layers);
     if (target == GL_TEXTURE_CUBE_MAP) layers = 6;
-    if (format != GL_RGBA16F && format != GL_R32F) throw ocean::Error("make_box_mipmaps: only RGBA16F and R32F");
+    if (format != GL_RGBA32F && format != GL_RGBA16F && format != GL_R32F)
+        throw ocean::Error("make_box_mipmaps: only RGBA32F, RGBA16F and R32F");
     if (target != GL_TEXTURE_2D && target != GL_TEXTURE_2D_ARRAY && target != GL_TEXTURE_CUBE_MAP)
         throw ocean::Error("make_box_mipmaps: only 2D textures, 2D arrays and cube maps");
     const bool layered = target != GL_TEXTURE_2D;
     const char* image = target == GL_TEXTURE_CUBE_MAP ? "imageCube" : layered ? "image2DArray" : "image2D";
-    const std::vector<std::string> defines{std::string("FORMAT ") + (format == GL_RGBA16F ? "rgba16f" : "r32f"),
+    const std::vector<std::string> defines{std::string("FORMAT ") + (format == GL_RGBA32F ? "rgba32f" : format == GL_RGBA16F ? "rgba16f" : "r32f"),
                                            std::string("IMAGE ") + image,
                                            std::string("LAYERED ") + (layered ? "1" : "0")};
-    ocean::ShaderProgram* p = programs("box_mip.comp", {"step06_foam_sky/shaders/box_mip.comp"}, defines);
+    ocean::ShaderProgram* p = programs("box_mip.comp", {"step05_fft/shaders/box_mip.comp"}, defines);
     if (p == nullptr) throw ocean::Error("box_mip.comp does not build");
     glUseProgram(p->id());
     for (int level = 1; level < levels; ++level) {
@@ -39,4 +40,4 @@ void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture) {
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
-}  // namespace step06
+}  // namespace step05
