@@ -16,7 +16,7 @@ using step05::FramePass;
 // Texture units as main.cpp binds them (texture_units.h): 0-1 the cascades' maps, 3 foam, 4 sky,
 // 5 the bubble pattern, 6-7 the G-buffer, 8 the residual foam, 9 the fog's horizon table.
 constexpr std::array<FramePass, 8> kFramePasses{{
-    {"simulation", "step05's evolve.comp, fft.comp x 2, assemble.comp, box_mip.comp: 4 cascades as layers", "h0, omega (SSBOs, once)",
+    {"simulation", "step05's evolve.comp, fft.comp x 2, assemble.comp, box_mip.comp", "h0, omega (SSBOs, once)",
      "displacement (4 layers);slopes (4 layers)"},
     {"foam", "foam.comp (foam_step.glsl): 3 clipmap levels; box_mip.comp", "displacement (4 layers);slopes (4 layers);foam (r32f, 3 levels)",
      "foam (r32f, 3 levels)"},
