@@ -223,7 +223,8 @@ protected:
 
     // surface=combined: the cascades summed into levels around the camera, enough of them to
     // hold the whole mesh (its half side, a patch for the grid's snap, and the sea's largest
-    // displacement), the finest at the finest cascade's texel (combined_surface.hpp).
+    // displacement), the finest texel a power of two under the finest combined cascade's
+    // (combined_surface.hpp).
     void combine() {
         ocean::GpuScope timed(timers(), "combine");
         const int n = 256 << combined_size_;
