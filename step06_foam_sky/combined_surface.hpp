@@ -40,9 +40,9 @@ constexpr double kBlendFrom = 0.3;      // and hands over to the next one from t
 inline double combined_texel0(double finest_texel) { return std::exp2(std::floor(std::log2(finest_texel))); }
 
 // The levels that hold the sea out to `reach` metres from the camera (the mesh's half side):
-// level L - 1's side times kLevelReach reaches it. At least one, at most kMaxCombinedLevels (a
-// mesh wider than that (patch_count and tess_patch_size at their largest: 40 km) reads the last level's edge beyond it: a
-// footprint that far is averaged nearly flat by the level's mipmaps anyway).
+// level L - 1's side times kLevelReach reaches it. At least one, at most kMaxCombinedLevels: a
+// mesh wider than that (patch_count and tess_patch_size at their largest: 40 km) reads the last
+// level's edge beyond it, where a footprint is averaged nearly flat by the mipmaps anyway.
 inline int combined_level_count(double reach, int n, double texel0) {
     const double needed = std::ceil(std::log2(std::max(reach / (kLevelReach * n * texel0), 1.0)));
     return std::clamp(int(needed) + 1, 1, kMaxCombinedLevels);
