@@ -1,11 +1,10 @@
 #include "step06_foam_sky/combined_surface.hpp"
 
-#include "step05_fft/box_mipmaps.hpp"
-#include "step06_foam_sky/texture_units.h"
+#include <string>
 
 #include "common/error.hpp"
-
-#include <string>
+#include "step05_fft/box_mipmaps.hpp"
+#include "step06_foam_sky/texture_units.h"
 
 namespace step06 {
 
@@ -23,7 +22,8 @@ ocean::Texture make_level_array(int n, int levels) {
 }  // namespace
 
 void CombinedSurface::resize(int n, int levels, double texel0) {
-    if (n < 2 || (n & (n - 1)) != 0) throw ocean::Error("combined levels: " + std::to_string(n) + " texels is not a power of two");
+    if (n < 2 || (n & (n - 1)) != 0)
+        throw ocean::Error("combined levels: " + std::to_string(n) + " texels is not a power of two");
     if (levels < 1 || levels > kMaxCombinedLevels)
         throw ocean::Error("combined levels: " + std::to_string(levels) + " levels (1 to " +
                            std::to_string(kMaxCombinedLevels) + ")");
@@ -36,8 +36,8 @@ void CombinedSurface::resize(int n, int levels, double texel0) {
     windows_.assign(std::size_t(levels), TexelWindow{});
 }
 
-void CombinedSurface::update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
-                             int combined_cascades) {
+void CombinedSurface::update(const step05::OceanSimulation& ocean, const CascadeView& cascades,
+                             glm::dvec2 eye_xz, int combined_cascades) {
     ocean::ShaderProgram* p = programs_("combine.comp", {"step06_foam_sky/shaders/combine.comp"}, {});
     if (p == nullptr) throw ocean::Error("combine.comp does not build");
     origin_ = cascades.origin;
@@ -80,8 +80,8 @@ void CombinedSurface::bind(const ocean::ShaderProgram& program, glm::dvec2 eye_x
 
 std::vector<glm::vec4> CombinedSurface::read_level(int level, bool slopes) const {
     std::vector<glm::vec4> out(std::size_t(n_) * std::size_t(n_));
-    glGetTextureSubImage((slopes ? slopes_ : displacement_).id(), 0, 0, 0, level, n_, n_, 1, GL_RGBA, GL_FLOAT,
-                         GLsizei(out.size() * sizeof(glm::vec4)), out.data());
+    glGetTextureSubImage((slopes ? slopes_ : displacement_).id(), 0, 0, 0, level, n_, n_, 1, GL_RGBA,
+                         GL_FLOAT, GLsizei(out.size() * sizeof(glm::vec4)), out.data());
     return out;
 }
 

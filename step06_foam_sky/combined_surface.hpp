@@ -19,16 +19,15 @@
 // side) holds the anisotropic pieces and the window's snap to whole texels.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <glm/vec4.hpp>
+#include <vector>
+
 #include "common/shader.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/texel_window.hpp"
-
-#include <glm/vec4.hpp>
-
-#include <algorithm>
-#include <cmath>
-#include <vector>
 
 namespace step06 {
 
@@ -55,9 +54,12 @@ struct LevelChoice {
     double next_weight;
 };
 inline LevelChoice combined_level_at(double reach, double side0, int levels) {
-    const int level = std::clamp(int(std::ceil(std::log2(std::max(reach / (kLevelReach * side0), 1.0)))), 0, levels - 1);
+    const int level =
+        std::clamp(int(std::ceil(std::log2(std::max(reach / (kLevelReach * side0), 1.0)))), 0, levels - 1);
     const double side = side0 * std::exp2(level);
-    const double next = level + 1 < levels ? std::clamp((reach / side - kBlendFrom) / (kLevelReach - kBlendFrom), 0.0, 1.0) : 0.0;
+    const double next = level + 1 < levels
+                            ? std::clamp((reach / side - kBlendFrom) / (kLevelReach - kBlendFrom), 0.0, 1.0)
+                            : 0.0;
     return {level, next};
 }
 

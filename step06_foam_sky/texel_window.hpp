@@ -16,9 +16,13 @@ struct TexelWindow {
     double texel_size = 1;
     int n = 0;
     glm::dvec2 centre() const { return (glm::dvec2(origin) + 0.5 * n) * texel_size; }
-    glm::dvec2 cell_centre(int i, int j) const { return (glm::dvec2(origin + glm::ivec2(i, j)) + 0.5) * texel_size; }
+    glm::dvec2 cell_centre(int i, int j) const {
+        return (glm::dvec2(origin + glm::ivec2(i, j)) + 0.5) * texel_size;
+    }
     // The cell whose corner is `world_origin` (a multiple of kOriginStep: a whole number of cells).
-    glm::ivec2 cell_of(glm::dvec2 world_origin) const { return glm::ivec2(glm::round(world_origin / texel_size)); }
+    glm::ivec2 cell_of(glm::dvec2 world_origin) const {
+        return glm::ivec2(glm::round(world_origin / texel_size));
+    }
 };
 
 // The n x n window of `texel_size` texels around `centre` (x, z).

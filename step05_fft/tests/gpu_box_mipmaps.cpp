@@ -1,14 +1,14 @@
 // make_box_mipmaps (box_mipmaps.hpp, shaders/box_mip.comp) on the GPU, against the 2 x 2 mean it
 // claims and against glGenerateMipmap, whose place it takes: the simulation's maps here, step06's
 // sky, combined levels and foam there.
-#include "step05_fft/box_mipmaps.hpp"
-#include "tests/gpu/gl_test_context.hpp"
-#include "tests/gpu/program_cache.hpp"
-
 #include <cmath>
 #include <cstdio>
 #include <random>
 #include <vector>
+
+#include "step05_fft/box_mipmaps.hpp"
+#include "tests/gpu/gl_test_context.hpp"
+#include "tests/gpu/program_cache.hpp"
 
 namespace {
 
@@ -51,15 +51,19 @@ TEST_F(BoxMipmaps, AreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
                 glTextureStorage2D(t.id(), levels, c.format, size, size);
                 glTextureSubImage2D(t.id(), 0, 0, 0, size, size, pixel_format, GL_FLOAT, level0.data());
             } else {
-                if (c.gl_target == GL_TEXTURE_CUBE_MAP) glTextureStorage2D(t.id(), levels, c.format, size, size);
-                else glTextureStorage3D(t.id(), levels, c.format, size, size, c.layers);
-                glTextureSubImage3D(t.id(), 0, 0, 0, 0, size, size, c.layers, pixel_format, GL_FLOAT, level0.data());
+                if (c.gl_target == GL_TEXTURE_CUBE_MAP)
+                    glTextureStorage2D(t.id(), levels, c.format, size, size);
+                else
+                    glTextureStorage3D(t.id(), levels, c.format, size, size, c.layers);
+                glTextureSubImage3D(t.id(), 0, 0, 0, 0, size, size, c.layers, pixel_format, GL_FLOAT,
+                                    level0.data());
             }
         };
         const auto read = [&](const ocean::Texture& t, int level) {
             const int n = size >> level;
             std::vector<float> texels(std::size_t(n * n * c.layers * c.channels));
-            glGetTextureImage(t.id(), level, pixel_format, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+            glGetTextureImage(t.id(), level, pixel_format, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
+                              texels.data());
             return texels;
         };
         ocean::Texture ours = ocean::make_texture(c.gl_target), gl = ocean::make_texture(c.gl_target);
@@ -69,24 +73,28 @@ TEST_F(BoxMipmaps, AreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
         glGenerateTextureMipmap(gl.id());
         double worst_box = 0, worst_gl = 0;
         for (int level = 1; level < levels; ++level) {
-            const std::vector<float> above = read(ours, level - 1), below = read(ours, level), theirs = read(gl, level);
+            const std::vector<float> above = read(ours, level - 1), below = read(ours, level),
+                                     theirs = read(gl, level);
             const int n = size >> level;
             for (int layer = 0; layer < c.layers; ++layer)
                 for (int j = 0; j < n; ++j)
                     for (int i = 0; i < n; ++i)
                         for (int k = 0; k < c.channels; ++k) {
                             const auto at = [&](const std::vector<float>& v, int side, int x, int y) {
-                                return double(v[((std::size_t(layer) * side + y) * side + x) * c.channels + k]);
+                                return double(
+                                    v[((std::size_t(layer) * side + y) * side + x) * c.channels + k]);
                             };
-                            const double mean = 0.25 * (at(above, 2 * n, 2 * i, 2 * j) + at(above, 2 * n, 2 * i + 1, 2 * j) +
-                                                        at(above, 2 * n, 2 * i, 2 * j + 1) + at(above, 2 * n, 2 * i + 1, 2 * j + 1));
+                            const double mean =
+                                0.25 *
+                                (at(above, 2 * n, 2 * i, 2 * j) + at(above, 2 * n, 2 * i + 1, 2 * j) +
+                                 at(above, 2 * n, 2 * i, 2 * j + 1) + at(above, 2 * n, 2 * i + 1, 2 * j + 1));
                             worst_box = std::max(worst_box, std::abs(at(below, n, i, j) - mean) / mean);
-                            worst_gl = std::max(worst_gl, std::abs(at(below, n, i, j) - at(theirs, n, i, j)) / at(theirs, n, i, j));
+                            worst_gl = std::max(worst_gl, std::abs(at(below, n, i, j) - at(theirs, n, i, j)) /
+                                                              at(theirs, n, i, j));
                         }
         }
         std::printf("%s: worst relative gap to the 2 x 2 mean %.2e, to glGenerateMipmap %.2e (levels 1-%d)\n",
-                    c.name,
-                    worst_box, worst_gl, levels - 1);
+                    c.name, worst_box, worst_gl, levels - 1);
         EXPECT_LT(worst_box, c.relative);
         // glGenerateMipmap's own rounding compounds over the levels: four roundings.
         EXPECT_LT(worst_gl, 4 * c.relative);
