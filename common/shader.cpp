@@ -24,10 +24,13 @@ struct Preprocessor {
     std::vector<std::string> include_dirs;
     std::vector<std::string> defines;
     std::vector<std::string> files;
-    std::set<std::string> included;
+    std::set<std::string> expanding;  // the files whose expansion is under way (an include cycle stops there)
     std::ostringstream out;
 
+    // A file's number for #line: the same each time it is included.
     int file_number(const std::string& path) {
+        const auto found = std::find(files.begin(), files.end(), path);
+        if (found != files.end()) return static_cast<int>(found - files.begin());
         files.push_back(path);
         return static_cast<int>(files.size()) - 1;
     }
@@ -48,7 +51,13 @@ struct Preprocessor {
         std::string line;
         int line_number = 0;
         bool version_seen = false;
-        if (!is_main) out << "#line 1 " << number << "\n";
+        // An included file is written out at every #include, inside a guard that GLSL's own
+        // preprocessor reads: its first copy counts only where it is compiled in. (Written out
+        // once, a file included first inside an #if that is compiled out was missing from every
+        // later file that included it too.)
+        const std::string guard = "OCEAN_INCLUDED_" + std::to_string(number);
+        if (!is_main) out << "#ifndef " << guard << "\n#define " << guard << "\n#line 1 " << number << "\n";
+        expanding.insert(path);
         static const std::regex include_re(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
         static const std::regex version_re(R"(^\s*#\s*version\b.*)");
         while (std::getline(lines, line)) {
@@ -67,12 +76,14 @@ struct Preprocessor {
                 if (target.empty())
                     throw Error(path + ":" + std::to_string(line_number) + ": cannot find include \"" +
                                 match[1].str() + "\"");
-                if (included.insert(target).second) expand(target, false);
+                if (expanding.count(target) == 0) expand(target, false);
                 out << "#line " << line_number + 1 << " " << number << "\n";
             } else {
                 out << line << "\n";
             }
         }
+        expanding.erase(path);
+        if (!is_main) out << "#endif\n";
         if (is_main && !version_seen)
             throw Error(path + ": a shader must start with #version (we use #version 450 core)");
     }
@@ -90,7 +101,6 @@ ShaderSource preprocess_shader(const std::string& path, const std::vector<std::s
     pre.include_dirs = include_dirs;
     pre.defines = defines;
     const std::string main_path = fs::exists(path) ? fs::weakly_canonical(path).string() : path;
-    pre.included.insert(main_path);
     pre.expand(main_path, true);
     return {pre.out.str(), pre.files};
 }

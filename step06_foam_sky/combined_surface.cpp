@@ -1,10 +1,10 @@
 #include "step06_foam_sky/combined_surface.hpp"
 
-#include <string>
-
 #include "common/error.hpp"
 #include "step05_fft/box_mipmaps.hpp"
 #include "step06_foam_sky/texture_units.h"
+
+#include <string>
 
 namespace step06 {
 
@@ -41,6 +41,7 @@ void CombinedSurface::update(const step05::OceanSimulation& ocean, const Cascade
     ocean::ShaderProgram* p = programs_("combine.comp", {"step06_foam_sky/shaders/combine.comp"}, {});
     if (p == nullptr) throw ocean::Error("combine.comp does not build");
     origin_ = cascades.origin;
+    eye_xz_ = eye_xz;
     for (int level = 0; level < levels_; ++level) {
         const TexelWindow w = window_around(eye_xz, texel0_ * std::exp2(level), n_);
         windows_[std::size_t(level)] = w;
@@ -65,14 +66,14 @@ void CombinedSurface::update(const step05::OceanSimulation& ocean, const Cascade
     step05::make_box_mipmaps(programs_, slopes_.id());
 }
 
-void CombinedSurface::bind(const ocean::ShaderProgram& program, glm::dvec2 eye_xz) const {
+void CombinedSurface::bind(const ocean::ShaderProgram& program) const {
     std::vector<glm::vec2> corners;
     for (const TexelWindow& w : windows_) corners.emplace_back(glm::dvec2(w.origin) * w.texel_size - origin_);
     program.set("u_combined_levels", levels_);
     program.set("u_combined_cascades", combined_cascades_);
     program.set("u_combined_n", n_);
     program.set("u_combined_side0", float(texel0_ * n_));
-    program.set("u_combined_centre", glm::vec2(eye_xz - origin_));
+    program.set("u_combined_centre", glm::vec2(eye_xz_ - origin_));
     program.set("u_combined_corner", corners);
     glBindTextureUnit(UNIT_COMBINED_DISPLACEMENT, displacement_.id());
     glBindTextureUnit(UNIT_COMBINED_SLOPES, slopes_.id());

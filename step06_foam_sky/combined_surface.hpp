@@ -19,15 +19,16 @@
 // side) holds the anisotropic pieces and the window's snap to whole texels.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
-#include <glm/vec4.hpp>
-#include <vector>
-
 #include "common/shader.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/texel_window.hpp"
+
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace step06 {
 
@@ -77,7 +78,7 @@ public:
     void update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
                 int combined_cascades = kCascades);
     // The textures on their units (texture_units.h) and combined_surface.glsl's uniforms.
-    void bind(const ocean::ShaderProgram& program, glm::dvec2 eye_xz) const;
+    void bind(const ocean::ShaderProgram& program) const;
 
     int levels() const { return levels_; }
     int resolution() const { return n_; }
@@ -91,6 +92,7 @@ private:
     int n_ = 0, levels_ = 0, combined_cascades_ = kCascades;
     double texel0_ = 0;
     glm::dvec2 origin_{0.0};  // the world origin of the last update (CascadeView::origin)
+    glm::dvec2 eye_xz_{0.0};  // the camera the last update centred the levels on
     std::vector<TexelWindow> windows_;
 };
 

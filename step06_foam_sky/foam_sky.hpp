@@ -241,9 +241,8 @@ protected:
 
     // The defines and the textures of the surface the mesh and the shading read (surface=).
     std::string surface_define() const { return "COMBINED_SURFACE " + std::to_string(int(combined())); }
-    void bind_surface(const ocean::ShaderProgram& p) {
-        const glm::dvec3 eye = camera().eye_world();
-        if (combined()) combined_->bind(p, {eye.x, eye.z});
+    void bind_surface(const ocean::ShaderProgram& p) const {
+        if (combined()) combined_->bind(p);
     }
 
     // What the panel says of each cascade, made when the spectra are (not every frame in ui()).

@@ -2,13 +2,11 @@
 // laid out): for a point, the finest level that holds it, and the next one's weight in the band
 // where the first hands over; a point's coordinates in a level; the mip level of a footprint.
 // Compiled in only where COMBINED_SURFACE is 1 (the setting surface=combined).
-// The include is outside the #if: includes are expanded once a file, before GLSL's preprocessor
-// sees the #if, so one inside a block compiled out would hide the units from every later file.
-#include "step06_foam_sky/texture_units.h"
 #ifndef COMBINED_SURFACE
 #define COMBINED_SURFACE 0
 #endif
 #if COMBINED_SURFACE
+#include "step06_foam_sky/texture_units.h"
 
 const int MAX_COMBINED_LEVELS = 12;
 const float LEVEL_REACH = 0.4, BLEND_FROM = 0.3;  // combined_surface.hpp's kLevelReach, kBlendFrom

@@ -22,7 +22,7 @@ struct ShaderFiles : ::testing::Test {
     }
 };
 
-TEST_F(ShaderFiles, IncludesAreExpandedOnceAndTaggedWithLineDirectives) {
+TEST_F(ShaderFiles, IncludesAreGuardedAndTaggedWithLineDirectives) {
     const auto common = write("lib/common.glsl", "float a;\nfloat b;\n");
     write("lib/more.glsl", "#include \"common.glsl\"\nfloat c;\n");
     const auto main = write("main.frag",
@@ -31,13 +31,39 @@ TEST_F(ShaderFiles, IncludesAreExpandedOnceAndTaggedWithLineDirectives) {
     ASSERT_EQ(source.files.size(), 3u);
     EXPECT_EQ(source.files[0], main);
     EXPECT_EQ(source.files[2], common);
+    const std::string common_copy = "#ifndef OCEAN_INCLUDED_2\n#define OCEAN_INCLUDED_2\n#line 1 2\nfloat a;\nfloat b;\n#endif\n";
     EXPECT_EQ(source.text,
               "#version 450 core\n#line 2 0\n"
-              "#line 1 1\n"                   // lib/more.glsl
-              "#line 1 2\nfloat a;\nfloat b;\n"  // its include, common.glsl
-              "#line 2 1\nfloat c;\n"          // back in more.glsl, line 2
-              "#line 3 0\n"                    // back in main, line 3: common already included
-              "#line 4 0\nvoid main() {}\n");
+              "#ifndef OCEAN_INCLUDED_1\n#define OCEAN_INCLUDED_1\n#line 1 1\n" +  // lib/more.glsl
+                  common_copy +                                                  // its include, common.glsl
+                  "#line 2 1\nfloat c;\n#endif\n"  // back in more.glsl, line 2
+                  "#line 3 0\n" +                  // back in main, line 3: common again, its guard set
+                  common_copy + "#line 4 0\nvoid main() {}\n");
+}
+
+// A file included first inside an #if that is compiled out, then again outside it, must reach the
+// code after the second #include: the guard is GLSL's, read where the #if is. (Expanded once, its
+// only copy sat in the dead block.)
+TEST_F(ShaderFiles, AFileIncludedFirstUnderAFalseIfIsStillThereAfterIt) {
+    write("units.h", "#define UNIT 3\n");
+    write("maybe.glsl", "#if USE_IT\n#include \"units.h\"\n#endif\n");
+    const auto main =
+        write("main.frag", "#version 450 core\n#include \"maybe.glsl\"\n#include \"units.h\"\nint x = UNIT;\n");
+    const std::string text = ocean::preprocess_shader(main, {}).text;
+    const std::size_t second_copy = text.rfind("#define UNIT 3");
+    ASSERT_NE(second_copy, std::string::npos);
+    EXPECT_GT(second_copy, text.find("#endif\n#endif\n")) << text;  // after maybe.glsl's #if and guard close
+    EXPECT_NE(text.find("#define UNIT 3"), second_copy) << "units.h written at both includes";
+}
+
+// An include cycle stops where it comes back to a file being expanded.
+TEST_F(ShaderFiles, AnIncludeCycleStops) {
+    write("a.glsl", "#include \"b.glsl\"\nfloat a;\n");
+    write("b.glsl", "#include \"a.glsl\"\nfloat b;\n");
+    const auto main = write("main.frag", "#version 450 core\n#include \"a.glsl\"\n");
+    const std::string text = ocean::preprocess_shader(main, {}).text;
+    EXPECT_NE(text.find("float a;"), std::string::npos);
+    EXPECT_NE(text.find("float b;"), std::string::npos);
 }
 
 TEST_F(ShaderFiles, IncludeDirectoriesAreSearchedAfterTheIncludingFolder) {
