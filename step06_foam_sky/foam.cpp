@@ -46,7 +46,10 @@ void FoamSimulation::fill(float value) {
 
 void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
                             glm::dvec2 forward_xz, double dt, const FoamSettings& s) {
-    ocean::ShaderProgram* p = programs_("foam.comp", {"step06_foam_sky/shaders/foam.comp"}, {});
+    // Below Beaufort 7 the residual's step is compiled out (STREAKS 0), not skipped by a uniform:
+    // llvmpipe runs an untaken branch anyway.
+    ocean::ShaderProgram* p =
+        programs_("foam.comp", {"step06_foam_sky/shaders/foam.comp"}, {"STREAKS " + std::to_string(int(streaks()))});
     if (p == nullptr) throw ocean::Error("foam.comp does not build");
     const bool first = std::exchange(warm_start_, false);
     const bool placed = windows_[0].n == n_;  // false before the first update: nothing to move from
@@ -104,7 +107,6 @@ void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit)
     program.set("u_foam_pattern_size", kPatternSize);
     program.set("u_streak_along", streak_along_);
     program.set("u_streak_across", streak_across_);
-    program.set("u_streaks", int(streak_share_ > 0));
     glBindTextureUnit(GLuint(unit), pattern_.id());
 }
 

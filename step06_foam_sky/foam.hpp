@@ -119,6 +119,8 @@ public:
     // The wind the streaks lie along: its heading (unit x, z: short_waves.hpp's wind_heading) and
     // speed (m/s: the share of the breaking that lingers, foam_streak_share).
     void set_wind(glm::dvec2 heading, double speed);
+    // Whether there is residual foam to read (Beaufort 7 and up): the shading's STREAKS variant.
+    bool streaks() const { return streak_share_ > 0; }
     static constexpr float kPatternSize = 9.0f;  // metres: about ten 1 m bubble cells a side
     const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
     GLuint texture() const { return texture_.id(); }

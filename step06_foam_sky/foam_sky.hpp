@@ -381,7 +381,8 @@ protected:
             program("ocean_shade", {"fullscreen.vert", "ocean_shade.frag"},
                     {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug),
                      "ANISOTROPIC_TAPS " + std::to_string(anisotropy_),
-                     "COMBINED_LEVEL_TEXELS " + std::to_string(combined_texels_), surface_define()});
+                     "COMBINED_LEVEL_TEXELS " + std::to_string(combined_texels_), surface_define(),
+                     "STREAKS " + std::to_string(int(foam_->streaks()))});
         if (shade == nullptr) return;
         bind_cascades(*shade);
         bind_surface(*shade);

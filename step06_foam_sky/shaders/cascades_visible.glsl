@@ -176,21 +176,46 @@ SurfaceSample sample_combined_surface(vec2 p, SurfaceFootprint f) {
 }
 #endif
 
-// Foam at rest position p (fragment shaders): the finest level that holds p, blended into the
-// next one over the outer tenth of its window, none beyond the largest window. Every level is
-// read, in uniform control flow (so texture() may take its level from the pixel's neighbours, with
-// the bias): skipping the levels a pixel does not need saved nothing where neighbouring pixels run
-// together (llvmpipe runs masked-off branches anyway), and the textureGrad that the branches
-// needed takes a level per pixel, which is slower.
-float foam_at(vec2 p, float bias) {
-    float foam = 0.0, left = 1.0;  // left: the weight the finer levels did not take
-    for (int level = 0; level < FOAM_LEVELS; ++level) {
-        vec2 offset = abs(p - u_foam_centre[level]);
-        float inside = 0.5 * u_foam_extent[level] - max(offset.x, offset.y);  // metres from the edge
-        float weight = clamp(inside / (0.1 * u_foam_extent[level]), 0.0, 1.0);
-        foam += left * weight * texture(u_foam, vec3(p / u_foam_extent[level], float(level)), bias).r;
-        left *= 1.0 - weight;
+// Foam at rest position p (fragment shaders), averaged over a footprint `long_side` metres long:
+// the finest level whose window holds p, blended into the next one over the outer tenth of its
+// window, none beyond the largest window. The windows nest with room to spare (foam.hpp), so a
+// point is in one level's blending band at most and takes one fetch, or two in a band.
+// textureLod at the footprint's level over the level's texel, a level per pixel: which layer a
+// pixel reads differs between neighbours, so GL's level from the neighbours' coordinates would be
+// meaningless where they read different layers. (Until issue 23 every level was read in uniform
+// control flow with texture() and a bias: three fetches a pixel, 5 % of the shading pass.)
+float foam_at(vec2 p, float long_side) {
+    // The finest level with weight, found from the coarsest down (arithmetic only).
+    int level = FOAM_LEVELS - 1;
+    float weight = 0.0, next_weight = 0.0, above = 0.0;  // above: the weight of level l + 1
+    for (int l = FOAM_LEVELS - 1; l >= 0; --l) {
+        vec2 offset = abs(p - u_foam_centre[l]);
+        float inside = 0.5 * u_foam_extent[l] - max(offset.x, offset.y);  // metres from the edge
+        float w = clamp(inside / (0.1 * u_foam_extent[l]), 0.0, 1.0);
+        if (w > 0.0) {
+            level = l;
+            weight = w;
+            next_weight = above;
+        }
+        above = w;
     }
+    // The second fetch, for the band where a level hands over to the next, only where a pixel of
+    // the group needs it. A do-while whose length the group agrees on: a machine that runs
+    // neighbouring pixels in lockstep leaves a loop at its back edge once every pixel is done,
+    // while an if runs both sides masked (llvmpipe).
+    int fetches = weight < 1.0 && level + 1 < FOAM_LEVELS ? 2 : 1;
+#ifdef GL_ARB_shader_group_vote
+    fetches = anyInvocationARB(fetches == 2) ? 2 : 1;
+#endif
+    float texels = float(textureSize(u_foam, 0).x);
+    float foam = 0.0;
+    int k = 0;
+    do {
+        int l = min(level + k, FOAM_LEVELS - 1);
+        float w = k == 0 ? weight : (1.0 - weight) * next_weight;
+        float lod = log2(max(long_side * texels / u_foam_extent[l], 1e-20));
+        foam += w * textureLod(u_foam, vec3(p / u_foam_extent[l], float(l)), lod).r;
+    } while (++k < fetches);
     return foam;
 }
 
@@ -204,10 +229,11 @@ float residual_foam_at(vec2 p, float bias) {
 
 layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;  // foam_pattern.hpp: 1 on the borders of bubble cells
 uniform float u_foam_pattern_size;  // metres one tile of it covers
-// World (x, z) to the pattern's coordinates for the streaks: stretched along the wind. u_streaks:
-// there is residual foam (the wind is Beaufort 7 or more).
+// World (x, z) to the pattern's coordinates for the streaks: stretched along the wind.
 uniform vec2 u_streak_along, u_streak_across;
-uniform bool u_streaks;
+#ifndef STREAKS
+#define STREAKS 1  // 0: no residual foam to read (below Beaufort 7: FoamSimulation::streaks())
+#endif
 
 // foam_pattern.hpp's foam_cover: fresh foam (amount 1) covers everything; as it decays the cell
 // middles open first and the borders last, so a fading whitecap turns to lace, with a soft edge.
@@ -225,12 +251,18 @@ float streak_cover(float residual, float pattern) {
 // The simulated amount laid out by the pattern, read at two scales (so the cells are not all one
 // size and the tile does not show) in world space, where the foam is.
 float total_foam(vec2 p, SurfaceFootprint f) {
-    // Every map here is a linear function of p, so one bias corrects GL's level for all of them.
-    float bias = log2(max(length(f.dx), length(f.dy)) / implicit_long_side(p));
-    float foam = foam_at(p, bias);
-    // u_streaks: the wind is Beaufort 7 or more (a uniform: below, neither this fetch nor the
-    // streaks' pattern costs anything).
-    float residual = u_streaks ? residual_foam_at(p, bias) : 0.0;
+    float long_side = max(length(f.dx), length(f.dy));
+    float foam = foam_at(p, long_side);
+    // The residual foam, from Beaufort 7. A compile-time switch, not a uniform: llvmpipe runs
+    // both sides of a branch, so below Beaufort 7 a uniform's untaken fetch and the streaks'
+    // pattern still cost 7.6 % of this pass (docs/performance.md). Compiled out, the residual is
+    // the constant 0 and the compiler drops the streaks' code below with it.
+#if STREAKS
+    // Its one map is a linear function of p: a bias corrects GL's level from the neighbours.
+    float residual = residual_foam_at(p, log2(long_side / implicit_long_side(p)));
+#else
+    const float residual = 0.0;
+#endif
     // Most of the sea holds no foam (below 0.002 no pattern gives a cover above 3e-4): it skips the
     // pattern. Its fetches take the footprint's own derivatives (textureGrad), so a pixel with
     // foam needs no neighbour to take the branch with it.

@@ -10,6 +10,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "foam_map.glsl"
 #include "foam_step.glsl"
 
+#ifndef STREAKS
+#define STREAKS 1  // 0: below Beaufort 7, no residual foam to keep (FoamSimulation::streaks())
+#endif
+
 layout(r32f, binding = 0) uniform image2DArray u_foam_image;  // the whitecaps' foam, a layer per level
 layout(r32f, binding = 1) uniform image2D u_residual_image;     // the residual foam, level RESIDUAL_LEVEL only
 
@@ -47,11 +51,13 @@ void main() {
     float foam = fresh ? clamp(injection_rate / max(u_decay_rate, 0.1), 0.0, 1.0)
                        : foam_step(imageLoad(u_foam_image, id).r, injection_rate, u_decay_rate, u_dt);
     imageStore(u_foam_image, id, vec4(foam));
-    // Below Beaufort 7 there is no streak injection and nothing reads the residual: it is left as
-    // it is (FoamSimulation::set_wind clears it when the streaks come back).
-    if (level == RESIDUAL_LEVEL && u_streak_injection > 0.0) {
+    // Below Beaufort 7 (STREAKS 0) there is no streak injection and nothing reads the residual: it
+    // is left as it is (FoamSimulation::set_wind clears it when the streaks come back).
+#if STREAKS
+    if (level == RESIDUAL_LEVEL) {
         float residual = fresh ? clamp(streak_rate / max(u_streak_decay, 0.1), 0.0, 1.0)
                                : foam_step(imageLoad(u_residual_image, id.xy).r, streak_rate, u_streak_decay, u_dt);
         imageStore(u_residual_image, id.xy, vec4(residual));
     }
+#endif
 }

@@ -43,7 +43,7 @@ case "$case_name" in
     sed -i '2i this is not GLSL;' "$victim"
     args=(--shader-dir "$shaders" --frames 1 --size 64x64 "${@:2}")
     expect="shader program '[a-z_]+( \[[^]]*\])?' does not build: .*$(basename "$victim"):2:"
-    [ $# -ge 1 ] && expect="shader program '$(basename "$victim")' does not build: .*$(basename "$victim"):2:" ;;
+    [ $# -ge 1 ] && expect="shader program '$(basename "$victim")( \[[^]]*\])?' does not build: .*$(basename "$victim"):2:" ;;
   *)
     [ $# -ge 2 ] || { echo "bad_input.sh: case $case_name needs EXPECT and ARGS"; exit 2; }
     expect=$1 args=("${@:2}") ;;
