@@ -33,6 +33,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -116,6 +117,11 @@ protected:
                   "0: off; n: the slopes only as fine as the cascades combined around the camera into "
                   "levels of n x n texels could show (Crest's design, measured; README)")
             .in_group("geometry");
+        p.add_int("bench_shading_repeats", &bench_shading_repeats_, 0, 100,
+                  "--bench: the shading pass drawn again this many times on each timed frame, each between "
+                  "two glFinish, and their median printed: the shading alone, quiet enough to measure a "
+                  "shader change (docs/performance.md)")
+            .in_group("geometry");
         look_.declare(p);
         p.add_choice("view", &view_, {"shaded", "normals", "foam", "jacobian", "tessellation", "cascade_map"},
                      "the final picture, or one ingredient");
@@ -130,7 +136,16 @@ protected:
         offer_bench_figures([this] {
             const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 5);  // all 4 cascades' maps
             for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
-            return times.figures();
+            BenchFigures figures = times.figures();
+            if (!shading_alone_ms_.empty()) {
+                std::vector<double> ms = shading_alone_ms_;
+                std::sort(ms.begin(), ms.end());
+                std::cout << "bench: the shading pass alone (ocean_shade.frag, drawn again " << ms.size()
+                          << " times, wall ms around glFinish): median " << ms[ms.size() / 2] << ", min "
+                          << ms.front() << "\n";
+                figures.emplace_back("shading_alone_ms", ms[ms.size() / 2]);
+            }
+            return figures;
         });
         offer_warm_up([this] {
             return kBackends[std::size_t(backend_)] == step05::Backend::Auto &&
@@ -300,6 +315,7 @@ protected:
                 shade_sea();
             }
         }
+        if (timers().enabled() && !wireframe_) time_shading_alone();
         draw_in_scene(view_projection);
         ocean::GpuScope timed(timers(), "background");
         draw_background(view_projection);
@@ -398,6 +414,21 @@ protected:
         draw_at_far_plane(GL_GREATER);
     }
 
+    // bench_shading_repeats: the shading pass again on the same G-buffer (it writes the same pixels
+    // the same way), each draw alone between two glFinish. The frame's ocean pass holds the mesh
+    // too, and on a shared machine two whole frames drift apart by more than a shader change costs;
+    // draws a few milliseconds apart see the same machine.
+    void time_shading_alone() {
+        for (int i = 0; i < bench_shading_repeats_; ++i) {
+            glFinish();
+            const auto start = std::chrono::steady_clock::now();
+            shade_sea();
+            glFinish();
+            shading_alone_ms_.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        }
+    }
+
     void draw_cascade_map() {
         ocean::ShaderProgram* p = program("map_view", {"fullscreen.vert", "step05_fft/shaders/map_view.frag"});
         if (p == nullptr) return;  // first asked for after a shader broke: nothing to draw with
@@ -488,6 +519,8 @@ protected:
     // The cascades by default; when combined, levels of 512 texels holding the three longest cascades,
     // the finest read per pixel: what keeps the look (README, "The cascades combined around the camera").
     int surface_ = 0, combined_size_ = 1, combined_cascades_ = 3;
+    int bench_shading_repeats_ = 0;
+    std::vector<double> shading_alone_ms_;  // time_shading_alone's draws, for --bench
     int combined_texels_ = 0;  // 0: off (the README says why the cascades are not combined)
     // The backends step06 offers (not the naive DFT: its cascades are larger than it can do), in
     // the `backend` parameter's order; the first, auto, is the default.
