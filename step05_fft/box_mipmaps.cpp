@@ -15,13 +15,17 @@ void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture) {
     glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &size);
     if (target == GL_TEXTURE_2D_ARRAY) glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_DEPTH, &layers);
     if (target == GL_TEXTURE_CUBE_MAP) layers = 6;
-    if (format != GL_RGBA32F && format != GL_RGBA16F && format != GL_R32F)
-        throw ocean::Error("make_box_mipmaps: only RGBA32F, RGBA16F and R32F");
+    const char* image_format = format == GL_RGBA32F ? "rgba32f"
+                               : format == GL_RGBA16F ? "rgba16f"
+                               : format == GL_RG32F   ? "rg32f"
+                               : format == GL_R32F    ? "r32f"
+                                                      : nullptr;
+    if (image_format == nullptr) throw ocean::Error("make_box_mipmaps: only RGBA32F, RGBA16F, RG32F and R32F");
     if (target != GL_TEXTURE_2D && target != GL_TEXTURE_2D_ARRAY && target != GL_TEXTURE_CUBE_MAP)
         throw ocean::Error("make_box_mipmaps: only 2D textures, 2D arrays and cube maps");
     const bool layered = target != GL_TEXTURE_2D;
     const char* image = target == GL_TEXTURE_CUBE_MAP ? "imageCube" : layered ? "image2DArray" : "image2D";
-    const std::vector<std::string> defines{std::string("FORMAT ") + (format == GL_RGBA32F ? "rgba32f" : format == GL_RGBA16F ? "rgba16f" : "r32f"),
+    const std::vector<std::string> defines{std::string("FORMAT ") + image_format,
                                            std::string("IMAGE ") + image,
                                            std::string("LAYERED ") + (layered ? "1" : "0")};
     ocean::ShaderProgram* p = programs("box_mip.comp", {"step05_fft/shaders/box_mip.comp"}, defines);

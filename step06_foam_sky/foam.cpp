@@ -25,22 +25,18 @@ void FoamSimulation::resize(int n) {
     if (n == n_ && texture_) return;
     n_ = n;
     texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(texture_.id(), step05::mip_levels(n), GL_R32F, n, n, kFoamLevels);
+    // R: the whitecaps' foam; G: the residual foam of the streaks, read with it in one fetch.
+    glTextureStorage3D(texture_.id(), step05::mip_levels(n), GL_RG32F, n, n, kFoamLevels);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the toroidal addressing
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-    residual_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(residual_.id(), step05::mip_levels(n), GL_R32F, n, n);
-    glTextureParameteri(residual_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(residual_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(residual_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
     fill(0);
     warm_start_ = true;
 }
 
 void FoamSimulation::fill(float value) {
-    glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &value);
-    glClearTexImage(residual_.id(), 0, GL_RED, GL_FLOAT, &value);
+    const float both[2] = {value, value};  // the whitecaps' foam and the residual
+    glClearTexImage(texture_.id(), 0, GL_RG, GL_FLOAT, both);
     warm_start_ = false;
 }
 
@@ -76,15 +72,13 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     p->set("u_n", n_);
     p->set("u_warm_start", int(first));
     ocean.bind_maps(*p);
-    glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32F);
-    glBindImageTexture(1, residual_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
+    glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32F);
     glUseProgram(p->id());
     const GLuint groups = GLuint((n_ + 7) / 8);
     glDispatchCompute(groups, groups, GLuint(kFoamLevels));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    // Distant foam averages instead of sparkling. The residual is read only from Beaufort 7.
+    // Distant foam averages instead of sparkling.
     step05::make_box_mipmaps(programs_, texture_.id());
-    if (streak_share_ > 0) step05::make_box_mipmaps(programs_, residual_.id());
 }
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {
@@ -114,13 +108,8 @@ void FoamSimulation::set_wind(glm::dvec2 heading, double speed) {
     const glm::vec2 along(heading);
     streak_along_ = along / float(kPatternSize * kStreakLength);
     streak_across_ = glm::vec2(-along.y, along.x) / float(kPatternSize * kStreakSpacing);
-    const double share = foam_streak_share(speed);
-    // Below Beaufort 7 the residual is neither kept nor read (foam.comp): it starts again from none.
-    if (share > 0 && streak_share_ == 0 && residual_) {
-        const float none = 0;
-        glClearTexImage(residual_.id(), 0, GL_RED, GL_FLOAT, &none);
-    }
-    streak_share_ = share;
+    // Below Beaufort 7 foam.comp holds the residual at 0 (STREAKS 0), so it starts again from none.
+    streak_share_ = foam_streak_share(speed);
 }
 
 void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {
@@ -134,21 +123,18 @@ void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {
     program.set("u_foam_centre", centres);
     program.set("u_foam_extent", extents);
     glBindTextureUnit(GLuint(unit), texture_.id());
-    glBindTextureUnit(UNIT_FOAM_RESIDUAL, residual_.id());
 }
 
-std::vector<float> FoamSimulation::read_residual() const {
+std::vector<float> FoamSimulation::read_channel(int level, GLenum channel) const {
     std::vector<float> stored(std::size_t(n_) * n_);
-    glGetTextureImage(residual_.id(), 0, GL_RED, GL_FLOAT, GLsizei(stored.size() * sizeof(float)), stored.data());
-    return in_world_order(stored, kResidualFoamLevel);
-}
-
-std::vector<float> FoamSimulation::read_level(int level) const {
-    std::vector<float> stored(std::size_t(n_) * n_);
-    glGetTextureSubImage(texture_.id(), 0, 0, 0, level, n_, n_, 1, GL_RED, GL_FLOAT,
+    glGetTextureSubImage(texture_.id(), 0, 0, 0, level, n_, n_, 1, channel, GL_FLOAT,
                          GLsizei(stored.size() * sizeof(float)), stored.data());
     return in_world_order(stored, level);
 }
+
+std::vector<float> FoamSimulation::read_residual(int level) const { return read_channel(level, GL_GREEN); }
+
+std::vector<float> FoamSimulation::read_level(int level) const { return read_channel(level, GL_RED); }
 
 std::vector<float> FoamSimulation::in_world_order(const std::vector<float>& stored, int level) const {
     std::vector<float> world(stored.size());

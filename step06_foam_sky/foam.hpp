@@ -83,9 +83,10 @@ inline double residual_foam_step(double residual, double jacobian, double dt, co
 constexpr int kFoamLevels = 3;  // FOAM_LEVELS in the shaders
 constexpr double kFoamExtent0 = 64;
 constexpr double kFoamLevelRatio = 4;
-// The residual foam of the streaks is kept on one level only, the 256 m window: its lines are
-// a few tens of centimetres wide, under a pixel beyond about 100 m, and the rest of the sea
-// does not pay for reading it.
+// The residual foam of the streaks is kept on every level, beside the whitecaps' foam (the
+// texture's second channel): the renderer reads both in one fetch. Before issue 23 it was kept
+// on the 256 m level only, in a texture of its own, and read with a fetch of its own; the tests
+// still look at that level.
 constexpr int kResidualFoamLevel = 1;
 inline double foam_extent(int level) { return kFoamExtent0 * std::pow(kFoamLevelRatio, level); }
 
@@ -127,16 +128,17 @@ public:
     int resolution() const { return n_; }
     // Level `level` in the world's order: row j is z cell origin.z + j, column i x cell origin.x + i.
     std::vector<float> read_level(int level) const;
-    // The residual foam (kResidualFoamLevel's window), in the same order.
-    std::vector<float> read_residual() const;
+    // The residual foam of level `level`, in the same order.
+    std::vector<float> read_residual(int level = kResidualFoamLevel) const;
 
 private:
     // A level's texels (toroidal) in the world's order.
     std::vector<float> in_world_order(const std::vector<float>& stored, int level) const;
+    // One channel (GL_RED the whitecaps' foam, GL_GREEN the residual) of a level, in the world's order.
+    std::vector<float> read_channel(int level, GLenum channel) const;
 
     ocean::ProgramFactory programs_;
     ocean::Texture texture_;
-    ocean::Texture residual_;  // r32f, kResidualFoamLevel's window, mipmapped
     ocean::Texture pattern_;
     int n_ = 0;
     bool warm_start_ = true;

@@ -5,12 +5,11 @@
 // (step05's OceanSimulation::bind_maps). Plain #defines: the one form both languages read.
 #ifndef STEP06_TEXTURE_UNITS_H
 #define STEP06_TEXTURE_UNITS_H
-#define UNIT_FOAM 3           // the foam clipmap (foam_map.glsl's u_foam)
+#define UNIT_FOAM 3           // the foam clipmap (foam_map.glsl's u_foam): whitecaps and residual foam
 #define UNIT_SKY 4            // the sky cubemap (u_sky)
 #define UNIT_FOAM_PATTERN 5   // the bubble pattern (u_foam_pattern)
 #define UNIT_GBUFFER_WORLD 6  // the G-buffer's surface points (u_gbuffer_world)
 #define UNIT_GBUFFER_REST 7   // the G-buffer's rest positions and footprints (u_gbuffer_rest)
-#define UNIT_FOAM_RESIDUAL 8  // the residual foam of the streaks (foam_map.glsl's u_residual_foam)
 #define UNIT_SKY_HORIZON 9    // the fog's colour around the horizon (sky_horizon.glsl's u_sky_horizon)
 #define UNIT_COMBINED_DISPLACEMENT 10  // the cascades combined around the camera (combined_surface.glsl)
 #define UNIT_COMBINED_SLOPES 11

@@ -20,8 +20,8 @@ struct BoxMipmaps : ocean_test::GlTest {
 };
 
 // make_box_mipmaps: every level of a cube (RGBA16F, the sky's), 2D arrays (RGBA32F, step05's
-// simulated maps; RGBA16F, the combined levels; R32F, the foam's) and a plain 2D texture (R32F,
-// the residual foam's) is the 2 x 2 mean of the level above it, as the
+// simulated maps; RGBA16F, the combined levels; RG32F, the foam's; R32F) and a plain 2D texture
+// (R32F) is the 2 x 2 mean of the level above it, as the
 // GPU read it back (so each level is held to its own input, within one rounding to the format),
 // and the same as glGenerateMipmap makes of the same level 0.
 TEST_F(BoxMipmaps, AreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
@@ -37,13 +37,14 @@ TEST_F(BoxMipmaps, AreTheMeanOfTheLevelAboveAsGlGenerateMipmapMakes) {
     const Case cases[] = {{"cube RGBA16F", GL_TEXTURE_CUBE_MAP, GL_RGBA16F, 6, 4, 2.0 / 1024},
                           {"2D array RGBA32F", GL_TEXTURE_2D_ARRAY, GL_RGBA32F, 4, 4, 1e-6},
                           {"2D array RGBA16F", GL_TEXTURE_2D_ARRAY, GL_RGBA16F, 3, 4, 2.0 / 1024},
+                          {"2D array RG32F", GL_TEXTURE_2D_ARRAY, GL_RG32F, 3, 2, 1e-6},
                           {"2D array R32F", GL_TEXTURE_2D_ARRAY, GL_R32F, 3, 1, 1e-6},
                           {"2D R32F", GL_TEXTURE_2D, GL_R32F, 1, 1, 1e-6}};
     const int size = 16, levels = 5;
     std::mt19937 random(7);
     std::uniform_real_distribution<float> value(0.0f, 4.0f);
     for (const Case& c : cases) {
-        const GLenum pixel_format = c.channels == 4 ? GL_RGBA : GL_RED;
+        const GLenum pixel_format = c.channels == 4 ? GL_RGBA : c.channels == 2 ? GL_RG : GL_RED;
         std::vector<float> level0(std::size_t(size * size * c.layers * c.channels));
         for (float& v : level0) v = value(random);
         const auto upload = [&](const ocean::Texture& t) {

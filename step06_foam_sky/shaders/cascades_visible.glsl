@@ -176,15 +176,16 @@ SurfaceSample sample_combined_surface(vec2 p, SurfaceFootprint f) {
 }
 #endif
 
-// Foam at rest position p (fragment shaders), averaged over a footprint `long_side` metres long:
-// the finest level whose window holds p, blended into the next one over the outer tenth of its
-// window, none beyond the largest window. The windows nest with room to spare (foam.hpp), so a
-// point is in one level's blending band at most and takes one fetch, or two in a band.
-// textureLod at the footprint's level over the level's texel, a level per pixel: which layer a
-// pixel reads differs between neighbours, so GL's level from the neighbours' coordinates would be
-// meaningless where they read different layers. (Until issue 23 every level was read in uniform
-// control flow with texture() and a bias: three fetches a pixel, 5 % of the shading pass.)
-float foam_at(vec2 p, float long_side) {
+// The foam at rest position p (fragment shaders), averaged over a footprint `long_side` metres
+// long: (whitecaps' foam, residual foam), from the finest level whose window holds p, blended
+// into the next one over the outer tenth of its window, none beyond the largest window. The
+// windows nest with room to spare (foam.hpp), so a point is in one level's blending band at most:
+// one fetch, two in a band. textureLod at the footprint's level over the level's texel, a level
+// per pixel: neighbouring pixels may read different layers, and GL's level from their
+// coordinates would be meaningless there. (Until issue 23's tenth stop every level was read, in
+// uniform control flow, and the residual from a texture of its own: four fetches a pixel where
+// there is now one, 9 % of the shading pass on llvmpipe; docs/performance.md.)
+vec2 foam_at(vec2 p, float long_side) {
     // The finest level with weight, found from the coarsest down (arithmetic only).
     int level = FOAM_LEVELS - 1;
     float weight = 0.0, next_weight = 0.0, above = 0.0;  // above: the weight of level l + 1
@@ -200,31 +201,23 @@ float foam_at(vec2 p, float long_side) {
         above = w;
     }
     // The second fetch, for the band where a level hands over to the next, only where a pixel of
-    // the group needs it. A do-while whose length the group agrees on: a machine that runs
+    // the group needs it: a do-while whose length the group agrees on. A machine that runs
     // neighbouring pixels in lockstep leaves a loop at its back edge once every pixel is done,
-    // while an if runs both sides masked (llvmpipe).
+    // where an if runs both sides masked (llvmpipe).
     int fetches = weight < 1.0 && level + 1 < FOAM_LEVELS ? 2 : 1;
 #ifdef GL_ARB_shader_group_vote
     fetches = anyInvocationARB(fetches == 2) ? 2 : 1;
 #endif
     float texels = float(textureSize(u_foam, 0).x);
-    float foam = 0.0;
+    vec2 foam = vec2(0.0);
     int k = 0;
     do {
         int l = min(level + k, FOAM_LEVELS - 1);
         float w = k == 0 ? weight : (1.0 - weight) * next_weight;
         float lod = log2(max(long_side * texels / u_foam_extent[l], 1e-20));
-        foam += w * textureLod(u_foam, vec3(p / u_foam_extent[l], float(l)), lod).r;
+        foam += w * textureLod(u_foam, vec3(p / u_foam_extent[l], float(l)), lod).rg;
     } while (++k < fetches);
     return foam;
-}
-
-// The residual foam of the streaks at p: its one level's window, faded out over the outer tenth.
-float residual_foam_at(vec2 p, float bias) {
-    vec2 offset = abs(p - u_foam_centre[RESIDUAL_LEVEL]);
-    float extent = u_foam_extent[RESIDUAL_LEVEL];
-    float weight = clamp((0.5 * extent - max(offset.x, offset.y)) / (0.1 * extent), 0.0, 1.0);
-    return weight * texture(u_residual_foam, p / extent, bias).r;
 }
 
 layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;  // foam_pattern.hpp: 1 on the borders of bubble cells
@@ -252,14 +245,14 @@ float streak_cover(float residual, float pattern) {
 // size and the tile does not show) in world space, where the foam is.
 float total_foam(vec2 p, SurfaceFootprint f) {
     float long_side = max(length(f.dx), length(f.dy));
-    float foam = foam_at(p, long_side);
+    vec2 amounts = foam_at(p, long_side);
+    float foam = amounts.x;
     // The residual foam, from Beaufort 7. A compile-time switch, not a uniform: llvmpipe runs
-    // both sides of a branch, so below Beaufort 7 a uniform's untaken fetch and the streaks'
-    // pattern still cost 7.6 % of this pass (docs/performance.md). Compiled out, the residual is
-    // the constant 0 and the compiler drops the streaks' code below with it.
+    // both sides of a branch, so below Beaufort 7 the streaks' untaken code still cost 3 % of
+    // this pass (docs/performance.md). Compiled out, the residual is the constant 0 and the
+    // compiler drops the streaks' code below with it.
 #if STREAKS
-    // Its one map is a linear function of p: a bias corrects GL's level from the neighbours.
-    float residual = residual_foam_at(p, log2(long_side / implicit_long_side(p)));
+    float residual = amounts.y;
 #else
     const float residual = 0.0;
 #endif

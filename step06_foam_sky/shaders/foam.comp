@@ -1,9 +1,9 @@
 #version 450 core
 // Chapter 5.3 (foam.hpp is the CPU reference): at each texel of each foam level, the Jacobian of
 // the summed surface (all cascades, as rendered) at the texel's world position; foam is made where
-// J falls below the threshold and fades, integrated exactly over the frame (foam_step.glsl). On
-// RESIDUAL_LEVEL, beside it, the residual foam a storm leaves, fed by a share of the same breaking
-// and fading slowly (foam_pattern.hpp: the streaks).
+// J falls below the threshold and fades, integrated exactly over the frame (foam_step.glsl). Beside
+// it, in the texel's second channel, the residual foam a storm leaves, fed by a share of the same
+// breaking and fading slowly (foam_pattern.hpp: the streaks).
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "cascades.glsl"
 // FOAM_LEVELS and the clipmap's layout:
@@ -11,11 +11,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "foam_step.glsl"
 
 #ifndef STREAKS
-#define STREAKS 1  // 0: below Beaufort 7, no residual foam to keep (FoamSimulation::streaks())
+#define STREAKS 1  // 0: below Beaufort 7, the residual held at 0 (FoamSimulation::streaks())
 #endif
 
-layout(r32f, binding = 0) uniform image2DArray u_foam_image;  // the whitecaps' foam, a layer per level
-layout(r32f, binding = 1) uniform image2D u_residual_image;     // the residual foam, level RESIDUAL_LEVEL only
+layout(rg32f, binding = 0) uniform image2DArray u_foam_image;  // (whitecaps' foam, residual foam), a layer per level
 
 uniform int u_n;                                // texels per side of a level (a power of two)
 uniform ivec2 u_origin[FOAM_LEVELS];            // the window's first cell, in texels of its level, from the world origin
@@ -48,16 +47,16 @@ void main() {
     float squeeze = max(0.0, u_threshold - j);
     float injection_rate = u_injection * squeeze, streak_rate = u_streak_injection * squeeze;
     bool fresh = u_warm_start || entered;  // start where injection and decay balance if J stayed as it is
+    vec2 before = fresh ? vec2(0.0) : imageLoad(u_foam_image, id).rg;
     float foam = fresh ? clamp(injection_rate / max(u_decay_rate, 0.1), 0.0, 1.0)
-                       : foam_step(imageLoad(u_foam_image, id).r, injection_rate, u_decay_rate, u_dt);
-    imageStore(u_foam_image, id, vec4(foam));
-    // Below Beaufort 7 (STREAKS 0) there is no streak injection and nothing reads the residual: it
-    // is left as it is (FoamSimulation::set_wind clears it when the streaks come back).
+                       : foam_step(before.r, injection_rate, u_decay_rate, u_dt);
+    // Below Beaufort 7 (STREAKS 0) there is no streak injection: the residual is held at 0, so it
+    // starts from none when the streaks come back.
 #if STREAKS
-    if (level == RESIDUAL_LEVEL) {
-        float residual = fresh ? clamp(streak_rate / max(u_streak_decay, 0.1), 0.0, 1.0)
-                               : foam_step(imageLoad(u_residual_image, id.xy).r, streak_rate, u_streak_decay, u_dt);
-        imageStore(u_residual_image, id.xy, vec4(residual));
-    }
+    float residual = fresh ? clamp(streak_rate / max(u_streak_decay, 0.1), 0.0, 1.0)
+                           : foam_step(before.g, streak_rate, u_streak_decay, u_dt);
+#else
+    float residual = 0.0;
 #endif
+    imageStore(u_foam_image, id, vec4(foam, residual, 0.0, 0.0));
 }
