@@ -9,7 +9,10 @@ with its quartiles, not the ratio of two medians taken minutes apart.
 
 Only the frame (total_ms) is a cost on its own. On llvmpipe the per-pass times are entangled: a
 compute dispatch first finishes the drawing queued before it, so a pass's timer can hold some of
-the previous pass's work. They are printed as a guide.
+the previous pass's work. They are printed as a guide. A `bench-csv-header:` line, where the file
+has one, names the columns after the passes (a step's own figures, in ms): those are printed too,
+under their names. One of them is a cost on its own: step06's `shading_alone_ms`
+(`--set bench_shading_repeats=N`), its shading pass drawn again and timed alone.
 """
 import statistics
 import sys
@@ -17,9 +20,13 @@ import sys
 
 def read_runs(path):
     runs = []
+    columns = []  # the last header's names, for the figures after the passes
     with open(path, encoding="utf-8") as f:
         for line in f:
             line = line.strip()
+            if line.startswith("bench-csv-header:"):
+                columns = line[len("bench-csv-header:"):].strip().split(",")
+                continue
             if line.startswith("bench-csv:"):
                 line = line[len("bench-csv:"):].strip()
             fields = line.split(",")
@@ -30,6 +37,9 @@ def read_runs(path):
                 for entry in filter(None, fields[4].split(";")):
                     name, ms = entry.split("=")
                     run[name] = float(ms)
+                for name, value in zip(columns[5:], fields[5:]):
+                    if value:  # empty: not measured in this run
+                        run[name] = float(value)
             except ValueError:
                 sys.exit(f"bench_pairs: {path}: not a bench-csv line: {line}")
             runs.append(run)
@@ -53,7 +63,7 @@ def main(argv):
     baseline, current = baseline[:pairs], current[:pairs]
     names = ["frame"] + [n for n in current[0] if n != "frame" and all(n in r for r in baseline + current)]
     print(f"{pairs} pairs; ms are medians over the runs; the ratio is current/baseline, pair by pair")
-    print(f"{'':14s} {'baseline ms':>12s} {'current ms':>11s} {'ratio':>7s} {'quartiles':>15s}")
+    print(f"{'':20s} {'baseline ms':>12s} {'current ms':>11s} {'ratio':>7s} {'quartiles':>15s}")
     for name in names:
         a = [r[name] for r in baseline]
         b = [r[name] for r in current]
@@ -62,7 +72,7 @@ def main(argv):
             continue
         low, high = quartiles(ratios)
         label = name if name == "frame" else "  " + name
-        print(f"{label:14s} {statistics.median(a):12.2f} {statistics.median(b):11.2f} "
+        print(f"{label:20s} {statistics.median(a):12.2f} {statistics.median(b):11.2f} "
               f"{statistics.median(ratios):7.3f}   [{low:.3f}, {high:.3f}]")
 
 

@@ -62,10 +62,18 @@ case "$what" in
     echo "$known"
     echo "$known" | grep -Eq '^frame +200\.00 +180\.00 +1\.100 +\[1\.000, 1\.100\]$' || { echo "FAIL: the frame's pairs"; exit 1; }
     echo "$known" | grep -Eq '^  draw +200\.00 +180\.00 +1\.100 ' || { echo "FAIL: a pass's pairs"; exit 1; }
+    # A header names the figures after the passes (step06's shading_alone_ms); an empty one is not measured.
+    printf 'bench-csv-header: step,size,fps,total_ms,passes,alone_ms,unmeasured_ms\nbench-csv: s,1x1,1,100,draw=90,%s,\n' 50 40 > "$out/known_c.csv"
+    printf 'bench-csv-header: step,size,fps,total_ms,passes,alone_ms,unmeasured_ms\nbench-csv: s,1x1,1,100,draw=90,%s,\n' 45 30 > "$out/known_d.csv"
+    extra=$(python3 tools/bench_pairs.py "$out/known_c.csv" "$out/known_d.csv") || { echo "FAIL: bench_pairs.py with a header"; exit 1; }
+    echo "$extra"
+    echo "$extra" | grep -Eq '^  alone_ms +45\.00 +37\.50 +0\.825 ' || { echo "FAIL: a figure named by the header"; exit 1; }
+    echo "$extra" | grep -q 'unmeasured_ms' && { echo "FAIL: an empty figure was compared"; exit 1; }
     # Then the command, step01 against itself: 3 pairs, a frame row and its pass.
     ./ocean bench --baseline-bin "$build/step01_sine2d/step01_sine2d" --step step01_sine2d --pairs 3 --frames 2 \
       --size 160x90 --out "$out" || { echo "FAIL: ./ocean bench --baseline-bin"; exit 1; }
-    [ "$(wc -l < "$out/baseline.csv")" = 3 ] && [ "$(wc -l < "$out/current.csv")" = 3 ] || { echo "FAIL: not 3 runs each"; exit 1; }
+    [ "$(grep -c '^bench-csv: ' "$out/baseline.csv")" = 3 ] && [ "$(grep -c '^bench-csv: ' "$out/current.csv")" = 3 ] ||
+      { echo "FAIL: not 3 runs each"; exit 1; }
     grep -Eq '^3 pairs' "$out/against.txt" && grep -Eq '^frame +[0-9.]+ +[0-9.]+ +[0-9]\.[0-9]{3} ' "$out/against.txt" ||
       { echo "FAIL: against.txt"; exit 1; }
     # Flags for one side (one build, two variants), and a bad flag stops it with the step's message.
