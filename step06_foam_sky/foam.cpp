@@ -2,7 +2,6 @@
 
 #include "step05_fft/box_mipmaps.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
-#include "step06_foam_sky/texture_units.h"
 
 #include "common/error.hpp"
 
