@@ -5,8 +5,10 @@
 
 #include "common/error.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -18,6 +20,21 @@ glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_x
     const double length = glm::length(forward_xz);
     if (!(length > 1e-6)) return eye_xz;  // looking straight down (or NaN): centred on the camera
     return eye_xz + forward_xz / length * (0.3 * foam_extent(level));
+}
+
+std::array<double, kFoamLevels> foam_level_weights(glm::dvec2 p, const std::array<FoamWindow, kFoamLevels>& windows) {
+    std::array<double, kFoamLevels> weights{};
+    double left = 1;  // the weight the finer levels did not take
+    for (int level = 0; level < kFoamLevels; ++level) {
+        const FoamWindow& w = windows[std::size_t(level)];
+        const double extent = w.texel_size * w.n;
+        const glm::dvec2 offset = glm::abs(p - w.centre());
+        const double inside = 0.5 * extent - std::max(offset.x, offset.y);  // metres from the edge
+        const double weight = std::clamp(inside / (0.1 * extent), 0.0, 1.0);
+        weights[std::size_t(level)] = left * weight;
+        left *= 1 - weight;
+    }
+    return weights;
 }
 
 void FoamSimulation::resize(int n) {

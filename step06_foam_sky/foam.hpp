@@ -97,6 +97,10 @@ FoamWindow foam_window(int level, int n, glm::dvec2 centre);
 // Where a level's window is centred: ahead of the camera by 30 % of its side along the view's
 // heading, so that the coarse levels cover the sea the camera looks at rather than behind it.
 glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_xz);
+// How much each level's foam counts at p (x, z): the finest level that holds p, faded into the next
+// over the outer tenth of its window, nothing beyond the largest. The renderer's foam_at
+// (cascades_visible.glsl) fetches at most two levels; this is the sum over all three it must equal.
+std::array<double, kFoamLevels> foam_level_weights(glm::dvec2 p, const std::array<FoamWindow, kFoamLevels>& windows);
 
 // The GPU side: one r32f layer per clipmap level, updated by foam.comp from the summed surface.
 class FoamSimulation {
@@ -124,6 +128,7 @@ public:
     bool streaks() const { return streak_share_ > 0; }
     static constexpr float kPatternSize = 9.0f;  // metres: about ten 1 m bubble cells a side
     const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
+    const std::array<FoamWindow, kFoamLevels>& windows() const { return windows_; }
     GLuint texture() const { return texture_.id(); }
     int resolution() const { return n_; }
     // Level `level` in the world's order: row j is z cell origin.z + j, column i x cell origin.x + i.

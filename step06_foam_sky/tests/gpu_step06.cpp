@@ -13,6 +13,7 @@
 #include "step06_foam_sky/patch_grid.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/tessellation.hpp"
+#include "step06_foam_sky/texture_units.h"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
@@ -489,6 +490,80 @@ TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {
         }
     EXPECT_EQ(kept, (64 - 13) * (64 - 7));
     EXPECT_GT(changed_new, 0) << "entered cells start from the new sea's steady state";
+}
+
+// The renderer's foam_at, which fetches one clipmap level (two in a level's hand-over band),
+// against the blend of all three levels it stands for (foam.hpp's foam_level_weights, in double).
+// Each level holds one constant at every texel and mip level, whitecaps and residual apart, so the
+// GPU's answer is the weights times the constants whatever the footprint: a wrong level, a wrong
+// band or a missing second fetch shows as an error of order one.
+TEST_F(Step06Gpu, FoamAtBlendsTheClipmapLevelsAsTheirWeightsSay) {
+    const WindySea sea = windy_sea(factory(), 3.0, 1.6f);
+    step06::FoamSimulation foam(factory());
+    const int n = 64;
+    foam.resize(n);
+    foam.update(*sea.gpu, all_cascades(), {0, 0}, {1, 0}, 0.0, step06::FoamSettings{});  // places the windows
+    const std::array<glm::vec2, step06::kFoamLevels> constants{glm::vec2(1, 8), glm::vec2(2, 16), glm::vec2(4, 32)};
+    for (int level = 0; level < step06::kFoamLevels; ++level)
+        for (int mip = 0; (n >> mip) >= 1; ++mip)
+            glClearTexSubImage(foam.texture(), mip, 0, 0, level, n >> mip, n >> mip, 1, GL_RG, GL_FLOAT,
+                               &constants[std::size_t(level)]);
+    ocean::ShaderProgram* program =
+        cache("foam_at", {"common/shaders/fullscreen.vert", "step06_foam_sky/tests/foam_at.frag"}, {});
+    ASSERT_NE(program, nullptr);
+    // A grid over every window and past the largest: x from -250 to 870 m, z from -560 to 560 m.
+    const int size = 512;
+    const glm::dvec2 first(-250, -560);
+    const double step = 1120.0 / size;
+    ocean::Texture target = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(target.id(), 1, GL_RG32F, size, size);
+    ocean::Framebuffer fbo = ocean::make_framebuffer();
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+    ocean::VertexArray vao = ocean::make_vertex_array();
+    GLint previous_framebuffer = 0, previous_viewport[4] = {};  // the test context's own, restored after
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
+    glGetIntegerv(GL_VIEWPORT, previous_viewport);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glViewport(0, 0, size, size);
+    foam.bind(*program, UNIT_FOAM);
+    program->set("u_first", glm::vec2(first));
+    program->set("u_step", float(step));
+    glUseProgram(program->id());
+    glBindVertexArray(vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    std::vector<glm::vec2> gpu(std::size_t(size) * size);
+    glGetTextureImage(target.id(), 0, GL_RG, GL_FLOAT, GLsizei(gpu.size() * sizeof(glm::vec2)), gpu.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
+    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+    double worst = 0;
+    std::array<int, step06::kFoamLevels> in_band{};  // points where a level hands over to the next
+    int outside = 0;
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
+            const glm::dvec2 p = first + glm::dvec2(i, j) * step;
+            const auto weights = step06::foam_level_weights(p, foam.windows());
+            glm::dvec2 cpu(0.0);
+            for (int level = 0; level < step06::kFoamLevels; ++level)
+                cpu += weights[std::size_t(level)] * glm::dvec2(constants[std::size_t(level)]);
+            const glm::dvec2 got(gpu[std::size_t(j) * size + i]);
+            worst = std::max({worst, std::abs(got.x - cpu.x), std::abs(got.y - cpu.y)});
+            for (int level = 0; level < step06::kFoamLevels; ++level) {
+                const double w = weights[std::size_t(level)];
+                if (w > 0 && w < 1 && (level == 0 || weights[std::size_t(level) - 1] == 0)) ++in_band[std::size_t(level)];
+            }
+            outside += cpu == glm::dvec2(0.0);
+        }
+    std::printf("foam_at: worst |GPU - CPU| %.2g (values up to 32); points in the bands of levels 0, 1, 2: %d, %d, "
+                "%d; outside every window: %d\n",
+                worst, in_band[0], in_band[1], in_band[2], outside);
+    for (int level = 0; level < step06::kFoamLevels; ++level)
+        EXPECT_GT(in_band[std::size_t(level)], 20) << "the grid must cross level " << level << "'s band";
+    EXPECT_GT(outside, 20) << "the grid must reach past the largest window";
+    // Float positions a few hundred metres out could move a weight by about 2e-5 over level 0's
+    // 6.4 m band: 4e-4 on values up to 32 (on llvmpipe 0: the grid and the windows fall on binary
+    // fractions). A level read in place of another, or a band's second fetch left out, is off by
+    // 1 or more (the second fetch left out: 30.7).
+    EXPECT_LT(worst, 1e-3);
 }
 
 struct Tessellated : Step06Gpu {
