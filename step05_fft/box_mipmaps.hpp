@@ -15,7 +15,8 @@ namespace step05 {
 // In place of glGenerateTextureMipmap(texture): levels 1 and below of a square, immutable
 // power-of-two texture, from level 0 down. The texture says what it is (a cube map, a 2D array or
 // a 2D texture; its size, layers and levels); its format must be GL_RGBA32F (the simulation's
-// maps), GL_RGBA16F, GL_RG32F or GL_R32F (step06's sky, combined levels and foam). Ends with the barrier that lets texture fetches read the new levels.
+// maps), GL_RGBA16F, GL_RG32F or GL_R32F (step06's sky, combined levels and foam). Ends with the
+// barrier that lets texture fetches read the new levels.
 void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture);
 
 // The levels of a full mip chain of a size x size texture, down to 1 x 1: what its storage needs

@@ -7,7 +7,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #ifndef FORMAT
-#define FORMAT rgba16f  // the texture's format: rgba32f (the simulation's maps), rgba16f (the sky), rg32f (the foam) or r32f
+#define FORMAT rgba16f  // the format: rgba32f (the simulation's maps), rgba16f (the sky), rg32f (the foam), r32f
 #endif
 #ifndef IMAGE
 #define IMAGE imageCube  // imageCube, image2DArray (z: the layer) or image2D

@@ -549,7 +549,8 @@ TEST_F(Step06Gpu, FoamAtBlendsTheClipmapLevelsAsTheirWeightsSay) {
             worst = std::max({worst, std::abs(got.x - cpu.x), std::abs(got.y - cpu.y)});
             for (int level = 0; level < step06::kFoamLevels; ++level) {
                 const double w = weights[std::size_t(level)];
-                if (w > 0 && w < 1 && (level == 0 || weights[std::size_t(level) - 1] == 0)) ++in_band[std::size_t(level)];
+                const bool finest = level == 0 || weights[std::size_t(level) - 1] == 0;
+                if (w > 0 && w < 1 && finest) ++in_band[std::size_t(level)];
             }
             outside += cpu == glm::dvec2(0.0);
         }
