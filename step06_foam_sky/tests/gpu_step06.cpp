@@ -414,6 +414,31 @@ TEST_F(Step06Gpu, TheSameFoamAtSixAndSixtyFramesASecond) {
     }
 }
 
+// Draws `program` (its uniforms already set) with one full-screen triangle into a new size x size
+// target of `format`, and reads the target back as `channels` floats a texel (GL_RED or GL_RG);
+// the test context's framebuffer and viewport are restored after.
+std::vector<float> draw_full_screen(const ocean::ShaderProgram& program, int size, GLenum format, int channels) {
+    ocean::Texture target = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(target.id(), 1, format, size, size);
+    ocean::Framebuffer fbo = ocean::make_framebuffer();
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
+    ocean::VertexArray vao = ocean::make_vertex_array();
+    GLint previous_framebuffer = 0, previous_viewport[4] = {};
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
+    glGetIntegerv(GL_VIEWPORT, previous_viewport);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glViewport(0, 0, size, size);
+    glUseProgram(program.id());
+    glBindVertexArray(vao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    std::vector<float> texels(std::size_t(size) * size * std::size_t(channels));
+    glGetTextureImage(target.id(), 0, channels == 2 ? GL_RG : GL_RED, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
+                      texels.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
+    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+    return texels;
+}
+
 // The renderer's foam cover (GLSL) against foam_pattern.hpp's, texel by texel of the uploaded
 // pattern (8 bits: the CPU is given the same quantised value), for a fresh, a half-decayed and an
 // almost gone whitecap, and the streaks' cover of residual foam.
@@ -425,25 +450,11 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     const step06::FoamPatternSettings settings;
     const int n = settings.size;
     const std::vector<std::uint8_t> pattern = step06::to_r8(step06::foam_pattern(settings));
-    ocean::Texture target = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(target.id(), 1, GL_R32F, n, n);
-    ocean::Framebuffer fbo = ocean::make_framebuffer();
-    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    ocean::VertexArray vao = ocean::make_vertex_array();
-    GLint previous_framebuffer = 0, previous_viewport[4] = {};  // the test context's own, restored after
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
-    glGetIntegerv(GL_VIEWPORT, previous_viewport);
     for (const auto& [amount, streaks] : {std::pair{1.0f, false}, {0.45f, false}, {0.15f, false}, {0.8f, true}, {0.3f, true}}) {
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-        glViewport(0, 0, n, n);
         foam.bind_pattern(*program, 0);
         program->set("u_amount", amount);
         program->set("u_evaluate_streaks", int(streaks));
-        glUseProgram(program->id());
-        glBindVertexArray(vao.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        std::vector<float> gpu(std::size_t(n) * n);
-        glGetTextureImage(target.id(), 0, GL_RED, GL_FLOAT, GLsizei(gpu.size() * sizeof(float)), gpu.data());
+        const std::vector<float> gpu = draw_full_screen(*program, n, GL_R32F, 1);
         double worst = 0, covered = 0;
         for (std::size_t i = 0; i < gpu.size(); ++i) {
             const double quantised = pattern[i] / 255.0;
@@ -455,8 +466,6 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
         std::printf("%s amount %.2f: mean cover %.3f, worst |GPU - CPU| %.2g\n", streaks ? "residual foam" : "foam",
                     amount, covered / double(gpu.size()), worst);
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
-    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
 }
 
 TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {
@@ -515,26 +524,10 @@ TEST_F(Step06Gpu, FoamAtBlendsTheClipmapLevelsAsTheirWeightsSay) {
     const int size = 512;
     const glm::dvec2 first(-250, -560);
     const double step = 1120.0 / size;
-    ocean::Texture target = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(target.id(), 1, GL_RG32F, size, size);
-    ocean::Framebuffer fbo = ocean::make_framebuffer();
-    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    ocean::VertexArray vao = ocean::make_vertex_array();
-    GLint previous_framebuffer = 0, previous_viewport[4] = {};  // the test context's own, restored after
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
-    glGetIntegerv(GL_VIEWPORT, previous_viewport);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-    glViewport(0, 0, size, size);
     foam.bind(*program, UNIT_FOAM);
     program->set("u_first", glm::vec2(first));
     program->set("u_step", float(step));
-    glUseProgram(program->id());
-    glBindVertexArray(vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<glm::vec2> gpu(std::size_t(size) * size);
-    glGetTextureImage(target.id(), 0, GL_RG, GL_FLOAT, GLsizei(gpu.size() * sizeof(glm::vec2)), gpu.data());
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
-    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+    const std::vector<float> gpu = draw_full_screen(*program, size, GL_RG32F, 2);  // (whitecaps, residual) a texel
     double worst = 0;
     std::array<int, step06::kFoamLevels> in_band{};  // points where a level hands over to the next
     int outside = 0;
@@ -545,7 +538,8 @@ TEST_F(Step06Gpu, FoamAtBlendsTheClipmapLevelsAsTheirWeightsSay) {
             glm::dvec2 cpu(0.0);
             for (int level = 0; level < step06::kFoamLevels; ++level)
                 cpu += weights[std::size_t(level)] * glm::dvec2(constants[std::size_t(level)]);
-            const glm::dvec2 got(gpu[std::size_t(j) * size + i]);
+            const std::size_t texel = 2 * (std::size_t(j) * size + i);
+            const glm::dvec2 got(gpu[texel], gpu[texel + 1]);
             worst = std::max({worst, std::abs(got.x - cpu.x), std::abs(got.y - cpu.y)});
             for (int level = 0; level < step06::kFoamLevels; ++level) {
                 const double w = weights[std::size_t(level)];
