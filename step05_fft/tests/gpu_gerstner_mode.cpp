@@ -8,6 +8,7 @@
 // notes' two sign slips each fail it (crests along -k; J largest at the crests).
 #include "common/gl.hpp"
 #include "step05_fft/ocean_simulation.hpp"
+#include "tests/gpu/full_screen_draw.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
@@ -139,29 +140,14 @@ TEST_F(GerstnerMode, JacobianViewIsBlackExactlyWhereTheSurfaceFolds) {
     ocean::ShaderProgram* view = cache("map_view", {"common/shaders/fullscreen.vert", "step05_fft/shaders/map_view.frag"}, {});
     ASSERT_NE(view, nullptr);
     const int width = 256, height = kN;
-    ocean::Texture target = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(target.id(), 1, GL_RGBA8, width, height);
-    ocean::Framebuffer fbo = ocean::make_framebuffer();
-    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    ocean::VertexArray vao = ocean::make_vertex_array();
-    GLint previous_framebuffer = 0, previous_viewport[4] = {};
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
-    glGetIntegerv(GL_VIEWPORT, previous_viewport);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-    glViewport(0, 0, width, height);
     ocean.bind_maps(*view);
     view->set("u_map", 5);  // MAP_JACOBIAN
     view->set("u_range", 0.1f);
     view->set("u_resolution", glm::vec2(width, height));
     view->set("u_layer", 0);
     view->set("u_spectrum_image", 3);  // not unit 0, which holds the displacement array
-    glUseProgram(view->id());
-    glBindVertexArray(vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<std::uint8_t> rgba(std::size_t(width) * height * 4);
-    glGetTextureImage(target.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
-    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
+    const std::vector<std::uint8_t> rgba =
+        ocean_test::draw_full_screen<std::uint8_t>(*view, width, height, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4);
     auto pixel = [&](int x, int y) { return &rgba[(std::size_t(y) * width + x) * 4]; };
     auto black = [&](int x, int y) { return pixel(x, y)[0] == 0 && pixel(x, y)[1] == 0 && pixel(x, y)[2] == 0; };
 

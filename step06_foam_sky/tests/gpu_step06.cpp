@@ -14,6 +14,7 @@
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/tessellation.hpp"
 #include "step06_foam_sky/texture_units.h"
+#include "tests/gpu/full_screen_draw.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
@@ -414,31 +415,6 @@ TEST_F(Step06Gpu, TheSameFoamAtSixAndSixtyFramesASecond) {
     }
 }
 
-// Draws `program` (its uniforms already set) with one full-screen triangle into a new size x size
-// target of `format`, and reads the target back as `channels` floats a texel (GL_RED or GL_RG);
-// the test context's framebuffer and viewport are restored after.
-std::vector<float> draw_full_screen(const ocean::ShaderProgram& program, int size, GLenum format, int channels) {
-    ocean::Texture target = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(target.id(), 1, format, size, size);
-    ocean::Framebuffer fbo = ocean::make_framebuffer();
-    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.id(), 0);
-    ocean::VertexArray vao = ocean::make_vertex_array();
-    GLint previous_framebuffer = 0, previous_viewport[4] = {};
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
-    glGetIntegerv(GL_VIEWPORT, previous_viewport);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-    glViewport(0, 0, size, size);
-    glUseProgram(program.id());
-    glBindVertexArray(vao.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<float> texels(std::size_t(size) * size * std::size_t(channels));
-    glGetTextureImage(target.id(), 0, channels == 2 ? GL_RG : GL_RED, GL_FLOAT, GLsizei(texels.size() * sizeof(float)),
-                      texels.data());
-    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
-    glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2], previous_viewport[3]);
-    return texels;
-}
-
 // The renderer's foam cover (GLSL) against foam_pattern.hpp's, texel by texel of the uploaded
 // pattern (8 bits: the CPU is given the same quantised value), for a fresh, a half-decayed and an
 // almost gone whitecap, and the streaks' cover of residual foam.
@@ -454,7 +430,7 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
         foam.bind_pattern(*program, 0);
         program->set("u_amount", amount);
         program->set("u_evaluate_streaks", int(streaks));
-        const std::vector<float> gpu = draw_full_screen(*program, n, GL_R32F, 1);
+        const std::vector<float> gpu = ocean_test::draw_full_screen<float>(*program, n, n, GL_R32F, GL_RED, GL_FLOAT, 1);
         double worst = 0, covered = 0;
         for (std::size_t i = 0; i < gpu.size(); ++i) {
             const double quantised = pattern[i] / 255.0;
@@ -527,7 +503,8 @@ TEST_F(Step06Gpu, FoamAtBlendsTheClipmapLevelsAsTheirWeightsSay) {
     foam.bind(*program, UNIT_FOAM);
     program->set("u_first", glm::vec2(first));
     program->set("u_step", float(step));
-    const std::vector<float> gpu = draw_full_screen(*program, size, GL_RG32F, 2);  // (whitecaps, residual) a texel
+    // (whitecaps, residual) a texel
+    const std::vector<float> gpu = ocean_test::draw_full_screen<float>(*program, size, size, GL_RG32F, GL_RG, GL_FLOAT, 2);
     double worst = 0;
     std::array<int, step06::kFoamLevels> in_band{};  // points where a level hands over to the next
     int outside = 0;
