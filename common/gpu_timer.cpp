@@ -6,13 +6,11 @@
 
 namespace ocean {
 
-namespace {
 double median(std::vector<double> v) {
     if (v.empty()) return 0;
     std::sort(v.begin(), v.end());
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
-}  // namespace
 
 void GpuTimers::begin(const std::string& pass) {
     if (!enabled_) return;

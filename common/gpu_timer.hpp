@@ -18,6 +18,10 @@
 
 namespace ocean {
 
+// The median of some timings (the mean of the middle two for an even count, 0 for none): what every
+// benchmark here quotes, since one stalled frame (a shader compile, a swap) would dominate a mean.
+double median(std::vector<double> values);
+
 class GpuTimers {
 public:
     void set_enabled(bool enabled) { enabled_ = enabled; }

@@ -195,11 +195,6 @@ void OceanSimulation::simulate(double time, Backend backend, float choppiness, o
 
 namespace {
 
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
-
 template <class Work>
 double median_ms(int repeats, Work work) {
     std::vector<double> ms;
@@ -210,7 +205,7 @@ double median_ms(int repeats, Work work) {
         glFinish();
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
-    return median(ms);
+    return ocean::median(ms);
 }
 
 std::string format_ms(const char* label, double ms) {
@@ -250,7 +245,7 @@ void OceanSimulation::simulate_auto(double time, float choppiness, ocean::GpuTim
     (trial == Backend::Fftw ? auto_.fftw_ms : auto_.gpu_fft_ms)
         .push_back(median_ms(1, [&] { simulate(time, trial, choppiness, timers); }));
     if (int(auto_.gpu_fft_ms.size()) < kAutoTrialFrames || int(auto_.fftw_ms.size()) < kAutoTrialFrames) return;
-    const double gpu = median(auto_.gpu_fft_ms), cpu = median(auto_.fftw_ms);
+    const double gpu = ocean::median(auto_.gpu_fft_ms), cpu = ocean::median(auto_.fftw_ms);
     auto_.chosen = cpu < gpu ? Backend::Fftw : Backend::GpuFft;
     auto_.decided = true;
     char text[200];

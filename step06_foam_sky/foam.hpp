@@ -102,7 +102,8 @@ glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_x
 // (cascades_visible.glsl) fetches at most two levels; this is the sum over all three it must equal.
 std::array<double, kFoamLevels> foam_level_weights(glm::dvec2 p, const std::array<FoamWindow, kFoamLevels>& windows);
 
-// The GPU side: one r32f layer per clipmap level, updated by foam.comp from the summed surface.
+// The GPU side: one rg32f layer per clipmap level (whitecaps' foam, residual foam), updated by
+// foam.comp from the summed surface.
 class FoamSimulation {
 public:
     // Makes the bubble pattern texture (foam_pattern.hpp) once.

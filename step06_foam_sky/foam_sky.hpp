@@ -138,12 +138,12 @@ protected:
             for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
             BenchFigures figures = times.figures();
             if (!shading_alone_ms_.empty()) {
-                std::vector<double> ms = shading_alone_ms_;
-                std::sort(ms.begin(), ms.end());
-                std::cout << "bench: the shading pass alone (ocean_shade.frag, drawn again " << ms.size()
-                          << " times, wall ms around glFinish): median " << ms[ms.size() / 2] << ", min "
-                          << ms.front() << "\n";
-                figures.emplace_back("shading_alone_ms", ms[ms.size() / 2]);
+                const double median = ocean::median(shading_alone_ms_);
+                std::cout << "bench: the shading pass alone (ocean_shade.frag, drawn again "
+                          << shading_alone_ms_.size() << " times, wall ms around glFinish): median " << median
+                          << ", min "
+                          << *std::min_element(shading_alone_ms_.begin(), shading_alone_ms_.end()) << "\n";
+                figures.emplace_back("shading_alone_ms", median);
             }
             return figures;
         });

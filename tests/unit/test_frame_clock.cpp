@@ -1,6 +1,7 @@
 // The clock --bench reads: it times the steady state, after frame 0 and after a step's warm-up,
 // and before the frames that time the passes one by one (stop).
 // Only lower bounds on time are tested (a sleep may overrun on a busy machine, never fall short).
+#include "common/gpu_timer.hpp"
 #include "common/run_support.hpp"
 
 #include <gtest/gtest.h>
@@ -78,3 +79,12 @@ TEST(FrameClock, AStopBeforeTheWarmUpEndsIsIgnored) {
 }
 
 }  // namespace
+
+// The median every benchmark quotes (gpu_timer.hpp): the middle value, the mean of the middle two
+// for an even count, 0 for none; the order of the timings does not matter.
+TEST(Median, IsTheMiddleTimingWhateverTheOrder) {
+    EXPECT_EQ(ocean::median({}), 0.0);
+    EXPECT_EQ(ocean::median({7.0}), 7.0);
+    EXPECT_EQ(ocean::median({9.0, 1.0, 4.0}), 4.0);
+    EXPECT_EQ(ocean::median({9.0, 1.0, 4.0, 100.0}), 6.5);  // one stalled frame moves it little
+}
