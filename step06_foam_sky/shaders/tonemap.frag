@@ -1,6 +1,6 @@
 #version 450 core
-// From scene light to screen: exposure, bloom added, a filmic curve (ACES fitted, or AgX), and
-// sRGB encoding (tonemap.hpp holds the same curves on the CPU for the tests).
+// From scene light to screen: exposure, bloom added, a filmic curve (ACES fitted, or AgX), sRGB
+// encoding and a dither (tonemap.hpp holds all of it on the CPU in double, for the tests).
 #include "srgb.glsl"
 
 #ifndef TONEMAPPER
@@ -38,14 +38,22 @@ vec3 agx(vec3 c) {
     return clamp(outset * c, 0.0, 1.0);
 }
 
-// A dither of one 8-bit step, triangular (the difference of two uniform values, so the error's
-// mean and variance do not depend on the colour), from Jimenez's interleaved gradient noise at
-// this pixel: smooth gradients (the sky) no longer show bands when the result is rounded to 8
-// bits. Deterministic: the same pixel gets the same offset every frame.
+// A dither of one 8-bit step, triangular (TPDF): added before the target rounds to 8 bits, it
+// keeps a slow gradient's mean on the true value between two steps, so the sky shows no bands,
+// and the error's variance (1/4 step^2) does not depend on the colour. One uniform value from
+// Jimenez's interleaved gradient noise at this pixel, r in [-1, 1], made triangular by
+// sign(r) (1 - sqrt(1 - |r|)) (Gjol, "Banding in Games", 2016). Until issue 23's eleventh stop this
+// was the noise minus the same noise 7 and 13 pixels away, which is not a second independent
+// value: that noise is nearly a linear ramp, so the difference took two values, -0.91 and +0.09 of
+// a step, and the bands stayed (tonemap.hpp's test measures both). Deterministic: the same pixel
+// gets the same offset every frame.
+float interleaved_gradient_noise(vec2 fragment) {
+    return fract(52.9829189 * fract(dot(fragment, vec2(0.06711056, 0.00583715))));
+}
+
 vec3 dither(vec3 srgb) {
-    float a = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-    float b = fract(52.9829189 * fract(dot(gl_FragCoord.xy + vec2(7.0, 13.0), vec2(0.06711056, 0.00583715))));
-    return srgb + (a - b) / 255.0;
+    float r = 2.0 * interleaved_gradient_noise(gl_FragCoord.xy) - 1.0;
+    return srgb + sign(r) * (1.0 - sqrt(1.0 - abs(r))) / 255.0;
 }
 
 void main() {
@@ -55,11 +63,11 @@ void main() {
     vec3 c = texelFetch(u_scene, ivec2(gl_FragCoord.xy), 0).rgb + u_bloom_strength * texture(u_bloom, v_uv).rgb;
     c *= u_exposure;
 #if TONEMAPPER == 0
-    vec3 srgb = linear_to_srgb(aces_fitted(c));
+    vec3 srgb = linear_to_srgb_fast(aces_fitted(c));
 #elif TONEMAPPER == 1
     vec3 srgb = agx(c);
 #else
-    vec3 srgb = linear_to_srgb(c);
+    vec3 srgb = linear_to_srgb_fast(c);
 #endif
     out_colour = vec4(dither(srgb), 1.0);
 }

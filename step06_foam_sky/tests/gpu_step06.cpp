@@ -1,8 +1,8 @@
 // step06 on the GPU: foam decay at two frame rates, foam made by the summed surface (against
 // the CPU reference, at mip level 0 and at whole levels below it) and kept in world space when
 // the camera moves, the box mipmaps (against the 2 x 2 mean and glGenerateMipmap), tessellation
-// (primitive counts against the CPU level, culling behind the camera), and the sky cubemap (the
-// sun's texel, an image sky, missing and corrupt files).
+// (primitive counts against the CPU level, culling behind the camera), the sky cubemap (the
+// sun's texel, an image sky, missing and corrupt files), and the tonemap pass.
 #include "common/frustum.hpp"
 #include "common/image.hpp"
 #include "step06_foam_sky/cascades.hpp"
@@ -14,6 +14,7 @@
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/tessellation.hpp"
 #include "step06_foam_sky/texture_units.h"
+#include "step06_foam_sky/tonemap.hpp"
 #include "tests/gpu/full_screen_draw.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
@@ -813,6 +814,100 @@ TEST_F(Step06Gpu, CombinedLevelTexelsAreTheCpuReferences) {
     EXPECT_GT(compared, kCount * 99 / 100);
     EXPECT_GE(levels.size(), 8u) << "the offsets should reach across most levels";
     EXPECT_LT(worst, 1e-6);
+}
+
+// A float texture of width x height holding `texels` (RGBA), sampled linearly and clamped.
+ocean::Texture float_texture(int width, int height, const std::vector<glm::vec4>& texels) {
+    ocean::Texture t = ocean::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), 1, GL_RGBA32F, width, height);
+    glTextureSubImage2D(t.id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+// tonemap.frag, the pass itself, against tonemap.hpp in double for each curve, pixel by pixel,
+// into a float target (before the rounding to 8 bits): a scene of random colours from 12 stops
+// below mid-grey to 7 above, greys among them, plus the bloom (one texel: the same everywhere)
+// and the dither. Left out: the pixels where the noise under the dither is within 1e-4 of a
+// wrap, where a float and a double may fall on either side of it (a whole step apart); they
+// must be few. Then what the dither is for, on the 8-bit target the screen gets: a slow gradient
+// (3 steps over 96 columns) keeps its mean between the steps instead of a staircase.
+TEST_F(Step06Gpu, TonemapPassIsTheCpuCurveAndLeavesNoBands) {
+    const int width = 64, height = 32;
+    std::mt19937 random(41);
+    std::uniform_real_distribution<float> stops(-12, 7);
+    std::vector<glm::vec4> scene;
+    for (int i = 0; i < width * height; ++i) {
+        const float grey = 0.18f * std::exp2(stops(random));
+        glm::vec3 c = i % 4 == 0 ? glm::vec3(grey) : glm::vec3(0.18f) * glm::exp2(glm::vec3(stops(random), stops(random), stops(random)));
+        scene.emplace_back(c, 1.0f);
+    }
+    const glm::vec3 bloom(0.5f, 0.7f, 1.2f);
+    const float exposure = 1.3f, bloom_strength = 0.04f;
+    ocean::Texture scene_texture = float_texture(width, height, scene), bloom_texture = float_texture(1, 1, {glm::vec4(bloom, 1)});
+    const auto near_a_wrap = [](glm::dvec2 fragment) {
+        const double inner = fragment.x * 0.06711056 + fragment.y * 0.00583715, noise = step06::interleaved_gradient_noise(fragment);
+        const auto from_integer = [](double x) { return std::abs(x - std::round(x)); };
+        return from_integer(inner) < 1e-4 || from_integer(52.9829189 * (inner - std::floor(inner))) < 1e-4 || from_integer(noise) < 1e-4;
+    };
+    for (const step06::Tonemapper curve : {step06::Tonemapper::Aces, step06::Tonemapper::Agx, step06::Tonemapper::None}) {
+        ocean::ShaderProgram* program = cache("tonemap", {"common/shaders/fullscreen.vert", "step06_foam_sky/shaders/tonemap.frag"},
+                                              {"TONEMAPPER " + std::to_string(int(curve))});
+        ASSERT_NE(program, nullptr);
+        program->set("u_scene", 0);
+        program->set("u_bloom", 1);
+        program->set("u_exposure", exposure);
+        program->set("u_bloom_strength", bloom_strength);
+        glBindTextureUnit(0, scene_texture.id());
+        glBindTextureUnit(1, bloom_texture.id());
+        const std::vector<float> gpu = ocean_test::draw_full_screen<float>(*program, width, height, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4);
+        double worst = 0;
+        int skipped = 0;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const glm::dvec2 fragment(x + 0.5, y + 0.5);
+                if (near_a_wrap(fragment)) {
+                    ++skipped;
+                    continue;
+                }
+                const std::size_t i = std::size_t(y * width + x);
+                const glm::dvec3 cpu = step06::tonemap(glm::dvec3(scene[i]), glm::dvec3(bloom), exposure, bloom_strength, curve, fragment);
+                for (int channel = 0; channel < 3; ++channel)
+                    worst = std::max(worst, std::abs(double(gpu[4 * i + std::size_t(channel)]) - cpu[channel]));
+            }
+        std::printf("tonemap %d: worst |GPU - CPU| %.2e (%.3f of an 8-bit step), %d pixels by a wrap of the noise left out\n",
+                    int(curve), worst, worst * 255, skipped);
+        EXPECT_LT(worst, 5e-5) << int(curve);
+        EXPECT_LT(skipped, width * height / 100) << int(curve);
+    }
+    // The slow gradient, through the curve "none" to the 8-bit target: value v steps is the linear
+    // light whose sRGB code is v / 255, from 100 to 103 steps across the columns.
+    const int columns = 96, column_width = 8, rows = 128;
+    std::vector<glm::vec4> gradient;
+    for (int y = 0; y < rows; ++y)
+        for (int x = 0; x < columns * column_width; ++x) {
+            const double encoded = (100.0 + (x / column_width) / 32.0) / 255.0;
+            gradient.emplace_back(glm::vec3(float(std::pow((encoded + 0.055) / 1.055, 2.4))), 1.0f);
+        }
+    ocean::Texture gradient_texture = float_texture(columns * column_width, rows, gradient);
+    ocean::ShaderProgram* none = cache("tonemap", {"common/shaders/fullscreen.vert", "step06_foam_sky/shaders/tonemap.frag"}, {"TONEMAPPER 2"});
+    ASSERT_NE(none, nullptr);
+    none->set("u_exposure", 1.0f);
+    none->set("u_bloom_strength", 0.0f);
+    glBindTextureUnit(0, gradient_texture.id());
+    const std::vector<std::uint8_t> bytes =
+        ocean_test::draw_full_screen<std::uint8_t>(*none, columns * column_width, rows, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 4);
+    double worst_mean = 0;
+    for (int column = 0; column < columns; ++column) {
+        double sum = 0;
+        for (int y = 0; y < rows; ++y)
+            for (int x = column * column_width; x < (column + 1) * column_width; ++x) sum += bytes[4 * std::size_t(y * columns * column_width + x)];
+        worst_mean = std::max(worst_mean, std::abs(sum / (rows * column_width) - (100.0 + column / 32.0)));
+    }
+    std::printf("tonemap on 8 bits: a 3-step gradient's column means within %.3f steps of the true values\n", worst_mean);
+    EXPECT_LT(worst_mean, 0.05) << "bands: the dither does not keep a gradient's mean between the steps";
 }
 
 }  // namespace

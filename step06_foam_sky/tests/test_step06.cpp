@@ -1,4 +1,5 @@
-// step06's CPU math: cascade bands, foam's frame-rate independence, tessellation levels.
+// step06's CPU math: cascade bands, foam's frame-rate independence, tessellation levels, the
+// tonemapper.
 #include "common/params.hpp"
 #include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
@@ -11,10 +12,13 @@
 #include "step06_foam_sky/look_params.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/tessellation.hpp"
+#include "step06_foam_sky/tonemap.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <map>
 
@@ -417,6 +421,105 @@ TEST(Step06Fog, OpticalDepthIsTheDensitySummedAlongTheRay) {
     const double far = step06::fog_amount(eye, {1e6, 0, 0}, density, falloff);
     EXPECT_GT(far, 0.999);
     EXPECT_LE(far, 1.0);
+}
+
+// The sRGB curve at the standard's own numbers (IEC 61966-2-1): its ends, the two pieces meeting at
+// 0.0031308, 18 % grey at 0.4613 and half the light at 0.7354; and the fast curve the tonemap pass
+// uses within 1.5e-5 of it everywhere in [0, 1], rising as it does (no step down where the pieces
+// meet).
+TEST(Step06Tonemap, SrgbEncodingMeetsTheStandardAndTheFastCurveStaysOnIt) {
+    EXPECT_EQ(step06::linear_to_srgb(0.0), 0.0);
+    EXPECT_NEAR(step06::linear_to_srgb(1.0), 1.0, 1e-12);
+    EXPECT_NEAR(12.92 * 0.0031308, 1.055 * std::pow(0.0031308, 1.0 / 2.4) - 0.055, 1e-6);
+    EXPECT_NEAR(step06::linear_to_srgb(0.18), 0.4613561, 1e-6);
+    EXPECT_NEAR(step06::linear_to_srgb(0.5), 0.7353570, 1e-6);
+    EXPECT_EQ(step06::linear_to_srgb(-1.0), 0.0);
+    EXPECT_NEAR(step06::linear_to_srgb(7.0), 1.0, 1e-12);
+    double worst = 0, previous = -1;
+    bool rising = true;
+    for (int i = 0; i <= 1000000; ++i) {
+        const double c = i / 1e6, fast = step06::linear_to_srgb_fast(c);
+        worst = std::max(worst, std::abs(fast - step06::linear_to_srgb(c)));
+        rising = rising && fast >= previous;
+        previous = fast;
+    }
+    std::printf("fast sRGB curve: worst error %.2e (%.4f of an 8-bit step)\n", worst, worst * 255);
+    EXPECT_LT(worst, 1.5e-5);
+    EXPECT_TRUE(rising);
+}
+
+// ACES in Hill's fit: a grey stays grey (each matrix's rows sum to one), darkness stays dark, the
+// curve rises with the light and rolls the highlights off towards white without a hard clip
+// below it; and AgX too keeps a grey grey (within its matrices' printed digits) and never falls.
+TEST(Step06Tonemap, FilmicCurvesKeepGreysGreyRiseWithTheLightAndRollOff) {
+    double previous_aces = -1, previous_agx = -1;
+    for (double stops = -12; stops <= 8; stops += 0.25) {
+        const double g = 0.18 * std::exp2(stops);
+        const glm::dvec3 aces = step06::aces_fitted(glm::dvec3(g)), agx = step06::agx(glm::dvec3(g));
+        EXPECT_NEAR(aces.r, aces.g, 1e-4) << g;
+        EXPECT_NEAR(aces.g, aces.b, 1e-4) << g;
+        EXPECT_NEAR(agx.r, agx.g, 5e-4) << g;  // its published matrices' rows sum to one within 1e-4
+        EXPECT_NEAR(agx.g, agx.b, 5e-4) << g;
+        EXPECT_GE(aces.g, previous_aces) << g;
+        EXPECT_GE(agx.g, previous_agx) << g;  // flat only where clamped: at black and at white
+        previous_aces = aces.g;
+        previous_agx = agx.g;
+    }
+    EXPECT_LT(step06::aces_fitted(glm::dvec3(0.0)).g, 1e-3);
+    // The shoulder: one stop over white is still below white, and each stop up gains less.
+    const double at1 = step06::aces_fitted(glm::dvec3(1.0)).g, at2 = step06::aces_fitted(glm::dvec3(2.0)).g,
+                 at4 = step06::aces_fitted(glm::dvec3(4.0)).g;
+    EXPECT_LT(at2, 0.99);
+    EXPECT_LT(at4 - at2, at2 - at1);
+    EXPECT_GT(step06::aces_fitted(glm::dvec3(1000.0)).g, 0.999);
+    EXPECT_GT(step06::agx(glm::dvec3(0.18)).g, step06::agx(glm::dvec3(0.09)).g + 0.05);  // mid-tones rise
+}
+
+// What a dither is for: a slow gradient (a clear sky) rounded to 8 bits keeps its mean on the true
+// value between two steps instead of a staircase, and the rounding error's variance does not
+// depend on where between two steps the value lies (a triangular dither of one step: 1/12 + 1/6 =
+// 1/4 step^2). Over 3 steps in 96 columns of 8 x 128 pixels. The offset the shader added before
+// issue 23's eleventh stop, the same noise minus itself shifted, fails this: it left the bands.
+TEST(Step06Tonemap, TheDitherLeavesNoBandsInASlowGradient) {
+    const auto shifted_noise_difference = [](glm::dvec2 fragment) {
+        return step06::interleaved_gradient_noise(fragment) - step06::interleaved_gradient_noise(fragment + glm::dvec2(7, 13));
+    };
+    const auto banding = [](const auto& offset_in_steps) {
+        double worst_mean = 0, least_variance = 1e9, most_variance = 0;
+        for (int column = 0; column < 96; ++column) {
+            const double value = 100.0 + column / 32.0;  // in 8-bit steps
+            double sum = 0, sum2 = 0;
+            int count = 0;
+            for (int x = column * 8; x < column * 8 + 8; ++x)
+                for (int y = 0; y < 128; ++y) {
+                    const double rounded = std::floor(value + offset_in_steps(glm::dvec2(x + 0.5, y + 0.5)) + 0.5);
+                    sum += rounded;
+                    sum2 += (rounded - value) * (rounded - value);
+                    ++count;
+                }
+            worst_mean = std::max(worst_mean, std::abs(sum / count - value));
+            least_variance = std::min(least_variance, sum2 / count);
+            most_variance = std::max(most_variance, sum2 / count);
+        }
+        return std::array<double, 3>{worst_mean, least_variance, most_variance};
+    };
+    const auto now = banding([](glm::dvec2 f) { return 255.0 * step06::dither_offset(f); });
+    const auto before = banding(shifted_noise_difference);
+    std::printf("dither: worst column mean off by %.3f steps, error variance %.3f to %.3f (before: %.3f, %.3f to %.3f)\n",
+                now[0], now[1], now[2], before[0], before[1], before[2]);
+    EXPECT_LT(now[0], 0.05);
+    EXPECT_GT(now[1], 0.2);
+    EXPECT_LT(now[2], 0.3);
+    EXPECT_GT(before[0], 0.3) << "the old offset left the bands; a test that passes it cannot see them";
+    // One step at most, either way, and no bias over a large block.
+    double sum = 0;
+    for (int x = 0; x < 512; ++x)
+        for (int y = 0; y < 512; ++y) {
+            const double d = 255.0 * step06::dither_offset(glm::dvec2(x + 0.5, y + 0.5));
+            ASSERT_LE(std::abs(d), 1.0);
+            sum += d;
+        }
+    EXPECT_LT(std::abs(sum / (512.0 * 512.0)), 0.01);
 }
 
 // One table names step06's effects (look_params.hpp): each name turns back into its effect, a
