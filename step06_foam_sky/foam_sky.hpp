@@ -468,7 +468,9 @@ protected:
         bind_target();
         ocean::ShaderProgram* tonemap =
             program("tonemap", {"fullscreen.vert", "tonemap.frag"},
-                    {"TONEMAPPER " + std::to_string(view_ == kViewShaded ? look_.tonemapper : 2)});
+                    {"TONEMAPPER " + std::to_string(view_ == kViewShaded ? look_.tonemapper : 2),
+                     // The debug views show their values as they are: no noise on them.
+                     std::string("DITHER ") + (view_ == kViewShaded && look_.dither ? "1" : "0")});
         if (tonemap == nullptr) return;
         tonemap->set("u_scene", 0);
         tonemap->set("u_bloom", 1);

@@ -78,6 +78,7 @@ public:
             p.add_float("bloom_strength", &bloom_strength, 0, 2, "how much of the glow is added");
             p.add_float("exposure", &exposure, 0.01f, 20, "scale before the tonemapper").logarithmic();
             p.add_choice("tonemapper", &tonemapper, {"aces", "agx", "none"}, "filmic curve: ACES fitted, AgX, or a clamp");
+            p.add_bool("dither", &dither, "one 8-bit step of triangular noise before the screen rounds (off: to measure a picture)");
         }
         const auto effects_group = p.group("terms and passes");
         for (std::size_t i = 0; i < std::size(kEffectNames); ++i)
@@ -147,6 +148,7 @@ public:
     std::string sky_image;
     ocean::Generation sky_image_changes;  // bumped when sky_image changes: the image is loaded again
     int microfacet = 0, tonemapper = 0;
+    bool dither = true;
     float roughness = 0.02f;
     glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, crest_colour{0.15f, 0.75f, 0.6f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
     float scatter_crest = 3.0f, scatter_view = 0.35f, scatter_lambert = 0.25f, scatter_bubbles = 0.3f;  // the notes' k1 .. k4

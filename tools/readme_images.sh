@@ -44,7 +44,7 @@ strip() {  # strip NAME [flags...]
   local name=$1
   shift
   "$build/step06_foam_sky/step06_foam_sky" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 \
-    --set show_bloom=false --screenshot "$scratch/$name.png" "$@" > /dev/null
+    --set show_bloom=false --set dither=false --screenshot "$scratch/$name.png" "$@" > /dev/null
 }
 strip isotropic --set anisotropy=1
 strip two --set anisotropy=2

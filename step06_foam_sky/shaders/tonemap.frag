@@ -6,6 +6,9 @@
 #ifndef TONEMAPPER
 #define TONEMAPPER 0  // 0: ACES (Hill's fit), 1: AgX (minimal), 2: none (clamp)
 #endif
+#ifndef DITHER
+#define DITHER 1  // 0: no dither (the debug views; pictures made to be measured, dither=false)
+#endif
 
 in vec2 v_uv;
 out vec4 out_colour;
@@ -69,5 +72,9 @@ void main() {
 #else
     vec3 srgb = linear_to_srgb_fast(c);
 #endif
+#if DITHER
     out_colour = vec4(dither(srgb), 1.0);
+#else
+    out_colour = vec4(srgb, 1.0);
+#endif
 }

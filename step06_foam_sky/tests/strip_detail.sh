@@ -4,7 +4,7 @@
 detail() {
   local name=$1
   shift
-  "$exe" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 --set show_bloom=false \
+  "$exe" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 --set show_bloom=false --set dither=false \
     --screenshot "$out/$name.png" "$@" > /dev/null || { echo "FAIL: the step did not run: $*" >&2; return 1; }
   "$check" detail "$out/$name.png" 0.3 0.6 | sed -n 's/.*detail across the view \([0-9.]*\).*/\1/p'
 }
