@@ -1,7 +1,8 @@
 #include "step06_foam_sky/post.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include "step06_foam_sky/bloom.hpp"
+
+#include <utility>
 
 namespace step06 {
 
@@ -24,13 +25,12 @@ void PostProcess::resize(glm::ivec2 size) {
     // frame (its 13 taps read the whole screen) and added only the tightest 2-pixel halo, which
     // the scene itself already shows. A tiny window has fewer levels: a texture cannot have more
     // than log2(side) + 1.
-    const glm::ivec2 quarter = glm::max(size / 4, glm::ivec2(1));
-    const int levels = std::min(kBloomLevels, 1 + int(std::floor(std::log2(double(std::max(quarter.x, quarter.y))))));
+    bloom_sizes_ = bloom_level_sizes(size, kBloomLevels);  // bloom.hpp
+    const int levels = int(bloom_sizes_.size());
     bloom_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(bloom_.id(), levels, GL_RGBA16F, quarter.x, quarter.y);
+    glTextureStorage2D(bloom_.id(), levels, GL_RGBA16F, bloom_sizes_[0].x, bloom_sizes_[0].y);
     bloom_views_.clear();
     bloom_targets_.clear();
-    bloom_sizes_.clear();
     for (int level = 0; level < levels; ++level) {
         GLuint view = 0;
         glGenTextures(1, &view);  // glTextureView needs a name that was never bound
@@ -42,7 +42,6 @@ void PostProcess::resize(glm::ivec2 size) {
         ocean::Framebuffer target = ocean::make_framebuffer();
         glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, bloom_.id(), level);
         bloom_targets_.push_back(std::move(target));
-        bloom_sizes_.push_back(glm::max(quarter / (1 << level), glm::ivec2(1)));
     }
 }
 

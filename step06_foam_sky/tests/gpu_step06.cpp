@@ -2,15 +2,17 @@
 // the CPU reference, at mip level 0 and at whole levels below it) and kept in world space when
 // the camera moves, the box mipmaps (against the 2 x 2 mean and glGenerateMipmap), tessellation
 // (primitive counts against the CPU level, culling behind the camera), the sky cubemap (the
-// sun's texel, an image sky, missing and corrupt files), and the tonemap pass.
+// sun's texel, an image sky, missing and corrupt files), the bloom chain and the tonemap pass.
 #include "common/frustum.hpp"
 #include "common/image.hpp"
+#include "step06_foam_sky/bloom.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/combined_levels.hpp"
 #include "step06_foam_sky/combined_surface.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/patch_grid.hpp"
+#include "step06_foam_sky/post.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/tessellation.hpp"
 #include "step06_foam_sky/texture_units.h"
@@ -21,6 +23,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -908,6 +911,57 @@ TEST_F(Step06Gpu, TonemapPassIsTheCpuCurveAndLeavesNoBands) {
     }
     std::printf("tonemap on 8 bits: a 3-step gradient's column means within %.3f steps of the true values\n", worst_mean);
     EXPECT_LT(worst_mean, 0.05) << "bands: the dither does not keep a gradient's mean between the steps";
+}
+
+// PostProcess::bloom, the passes themselves (bloom_down.frag first and down, bloom_up.frag), against
+// bloom.hpp in double: a 64 x 48 scene of dim water (below the threshold) with bright glints and
+// a bright patch, through five levels (16 x 12 down to 1 x 1) and back up; level 0, which the
+// tonemapper adds, texel by texel. The scene is given as half floats (its RGBA16F target), so the
+// CPU starts from the same values; every level is stored in RGBA16F too (about 5e-4 relative a
+// pass), and a GPU may quantise its filter weights to 8 bits: the tolerance is 1 % of the
+// brightest texel.
+TEST_F(Step06Gpu, BloomChainIsTheCpuChain) {
+    const glm::ivec2 size(64, 48);
+    std::mt19937 random(43);
+    std::uniform_real_distribution<float> dim(0.0f, 1.5f), bright(20.0f, 300.0f);
+    std::vector<glm::vec4> texels;
+    step06::BloomImage scene(size.x, size.y);
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            glm::vec3 c(dim(random), dim(random), dim(random));
+            if (random() % 23 == 0) c = glm::vec3(bright(random), bright(random), bright(random));  // glints
+            if (x >= 40 && x < 48 && y >= 8 && y < 14) c = glm::vec3(6.0f, 4.0f, 2.0f);          // a bright patch
+            for (int i = 0; i < 3; ++i) c[i] = glm::unpackHalf1x16(glm::packHalf1x16(c[i]));
+            texels.emplace_back(c, 1.0f);
+            scene.at(x, y) = glm::dvec3(c);
+        }
+    step06::PostProcess post;
+    post.resize(size);
+    glTextureSubImage2D(post.scene_texture(), 0, 0, 0, size.x, size.y, GL_RGBA, GL_FLOAT, texels.data());
+    const std::string dir = "step06_foam_sky/shaders/";
+    ocean::ShaderProgram* first = cache("bloom_first", {"common/shaders/fullscreen.vert", dir + "bloom_down.frag"}, {"FIRST_LEVEL 1"});
+    ocean::ShaderProgram* down = cache("bloom_down", {"common/shaders/fullscreen.vert", dir + "bloom_down.frag"}, {});
+    ocean::ShaderProgram* up = cache("bloom_up", {"common/shaders/fullscreen.vert", dir + "bloom_up.frag"}, {});
+    ASSERT_TRUE(first != nullptr && down != nullptr && up != nullptr);
+    const float threshold = 2.5f;
+    ocean::VertexArray vao = ocean::make_vertex_array();
+    post.bloom(*first, *down, *up, threshold, vao.id());
+    const std::vector<step06::BloomImage> cpu = step06::bloom_chain(scene, threshold, step06::kBloomLevels);
+    const step06::BloomImage& level0 = cpu.front();
+    ASSERT_EQ(cpu.size(), 5u);
+    std::vector<glm::vec4> gpu(std::size_t(level0.width) * std::size_t(level0.height));
+    glGetTextureImage(post.bloom_texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(gpu.size() * sizeof(glm::vec4)), gpu.data());
+    double worst = 0, brightest = 0;
+    for (int y = 0; y < level0.height; ++y)
+        for (int x = 0; x < level0.width; ++x)
+            for (int channel = 0; channel < 3; ++channel) {
+                const double expected = level0.at(x, y)[channel];
+                brightest = std::max(brightest, expected);
+                worst = std::max(worst, std::abs(double(gpu[std::size_t(y * level0.width + x)][channel]) - expected));
+            }
+    std::printf("bloom: worst |GPU - CPU| %.3g of the brightest %.3g (%.3f %%)\n", worst, brightest, 100 * worst / brightest);
+    ASSERT_GT(brightest, 1.0) << "the glints must bloom for the comparison to mean anything";
+    EXPECT_LT(worst, 0.01 * brightest);
 }
 
 }  // namespace

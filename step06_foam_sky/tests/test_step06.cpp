@@ -1,8 +1,9 @@
 // step06's CPU math: cascade bands, foam's frame-rate independence, tessellation levels, the
-// tonemapper.
+// bloom and the tonemapper.
 #include "common/params.hpp"
 #include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
+#include "step06_foam_sky/bloom.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/combined_levels.hpp"
 #include "step06_foam_sky/combined_surface.hpp"
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <vector>
 #include <map>
 
 namespace {
@@ -421,6 +423,107 @@ TEST(Step06Fog, OpticalDepthIsTheDensitySummedAlongTheRay) {
     const double far = step06::fog_amount(eye, {1e6, 0, 0}, density, falloff);
     EXPECT_GT(far, 0.999);
     EXPECT_LE(far, 1.0);
+}
+
+// The bloom's threshold: nothing at or below threshold - knee, brightness - threshold from
+// threshold + knee, and between them a parabola meeting both with the same slope (0 and 1), so a
+// brightening light's glow grows without a jump or a kink; the colour is scaled, not shifted
+// (its hue stays).
+TEST(Step06Bloom, TheKneeMeetsBothSidesWithTheSameSlope) {
+    const double threshold = 2.5, knee = 0.5 * threshold, h = 1e-6;
+    const auto glow = [&](double b) { return step06::bloom_above_threshold(glm::dvec3(b), threshold).r; };
+    EXPECT_EQ(glow(threshold - knee), 0.0);
+    EXPECT_EQ(glow(0.3), 0.0);
+    EXPECT_NEAR(glow(threshold + knee), knee, 1e-5);
+    EXPECT_NEAR(glow(10.0), 10.0 - threshold, 1e-9);
+    for (const double edge : {threshold - knee, threshold + knee}) {
+        const double left = (glow(edge) - glow(edge - h)) / h, right = (glow(edge + h) - glow(edge)) / h;
+        EXPECT_NEAR(left, right, 1e-3) << "a kink at " << edge;
+    }
+    double previous = 0;
+    for (double b = 0; b < 20; b += 0.01) {
+        EXPECT_GE(glow(b), previous) << b;
+        previous = glow(b);
+    }
+    const glm::dvec3 colour(6.0, 3.0, 1.5), out = step06::bloom_above_threshold(colour, threshold);
+    EXPECT_NEAR(out.g / out.r, 0.5, 1e-12);
+    EXPECT_NEAR(out.b / out.r, 0.25, 1e-12);
+}
+
+// Every filter of the chain has weights summing to one, so each level holds the same light as the
+// one above it (its texels' sum times their area in screen pixels), and a glow is as symmetric as
+// what makes it: a 2 x 2 glint at the centre of a 1024 x 1024 screen, on every level. After the
+// way up, level 0 holds all five levels' light. (On a small screen the smallest levels' glow
+// reaches the edges, where clamping the taps does not keep the light: 4.95 times at 256 x 256.) A
+// tap offset with a wrong sign or a weight off would show in one or the other.
+TEST(Step06Bloom, EveryLevelKeepsTheLightAndAGlowIsSymmetric) {
+    step06::BloomImage scene(1024, 1024);
+    for (int y = 511; y <= 512; ++y)
+        for (int x = 511; x <= 512; ++x) scene.at(x, y) = glm::dvec3(200, 100, 50);
+    const std::vector<glm::ivec2> sizes = step06::bloom_level_sizes({1024, 1024}, 5);
+    ASSERT_EQ(sizes.size(), 5u);
+    std::vector<step06::BloomImage> levels{step06::bloom_first_level(scene, sizes[0], 2.5)};
+    for (std::size_t k = 1; k < sizes.size(); ++k) levels.push_back(step06::bloom_down(levels[k - 1], sizes[k]));
+    const auto light = [](const step06::BloomImage& level) {
+        glm::dvec3 sum(0.0);
+        for (const auto& t : level.texels) sum += t;
+        return sum * (1024.0 / level.width) * (1024.0 / level.height);
+    };
+    const glm::dvec3 first = light(levels[0]);
+    EXPECT_GT(first.r, 100.0);
+    for (std::size_t k = 1; k < levels.size(); ++k) EXPECT_NEAR(light(levels[k]).r / first.r, 1.0, 1e-12) << "level " << k;
+    const std::vector<step06::BloomImage> chain = step06::bloom_chain(scene, 2.5, 5);
+    for (const auto& level : chain) {
+        double worst = 0, brightest = 0;
+        for (int y = 0; y < level.height; ++y)
+            for (int x = 0; x < level.width; ++x) {
+                const double v = level.at(x, y).r;
+                brightest = std::max(brightest, v);
+                worst = std::max({worst, std::abs(v - level.at(level.width - 1 - x, y).r), std::abs(v - level.at(x, level.height - 1 - y).r)});
+            }
+        EXPECT_LT(worst, 1e-12 * brightest) << level.width << " x " << level.height;
+    }
+    EXPECT_NEAR(light(chain[0]).r / first.r, 5.0, 1e-9);
+}
+
+// What the first level's 6 x 6 tent is for (bloom_down.frag): a one-pixel glint moving across the
+// screen keeps its glow under it, the glow's centre within 3/4 of a pixel of the glint's. Its
+// bilinear taps average pixel pairs, so the glow moves in steps of 2 pixels; the 4 x 4 box that a
+// plain downsample would take moves it in steps of 4, up to 1.6 pixels off, and fails. (The
+// threshold comes after the filter, so the glow's strength changes with where the glint falls, by
+// a quarter from step to step: README, "How the bloom is made".)
+TEST(Step06Bloom, AMovingGlintsGlowStaysUnderIt) {
+    const std::vector<glm::ivec2> sizes = step06::bloom_level_sizes({256, 256}, 5);
+    const auto glow_centre = [&](int x, bool box) {
+        step06::BloomImage scene(256, 256);
+        scene.at(x, 124) = glm::dvec3(400.0);
+        std::vector<step06::BloomImage> levels;
+        if (box) {
+            levels.push_back(step06::bloom_pass(sizes[0], [&](glm::dvec2 uv) {
+                const auto tap = [&](double dx, double dy) { return step06::sample_bilinear(scene, uv + glm::dvec2(dx, dy) / 256.0); };
+                return step06::bloom_above_threshold(0.25 * (tap(-1, -1) + tap(1, -1) + tap(-1, 1) + tap(1, 1)), 2.5);
+            }));
+        } else {
+            levels.push_back(step06::bloom_first_level(scene, sizes[0], 2.5));
+        }
+        for (std::size_t k = 1; k < sizes.size(); ++k) levels.push_back(step06::bloom_down(levels[k - 1], sizes[k]));
+        for (std::size_t k = levels.size() - 1; k > 0; --k) step06::bloom_up_add(levels[k], levels[k - 1]);
+        double sum = 0, moment = 0;
+        for (int ty = 0; ty < levels[0].height; ++ty)
+            for (int tx = 0; tx < levels[0].width; ++tx) {
+                sum += levels[0].at(tx, ty).r;
+                moment += levels[0].at(tx, ty).r * 4.0 * (tx + 0.5);  // a texel is 4 screen pixels
+            }
+        return moment / sum;
+    };
+    double worst_tent = 0, worst_box = 0;
+    for (int x = 120; x <= 128; ++x) {
+        worst_tent = std::max(worst_tent, std::abs(glow_centre(x, false) - (x + 0.5)));
+        worst_box = std::max(worst_box, std::abs(glow_centre(x, true) - (x + 0.5)));
+    }
+    std::printf("a moving glint's glow: its centre within %.2f pixels (a 4 x 4 box: %.2f)\n", worst_tent, worst_box);
+    EXPECT_LT(worst_tent, 0.75);
+    EXPECT_GT(worst_box, 1.0) << "a box first level should fail this; a test it passes cannot see the steps";
 }
 
 // The sRGB curve at the standard's own numbers (IEC 61966-2-1): its ends, the two pieces meeting at
