@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace step06 {
@@ -104,13 +105,18 @@ inline void bloom_up_add(const BloomImage& smaller, BloomImage& larger) {
     for (std::size_t i = 0; i < larger.texels.size(); ++i) larger.texels[i] += tent.texels[i];
 }
 
-// Every level, down then up: levels[0] is what the tonemapper adds to the scene.
-inline std::vector<BloomImage> bloom_chain(const BloomImage& scene, double threshold, int max_levels) {
-    const std::vector<glm::ivec2> sizes = bloom_level_sizes({scene.width, scene.height}, max_levels);
-    std::vector<BloomImage> levels{bloom_first_level(scene, sizes[0], threshold)};
+// The chain below a given first level (of sizes[0]): down to each of `sizes`, then back up.
+inline std::vector<BloomImage> bloom_chain_below(BloomImage first, const std::vector<glm::ivec2>& sizes) {
+    std::vector<BloomImage> levels{std::move(first)};
     for (std::size_t k = 1; k < sizes.size(); ++k) levels.push_back(bloom_down(levels[k - 1], sizes[k]));
     for (std::size_t k = levels.size() - 1; k > 0; --k) bloom_up_add(levels[k], levels[k - 1]);
     return levels;
+}
+
+// Every level, down then up: levels[0] is what the tonemapper adds to the scene.
+inline std::vector<BloomImage> bloom_chain(const BloomImage& scene, double threshold, int max_levels) {
+    const std::vector<glm::ivec2> sizes = bloom_level_sizes({scene.width, scene.height}, max_levels);
+    return bloom_chain_below(bloom_first_level(scene, sizes[0], threshold), sizes);
 }
 
 }  // namespace step06

@@ -497,17 +497,16 @@ TEST(Step06Bloom, AMovingGlintsGlowStaysUnderIt) {
     const auto glow_centre = [&](int x, bool box) {
         step06::BloomImage scene(256, 256);
         scene.at(x, 124) = glm::dvec3(400.0);
-        std::vector<step06::BloomImage> levels;
-        if (box) {
-            levels.push_back(step06::bloom_pass(sizes[0], [&](glm::dvec2 uv) {
-                const auto tap = [&](double dx, double dy) { return step06::sample_bilinear(scene, uv + glm::dvec2(dx, dy) / 256.0); };
-                return step06::bloom_above_threshold(0.25 * (tap(-1, -1) + tap(1, -1) + tap(-1, 1) + tap(1, 1)), 2.5);
-            }));
-        } else {
-            levels.push_back(step06::bloom_first_level(scene, sizes[0], 2.5));
-        }
-        for (std::size_t k = 1; k < sizes.size(); ++k) levels.push_back(step06::bloom_down(levels[k - 1], sizes[k]));
-        for (std::size_t k = levels.size() - 1; k > 0; --k) step06::bloom_up_add(levels[k], levels[k - 1]);
+        const step06::BloomImage first =
+            box ? step06::bloom_pass(sizes[0],
+                                     [&](glm::dvec2 uv) {
+                                         const auto tap = [&](double dx, double dy) {
+                                             return step06::sample_bilinear(scene, uv + glm::dvec2(dx, dy) / 256.0);
+                                         };
+                                         return step06::bloom_above_threshold(0.25 * (tap(-1, -1) + tap(1, -1) + tap(-1, 1) + tap(1, 1)), 2.5);
+                                     })
+                : step06::bloom_first_level(scene, sizes[0], 2.5);
+        const std::vector<step06::BloomImage> levels = step06::bloom_chain_below(first, sizes);
         double sum = 0, moment = 0;
         for (int ty = 0; ty < levels[0].height; ++ty)
             for (int tx = 0; tx < levels[0].width; ++tx) {
