@@ -31,14 +31,19 @@ void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture) {
     ocean::ShaderProgram* p = programs("box_mip.comp", {"step05_fft/shaders/box_mip.comp"}, defines);
     if (p == nullptr) throw ocean::Error("box_mip.comp does not build");
     glUseProgram(p->id());
-    for (int level = 1; level < levels; ++level) {
-        const int level_size = std::max(1, size >> level);
+    // Four levels a dispatch: 256 x 256 takes two (levels 1-4, 5-8), 512 x 512 three.
+    for (int level = 1; level < levels; level += 4) {
+        const int count = std::min(4, levels - level), level_size = std::max(1, size >> level);
         p->set("u_size", level_size);
+        p->set("u_count", count);
         glBindImageTexture(0, texture, level - 1, layered, 0, GL_READ_ONLY, GLenum(format));
-        glBindImageTexture(1, texture, level, layered, 0, GL_WRITE_ONLY, GLenum(format));
-        const GLuint groups = GLuint((level_size + 7) / 8);
+        // Units past u_count are never written; they are bound to a level that exists all the same.
+        for (int k = 0; k < 4; ++k)
+            glBindImageTexture(GLuint(1 + k), texture, level + std::min(k, count - 1), layered, 0, GL_WRITE_ONLY,
+                               GLenum(format));
+        const GLuint groups = GLuint((level_size + 15) / 16);
         glDispatchCompute(groups, groups, GLuint(layers));
-        // The next level reads this one through its image.
+        // The next dispatch reads this one's last level through its image.
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);

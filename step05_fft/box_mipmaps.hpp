@@ -3,7 +3,9 @@
 // texture. Drivers make glGenerateMipmap a draw or a blit per level and per layer: on llvmpipe it
 // took 3 of step06's sky pass's 3.5 ms (the cube's 6 faces x 7 levels) and about 2 ms of its foam
 // pass, and on an NVIDIA H100 or H200 0.67 of the 0.73 ms the GPU simulation took (its two maps' 4
-// layers x 8 levels); a dispatch per level does all the layers at once (docs/performance.md).
+// layers x 8 levels). One dispatch makes up to four levels of every layer (a workgroup carries its
+// tile down in shared memory), since on a GPU a dispatch and its barrier cost more than the
+// averaging: two dispatches for 256 x 256, where a dispatch a level took eight (docs/performance.md).
 #pragma once
 
 #include "common/shader.hpp"
