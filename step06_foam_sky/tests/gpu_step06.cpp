@@ -19,6 +19,7 @@
 #include "step06_foam_sky/tonemap.hpp"
 #include "tests/gpu/full_screen_draw.hpp"
 #include "tests/gpu/gl_test_context.hpp"
+#include "tests/gpu/one_texel_target.hpp"
 #include "tests/gpu/program_cache.hpp"
 
 #include <glm/geometric.hpp>
@@ -574,6 +575,7 @@ struct Tessellated : Step06Gpu {
         program->set("u_foam", 2);  // samplers of different types may not share a unit
         program->set("u_sky", 3);
         ocean::Query query = ocean::make_query(GL_PRIMITIVES_GENERATED);
+        const ocean_test::OneTexelTarget framebuffer;  // a draw needs a framebuffer, rasterised or not
         glUseProgram(program->id());
         glEnable(GL_RASTERIZER_DISCARD);
         glBeginQuery(GL_PRIMITIVES_GENERATED, query.id());

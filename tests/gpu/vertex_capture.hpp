@@ -5,6 +5,7 @@
 
 #include "common/grid.hpp"
 #include "common/shader.hpp"
+#include "tests/gpu/one_texel_target.hpp"
 
 #include <vector>
 
@@ -15,6 +16,7 @@ inline std::vector<float> capture_vertices(const ocean::ShaderProgram& program, 
     const std::size_t count = std::size_t(grid.vertex_count());
     ocean::Buffer captured = ocean::make_buffer();
     glNamedBufferStorage(captured.id(), GLsizeiptr(count * floats_per_vertex * sizeof(float)), nullptr, 0);
+    const OneTexelTarget target;  // a draw needs a framebuffer, rasterised or not
     glUseProgram(program.id());
     glEnable(GL_RASTERIZER_DISCARD);
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captured.id());
