@@ -95,7 +95,10 @@ void OceanSimulation::evolve(double time) {
 }
 
 void OceanSimulation::transform_fft(GLuint source, GLuint target, int layers) {
-    auto& p = program("fft.comp", {"FFT_SIZE " + std::to_string(n_)});
+    // fft.comp's LINES: four lines a workgroup, fewer where their 2 x 4 x N values would not fit
+    // GL's minimum of 32 KB of shared memory (N = 1024 and up).
+    const int lines = std::clamp(2048 / n_, 1, 4);
+    auto& p = program("fft.comp", {"FFT_SIZE " + std::to_string(n_), "LINES " + std::to_string(lines)});
     set_common_uniforms(p);
     glUseProgram(p.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, twiddles_.id());
@@ -103,7 +106,7 @@ void OceanSimulation::transform_fft(GLuint source, GLuint target, int layers) {
         p.set("u_axis", axis);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, axis == 0 ? source : target);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, target);
-        glDispatchCompute(GLuint(n_), GLuint(layers), 1);
+        glDispatchCompute(GLuint(n_ / lines), GLuint(layers), 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     }
 }

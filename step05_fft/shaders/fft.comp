@@ -12,11 +12,18 @@
 // e^{+2 pi i m / N} computed once in double on the CPU (OceanSimulation::twiddles_), not from sin and
 // cos per butterfly. The result is sum_m X[m] e^{+2 pi i m n / N}, unnormalised, like
 // FFTW_BACKWARD.
+// A workgroup holds LINES neighbouring lines, one per x of its threads (y is t). Along x a line's
+// values are N apart in memory, so a workgroup of one column read 8 bytes from every 32-byte
+// sector it touched; with neighbouring columns side by side in a warp, their reads of one row
+// fill the sector (docs/performance.md: the column pass on a GPU).
 #ifndef FFT_SIZE
 #define FFT_SIZE 256  // N: a compile-time variant per resolution (it sets the workgroup size)
 #endif
+#ifndef LINES
+#define LINES 4  // lines a workgroup: 2 LINES N values of 8 bytes must fit GL's 32 KB of shared memory
+#endif
 const int QUARTER = FFT_SIZE / 4;
-layout(local_size_x = QUARTER) in;
+layout(local_size_x = LINES, local_size_y = QUARTER) in;
 #include "ocean_layout.glsl"
 
 layout(std430, binding = 0) buffer Source { vec2 source[]; };
@@ -25,7 +32,10 @@ layout(std430, binding = 2) readonly buffer Twiddles { vec2 twiddle[]; };  // e^
 
 uniform int u_axis;  // 0: along x (rows), 1: along z (columns)
 
-shared vec2 lines[2][FFT_SIZE];
+shared vec2 workgroup_lines[LINES][2][FFT_SIZE];
+int slot;  // this thread's line in the workgroup
+// lines[0] and lines[1]: this thread's line, in the two buffers the stages ping-pong between.
+#define lines workgroup_lines[slot]
 
 int element(int layer, int line, int e) {
     int base = layer * FFT_SIZE * FFT_SIZE;
@@ -51,8 +61,9 @@ void radix4_stage(int t, int p, int from) {
 }
 
 void main() {
-    int line = int(gl_WorkGroupID.x), layer = int(gl_WorkGroupID.y);  // layer = cascade * 4 + field
-    int t = int(gl_LocalInvocationID.x);
+    slot = int(gl_LocalInvocationID.x);
+    int line = int(gl_WorkGroupID.x) * LINES + slot, layer = int(gl_WorkGroupID.y);  // layer = cascade * 4 + field
+    int t = int(gl_LocalInvocationID.y);
     for (int j = 0; j < 4; ++j) lines[0][t + j * QUARTER] = source[element(layer, line, t + j * QUARTER)];
     barrier();
 
