@@ -77,8 +77,9 @@ TEST_F(Step07Gpu, AQueryReadBackAFrameLateIsOffByOneFramesMotion) {
 
 TEST_F(Step07Gpu, BatchQueriesOnTheGpuAnswerAsTheCpuDoes) {
     // The same maps (FFTW's, uploaded) queried on both sides, 3000 points around an origin 12 km
-    // out: the GPU's Newton steps in float against sea_query.cpp in double, within 2 mm (GL's
-    // bilinear weights and float texture coordinates).
+    // out: the GPU's Newton steps in float against sea_query.cpp in double, within 1 mm (float
+    // texture coordinates and weights: height_query.comp weighs the texels itself, since an H100's
+    // filter, with 8-bit weights, was 3.1 mm off and left 165 queries unsettled).
     make_sea(64, 14);
     step05::OceanSimulation& ocean = *simulation;
     step06::CascadeView view;
@@ -113,7 +114,7 @@ TEST_F(Step07Gpu, BatchQueriesOnTheGpuAnswerAsTheCpuDoes) {
     }
     std::cout << "GPU batch: worst height " << worst << " m, normal " << worst_normal << ", " << converged
               << " of 3000 within 1 mm\n";
-    EXPECT_LT(worst, 2e-3) << "metres";
+    EXPECT_LT(worst, 1e-3) << "metres";
     EXPECT_LT(worst_normal, 5e-3);
     EXPECT_GT(converged, 2950) << "of 3000 within 1 mm after 4 steps";
 }
