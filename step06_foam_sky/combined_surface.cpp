@@ -62,8 +62,7 @@ void CombinedSurface::update(const step05::OceanSimulation& ocean, const Cascade
     const GLuint groups = GLuint((n_ + 7) / 8);
     glDispatchCompute(groups, groups, GLuint(levels_));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    step05::make_box_mipmaps(programs_, displacement_.id());
-    step05::make_box_mipmaps(programs_, slopes_.id());
+    step05::make_box_mipmaps(programs_, displacement_.id(), slopes_.id());
 }
 
 void CombinedSurface::bind(const ocean::ShaderProgram& program) const {
