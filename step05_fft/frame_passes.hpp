@@ -21,9 +21,9 @@ struct FramePass {
 constexpr std::array<FramePass, 6> kFramePasses{{
     {"evolve", "evolve.comp (N/8 x N/8 x cascades groups of 8 x 8)", "h0 (SSBO, once);omega (SSBO, double, once)",
      "spectra (SSBO)"},
-    {"fft", "fft.comp, rows (N x 4 cascades groups of N/4)", "spectra (SSBO);twiddles (SSBO, once)", "fields (SSBO)"},
+    {"fft", "fft.comp, rows (N/4 x 4 cascades groups of 4 lines x N/4)", "spectra (SSBO);twiddles (SSBO, once)", "fields (SSBO)"},
     {"fft", "fft.comp, columns, in place", "fields (SSBO);twiddles (SSBO, once)", "fields (SSBO)"},
-    {"assemble", "assemble.comp, then glGenerateTextureMipmap", "fields (SSBO)",
+    {"assemble", "assemble.comp, then box_mip.comp (both maps, 3 levels a dispatch)", "fields (SSBO)",
      "displacement (RGBA32F array);slopes (RGBA32F array)"},
     {"ocean", "ocean.vert (grid in chunks), ocean.frag", "displacement (RGBA32F array);slopes (RGBA32F array)",
      "screen (sRGB)"},
