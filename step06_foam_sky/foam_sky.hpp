@@ -10,6 +10,7 @@
 #pragma once
 
 #include "common/app.hpp"
+#include "common/faster_of_two.hpp"
 #include "common/frustum.hpp"
 #include "common/text.hpp"
 #include "step05_fft/export.hpp"
@@ -117,6 +118,11 @@ protected:
                   "0: off; n: the slopes only as fine as the cascades combined around the camera into "
                   "levels of n x n texels could show (Crest's design, measured; README)")
             .in_group("geometry");
+        p.add_choice("shading", &shading_, {"auto", "fragment", "compute"},
+                     "what runs the shading pass: a fragment shader over the screen, or a compute shader, a "
+                     "thread a pixel (faster where few of a GPU's units can run fragment shaders; README); auto "
+                     "times both on the first frames and keeps the compute shader if twice as fast")
+            .in_group("geometry");
         p.add_int("bench_shading_repeats", &bench_shading_repeats_, 0, 100,
                   "--bench: the shading pass drawn again this many times on each timed frame, each between "
                   "two glFinish, and their median printed: the shading alone, quiet enough to measure a "
@@ -139,7 +145,7 @@ protected:
             BenchFigures figures = times.figures();
             if (!shading_alone_ms_.empty()) {
                 const double median = ocean::median(shading_alone_ms_);
-                std::cout << "bench: the shading pass alone (ocean_shade.frag, drawn again "
+                std::cout << "bench: the shading pass alone (ocean_shade.frag or .comp, drawn again "
                           << shading_alone_ms_.size() << " times, wall ms around glFinish): median " << median
                           << ", min "
                           << *std::min_element(shading_alone_ms_.begin(), shading_alone_ms_.end()) << "\n";
@@ -148,8 +154,8 @@ protected:
             return figures;
         });
         offer_warm_up([this] {
-            return kBackends[std::size_t(backend_)] == step05::Backend::Auto &&
-                   (!gpu_ || gpu_->auto_deciding());
+            return (kBackends[std::size_t(backend_)] == step05::Backend::Auto && (!gpu_ || gpu_->auto_deciding())) ||
+                   (shading_ == kShadingAuto && shading_choice_.deciding());
         });
         // The rendered surface (all cascades) and the foam, on one grid around the camera.
         offer_export([this](const std::string& dir) {
@@ -312,7 +318,7 @@ protected:
                 if (view_ == kViewTessellationLevel) draw_mesh("ocean_levels", {"LEVEL_VIEW 1"}, view_projection);
                 else draw_mesh("ocean", {}, view_projection);
                 post_.bind_scene();
-                shade_sea();
+                shade_sea_as_chosen();
             }
         }
         if (timers().enabled() && !wireframe_) time_shading_alone();
@@ -390,15 +396,43 @@ protected:
     glm::dvec3 world_origin() const { return {cascade_view_.origin.x, 0.0, cascade_view_.origin.y}; }
     glm::vec3 eye_from_origin() { return glm::vec3(camera().eye_world() - world_origin()); }
 
-    // ocean_shade.frag over the whole screen, run only where the mesh wrote depth.
-    void shade_sea() {
+    // shading=auto: the fragment and the compute shader by turns on the first frames, each timed
+    // alone, then the compute shader if it is at least twice as fast (printed once: on llvmpipe
+    // the fragment shader, 1.4 times faster; on an H100 the compute shader, 20 times). The two
+    // pictures differ by the texture levels the quads' differences give (ocean_shade.comp): RMSE
+    // 0.5 of 255, so the margin keeps a machine's noise from switching between them.
+    void shade_sea_as_chosen() {
+        shading_in_compute_ =
+            shading_ == kShadingCompute || (shading_ == kShadingAuto && shading_choice_.next() == 1);
+        if (shading_ != kShadingAuto || !shading_choice_.deciding()) {
+            shade_sea(shading_in_compute_);
+            return;
+        }
+        const int trial = shading_choice_.next();
+        glFinish();
+        const auto start = std::chrono::steady_clock::now();
+        shade_sea(shading_in_compute_);
+        glFinish();
+        shading_choice_.record(trial, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        if (shading_choice_.deciding()) return;
+        char text[160];
+        std::snprintf(text, sizeof text, "fragment shader %.1f ms, compute shader %.1f ms a frame (median of 3): %s",
+                      shading_choice_.median_ms(0), shading_choice_.median_ms(1),
+                      shading_choice_.chosen() == 1 ? "compute" : "fragment");
+        std::cout << "shading auto: " << text << "\n";
+    }
+
+    // ocean_shade.glsl at every pixel where the mesh wrote depth: a full-screen triangle
+    // (ocean_shade.frag), or a thread a pixel (ocean_shade.comp).
+    void shade_sea(bool compute) {
         const int debug = view_ >= kViewNormals && view_ <= kViewTessellationLevel ? view_ : 0;
-        ocean::ShaderProgram* shade =
-            program("ocean_shade", {"fullscreen.vert", "ocean_shade.frag"},
-                    {"MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug),
-                     "ANISOTROPIC_TAPS " + std::to_string(anisotropy_),
-                     "COMBINED_LEVEL_TEXELS " + std::to_string(combined_texels_), surface_define(),
-                     "STREAKS " + std::to_string(int(foam_->streaks()))});
+        const std::vector<std::string> defines{
+            "MICROFACET " + std::to_string(look_.microfacet), "DEBUG_VIEW " + std::to_string(debug),
+            "ANISOTROPIC_TAPS " + std::to_string(anisotropy_),
+            "COMBINED_LEVEL_TEXELS " + std::to_string(combined_texels_), surface_define(),
+            "STREAKS " + std::to_string(int(foam_->streaks()))};
+        ocean::ShaderProgram* shade = compute ? program("ocean_shade_compute", {"ocean_shade.comp"}, defines)
+                                              : program("ocean_shade", {"fullscreen.vert", "ocean_shade.frag"}, defines);
         if (shade == nullptr) return;
         bind_cascades(*shade);
         bind_surface(*shade);
@@ -411,7 +445,17 @@ protected:
         glBindTextureUnit(UNIT_GBUFFER_WORLD, gbuffer_.world_texture());
         glBindTextureUnit(UNIT_GBUFFER_REST, gbuffer_.rest_texture());
         glUseProgram(shade->id());
-        draw_at_far_plane(GL_GREATER);
+        if (!compute) {
+            draw_at_far_plane(GL_GREATER);
+            return;
+        }
+        const glm::ivec2 size = framebuffer_size();
+        shade->set("u_size", size);
+        glBindTextureUnit(UNIT_GBUFFER_DEPTH, post_.depth_texture());
+        glBindImageTexture(0, post_.scene_texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
+        // What follows draws into the scene (the background, step07's bodies) and reads it (bloom).
+        glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
 
     // bench_shading_repeats: the shading pass again on the same G-buffer (it writes the same pixels
@@ -422,7 +466,7 @@ protected:
         for (int i = 0; i < bench_shading_repeats_; ++i) {
             glFinish();
             const auto start = std::chrono::steady_clock::now();
-            shade_sea();
+            shade_sea(shading_in_compute_);  // what this frame drew
             glFinish();
             shading_alone_ms_.push_back(
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
@@ -521,6 +565,12 @@ protected:
     // The cascades by default; when combined, levels of 512 texels holding the three longest cascades,
     // the finest read per pixel: what keeps the look (README, "The cascades combined around the camera").
     int surface_ = 0, combined_size_ = 1, combined_cascades_ = 3;
+    enum Shading : int { kShadingAuto, kShadingFragment, kShadingCompute };
+    int shading_ = kShadingAuto;
+    // shading=auto: 0 the fragment shader, 1 the compute shader, kept only if twice as fast (the
+    // pictures differ by RMSE 0.5: a machine should always draw the same one).
+    ocean::FasterOfTwo shading_choice_{3, 2.0};
+    bool shading_in_compute_ = false;    // what shaded this frame's sea
     int bench_shading_repeats_ = 0;
     std::vector<double> shading_alone_ms_;  // time_shading_alone's draws, for --bench
     int combined_texels_ = 0;  // 0: off (the README says why the cascades are not combined)

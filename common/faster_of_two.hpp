@@ -1,0 +1,49 @@
+// Two ways of doing the same work, timed by turns on the first frames, and the faster kept: for a
+// choice that depends on the machine more than on the code (step06's shading as a fragment or a
+// compute shader: on llvmpipe the fragment shader is 1.4 times faster, on an H100 the compute
+// shader 20 times). The caller times what it ran (wall ms around glFinish, say) and records it.
+// Where the two draw slightly different pictures, `margin` keeps the first unless the second is
+// that many times faster: a machine's noise (another process, a loaded CI runner) then cannot
+// turn the choice, and the same machine always draws the same picture.
+#pragma once
+
+#include "common/gpu_timer.hpp"  // median
+
+#include <string>
+#include <vector>
+
+namespace ocean {
+
+class FasterOfTwo {
+public:
+    explicit FasterOfTwo(int trials_each = 3, double margin = 1.0) : trials_each_(trials_each), margin_(margin) {}
+
+    bool deciding() const { return !decided_; }
+    // Which to run now: the one tried fewer times (0 first), then the one chosen.
+    int next() const {
+        if (decided_) return chosen_;
+        return ms_[1].size() < ms_[0].size() ? 1 : 0;
+    }
+    // What `which` took; after `trials_each` of both, the lower median wins, the second only if
+    // `margin` times lower (0 on a tie).
+    void record(int which, double ms) {
+        if (decided_) return;
+        ms_[which].push_back(ms);
+        if (int(ms_[0].size()) < trials_each_ || int(ms_[1].size()) < trials_each_) return;
+        chosen_ = median(ms_[1]) * margin_ < median(ms_[0]) ? 1 : 0;
+        decided_ = true;
+    }
+    int chosen() const { return chosen_; }
+    double median_ms(int which) const { return ms_[which].empty() ? 0.0 : median(ms_[which]); }
+    // Forget the trials (the work changed: another size, another variant).
+    void restart() { *this = FasterOfTwo(trials_each_, margin_); }
+
+private:
+    int trials_each_;
+    double margin_;
+    std::vector<double> ms_[2];
+    bool decided_ = false;
+    int chosen_ = 0;
+};
+
+}  // namespace ocean
