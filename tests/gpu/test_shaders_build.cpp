@@ -37,10 +37,13 @@ TEST_F(ShaderBuild, TheListHasEveryStepsShaders) {
 }
 
 TEST_F(ShaderBuild, EveryShaderCompilesAndEveryProgramLinks) {
-    std::map<std::string, std::vector<std::string>> programs;  // folder/stem -> stage files
+    // folder/stem -> stage files; a compute shader is a program of its own (step06's
+    // ocean_shade.comp beside ocean_shade.frag: one shading, two programs).
+    std::map<std::string, std::vector<std::string>> programs;
     for (const auto& file : repository_shaders()) {
         const fs::path p(file);
-        programs[(p.parent_path() / p.stem()).string()].push_back(file);
+        const bool compute = ocean::shader_stage_for(file) == GL_COMPUTE_SHADER;
+        programs[(p.parent_path() / p.stem()).string() + (compute ? ".comp" : "")].push_back(file);
     }
     const std::string fullscreen = std::string(OCEAN_SOURCE_DIR) + "/common/shaders/fullscreen.vert";
     int built = 0;
