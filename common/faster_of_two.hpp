@@ -9,7 +9,6 @@
 
 #include "common/gpu_timer.hpp"  // median
 
-#include <string>
 #include <vector>
 
 namespace ocean {
@@ -35,8 +34,6 @@ public:
     }
     int chosen() const { return chosen_; }
     double median_ms(int which) const { return ms_[which].empty() ? 0.0 : median(ms_[which]); }
-    // Forget the trials (the work changed: another size, another variant).
-    void restart() { *this = FasterOfTwo(trials_each_, margin_); }
 
 private:
     int trials_each_;

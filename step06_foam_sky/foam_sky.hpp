@@ -408,7 +408,7 @@ protected:
             shade_sea(shading_in_compute_);
             return;
         }
-        const int trial = shading_choice_.next();
+        const int trial = shading_in_compute_ ? 1 : 0;
         glFinish();
         const auto start = std::chrono::steady_clock::now();
         shade_sea(shading_in_compute_);

@@ -43,8 +43,6 @@ TEST(FasterOfTwo, OneSlowTrialDoesNotDecide) {
     EXPECT_EQ(choice.chosen(), 0);
     choice.record(1, 1.0);  // after the decision, records change nothing
     EXPECT_EQ(choice.chosen(), 0);
-    choice.restart();
-    EXPECT_TRUE(choice.deciding());
 }
 
 TEST(FasterOfTwo, TheSecondOnlyByAMargin) {
