@@ -1,6 +1,7 @@
 // Two ways of doing the same work, timed by turns on the first frames, and the faster kept: for a
-// choice that depends on the machine more than on the code (step06's shading as a fragment or a
-// compute shader: on llvmpipe the fragment shader is 1.4 times faster, on an H100 the compute
+// choice that depends on the machine more than on the code (step05's transforms by FFTW or by the
+// GPU FFT, `backend=auto`: on llvmpipe FFTW is 12 times faster; step06's shading as a fragment or
+// a compute shader: on llvmpipe the fragment shader is 1.4 times faster, on an H100 the compute
 // shader 20 times). The caller times what it ran (wall ms around glFinish, say) and records it.
 // Where the two draw slightly different pictures, `margin` keeps the first unless the second is
 // that many times faster: a machine's noise (another process, a loaded CI runner) then cannot

@@ -56,7 +56,7 @@ void OceanSimulation::allocate(int n, int cascades) {
     twiddles_ = ocean::make_buffer();
     glNamedBufferStorage(twiddles_.id(), GLsizeiptr(twiddles.size() * sizeof(float)), twiddles.data(), 0);
     cpu_.reset();  // planned again, for the new size, when first used
-    auto_ = {};    // which backend is faster depends on the size
+    auto_ = ocean::FasterOfTwo(kAutoTrialFrames);  // which backend is faster depends on the size
     n_ = n;
 }
 
@@ -239,20 +239,17 @@ BackendTimes time_backends(OceanSimulation& ocean, double time, int repeats) {
 }
 
 void OceanSimulation::simulate_auto(double time, float choppiness, ocean::GpuTimers* timers) {
-    if (auto_.decided) {
-        simulate(time, auto_.chosen, choppiness, timers);
+    const auto backend_of = [](int which) { return which == 0 ? Backend::Fftw : Backend::GpuFft; };
+    if (!auto_.deciding()) {
+        simulate(time, backend_of(auto_.chosen()), choppiness, timers);
         return;
     }
-    const Backend trial = auto_.fftw_ms.size() <= auto_.gpu_fft_ms.size() ? Backend::Fftw : Backend::GpuFft;
-    (trial == Backend::Fftw ? auto_.fftw_ms : auto_.gpu_fft_ms)
-        .push_back(median_ms(1, [&] { simulate(time, trial, choppiness, timers); }));
-    if (int(auto_.gpu_fft_ms.size()) < kAutoTrialFrames || int(auto_.fftw_ms.size()) < kAutoTrialFrames) return;
-    const double gpu = ocean::median(auto_.gpu_fft_ms), cpu = ocean::median(auto_.fftw_ms);
-    auto_.chosen = cpu < gpu ? Backend::Fftw : Backend::GpuFft;
-    auto_.decided = true;
+    const int trial = auto_.next();
+    auto_.record(trial, median_ms(1, [&] { simulate(time, backend_of(trial), choppiness, timers); }));
+    if (auto_.deciding()) return;
     char text[200];
-    std::snprintf(text, sizeof text, "at N = %d: GPU FFT %.1f ms, FFTW %.1f ms a frame (median of %d): %s", n_, gpu, cpu,
-                  kAutoTrialFrames, auto_.chosen == Backend::Fftw ? "FFTW" : "GPU FFT");
+    std::snprintf(text, sizeof text, "at N = %d: GPU FFT %.1f ms, FFTW %.1f ms a frame (median of %d): %s", n_,
+                  auto_.median_ms(1), auto_.median_ms(0), kAutoTrialFrames, auto_.chosen() == 0 ? "FFTW" : "GPU FFT");
     auto_decision_ = text;
 }
 

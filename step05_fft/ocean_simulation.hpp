@@ -4,6 +4,7 @@
 // and the FFT on the GPU, or FFTW on the CPU (CpuSimulation), whose maps it uploads.
 #pragma once
 
+#include "common/faster_of_two.hpp"
 #include "common/gl.hpp"
 #include "common/gpu_timer.hpp"
 #include "common/shader.hpp"
@@ -73,7 +74,7 @@ public:
     std::optional<std::string> take_auto_decision() { return std::exchange(auto_decision_, std::nullopt); }
     // Backend::Auto is still timing both backends at this resolution: its frames alternate
     // between them, so they are not the steady state a benchmark should time.
-    bool auto_deciding() const { return n_ == 0 || !auto_.decided; }
+    bool auto_deciding() const { return n_ == 0 || auto_.deciding(); }
 
     int resolution() const { return n_; }
     int cascade_count() const { return int(cascades_.size()); }
@@ -109,11 +110,9 @@ private:
     ocean::Texture displacement_, slopes_;
     std::unique_ptr<CpuSimulation> cpu_;  // the FFTW backend, made when first used
     bool maps_on_cpu_ = false;             // the last simulate() was FFTW's
-    struct AutoTrial {  // Backend::Auto at this resolution (allocate() starts a new one)
-        bool decided = false;
-        Backend chosen = Backend::GpuFft;
-        std::vector<double> gpu_fft_ms, fftw_ms;
-    } auto_;
+    // Backend::Auto at this resolution (allocate() starts a new one): FFTW is 0, the GPU FFT 1.
+    // No margin: both draw the same maps, so the faster by any amount is the one to keep.
+    ocean::FasterOfTwo auto_{kAutoTrialFrames};
     std::optional<std::string> auto_decision_;
 };
 
