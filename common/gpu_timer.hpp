@@ -22,6 +22,18 @@ namespace ocean {
 // benchmark here quotes, since one stalled frame (a shader compile, a swap) would dominate a mean.
 double median(std::vector<double> values);
 
+// The wall milliseconds `work` takes with the GL queue drained before and after it (glFinish):
+// what a pass costs on llvmpipe, where timer queries say little, and what a choice between two
+// ways of drawing (FasterOfTwo) records.
+template <class Work>
+double wall_ms_around_finish(Work&& work) {
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 class GpuTimers {
 public:
     void set_enabled(bool enabled) { enabled_ = enabled; }

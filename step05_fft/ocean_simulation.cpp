@@ -5,7 +5,6 @@
 #include "common/error.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cmath>
 
@@ -200,13 +199,7 @@ namespace {
 template <class Work>
 double median_ms(int repeats, Work work) {
     std::vector<double> ms;
-    for (int r = 0; r < repeats; ++r) {
-        glFinish();
-        const auto start = std::chrono::steady_clock::now();
-        work();
-        glFinish();
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
+    for (int r = 0; r < repeats; ++r) ms.push_back(ocean::wall_ms_around_finish(work));
     return ocean::median(ms);
 }
 
@@ -245,12 +238,8 @@ void OceanSimulation::simulate_auto(double time, float choppiness, ocean::GpuTim
         return;
     }
     const int trial = auto_.next();
-    auto_.record(trial, median_ms(1, [&] { simulate(time, backend_of(trial), choppiness, timers); }));
-    if (auto_.deciding()) return;
-    char text[200];
-    std::snprintf(text, sizeof text, "at N = %d: GPU FFT %.1f ms, FFTW %.1f ms a frame (median of %d): %s", n_,
-                  auto_.median_ms(1), auto_.median_ms(0), kAutoTrialFrames, auto_.chosen() == 0 ? "FFTW" : "GPU FFT");
-    auto_decision_ = text;
+    auto_.record(trial, ocean::wall_ms_around_finish([&] { simulate(time, backend_of(trial), choppiness, timers); }));
+    if (!auto_.deciding()) auto_decision_ = "at N = " + std::to_string(n_) + ": " + auto_.verdict("FFTW", "GPU FFT");
 }
 
 std::vector<std::string> BackendTimes::lines() const {

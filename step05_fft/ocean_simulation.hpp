@@ -69,8 +69,8 @@ public:
     void assemble(float choppiness);
     void upload_cpu_maps(double time, float choppiness);  // FFTW: the textures, as assemble leaves them
 
-    // Backend::Auto's choice when it has just been made, once, for the log: "at N = 256: GPU FFT
-    // 77.1 ms, FFTW 45.3 ms a frame (median of 3): FFTW"; nothing on every other call.
+    // Backend::Auto's choice when it has just been made, once, for the log: "at N = 256: FFTW
+    // 5.6 ms, GPU FFT 94.8 ms a frame (median of 3): FFTW"; nothing on every other call.
     std::optional<std::string> take_auto_decision() { return std::exchange(auto_decision_, std::nullopt); }
     // Backend::Auto is still timing both backends at this resolution: its frames alternate
     // between them, so they are not the steady state a benchmark should time.

@@ -34,7 +34,6 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -408,18 +407,10 @@ protected:
             shade_sea(shading_in_compute_);
             return;
         }
-        const int trial = shading_in_compute_ ? 1 : 0;
-        glFinish();
-        const auto start = std::chrono::steady_clock::now();
-        shade_sea(shading_in_compute_);
-        glFinish();
-        shading_choice_.record(trial, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        if (shading_choice_.deciding()) return;
-        char text[160];
-        std::snprintf(text, sizeof text, "fragment shader %.1f ms, compute shader %.1f ms a frame (median of 3): %s",
-                      shading_choice_.median_ms(0), shading_choice_.median_ms(1),
-                      shading_choice_.chosen() == 1 ? "compute" : "fragment");
-        std::cout << "shading auto: " << text << "\n";
+        shading_choice_.record(shading_in_compute_ ? 1 : 0,
+                               ocean::wall_ms_around_finish([&] { shade_sea(shading_in_compute_); }));
+        if (!shading_choice_.deciding())
+            std::cout << "shading auto: " << shading_choice_.verdict("fragment shader", "compute shader") << "\n";
     }
 
     // ocean_shade.glsl at every pixel where the mesh wrote depth: a full-screen triangle
@@ -450,7 +441,6 @@ protected:
             return;
         }
         const glm::ivec2 size = framebuffer_size();
-        shade->set("u_size", size);
         glBindTextureUnit(UNIT_GBUFFER_DEPTH, post_.depth_texture());
         glBindImageTexture(0, post_.scene_texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
         glDispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
@@ -463,14 +453,8 @@ protected:
     // too, and on a shared machine two whole frames drift apart by more than a shader change costs;
     // draws a few milliseconds apart see the same machine.
     void time_shading_alone() {
-        for (int i = 0; i < bench_shading_repeats_; ++i) {
-            glFinish();
-            const auto start = std::chrono::steady_clock::now();
-            shade_sea(shading_in_compute_);  // what this frame drew
-            glFinish();
-            shading_alone_ms_.push_back(
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        }
+        for (int i = 0; i < bench_shading_repeats_; ++i)  // with what drew this frame
+            shading_alone_ms_.push_back(ocean::wall_ms_around_finish([&] { shade_sea(shading_in_compute_); }));
     }
 
     void draw_cascade_map() {

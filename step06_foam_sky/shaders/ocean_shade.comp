@@ -11,11 +11,10 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = UNIT_GBUFFER_DEPTH) uniform sampler2D u_depth;  // the mesh's depth: 1 where it drew no sea
-layout(rgba16f, binding = 0) writeonly uniform image2D u_scene;  // the HDR target
-uniform ivec2 u_size;
+layout(rgba16f, binding = 0) writeonly uniform image2D u_scene;  // the HDR target, the screen's size
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, u_size)) || texelFetch(u_depth, pixel, 0).r >= 1.0) return;
+    if (any(greaterThanEqual(pixel, imageSize(u_scene))) || texelFetch(u_depth, pixel, 0).r >= 1.0) return;
     imageStore(u_scene, pixel, shade_sea_pixel(pixel));
 }

@@ -21,5 +21,5 @@ run compute shading=compute
   { echo "FAIL: the compute shading pass draws another picture than the fragment one"; exit 1; }
 "$exe" --headless --frames 8 --size 96x64 --set backend=fftw > "$out/auto.log" 2>&1 ||
   { cat "$out/auto.log"; echo "FAIL: the run with shading=auto failed"; exit 1; }
-grep -E '^shading auto: fragment shader [0-9.]+ ms, compute shader [0-9.]+ ms a frame \(median of 3\): (fragment|compute)$' \
+grep -E '^shading auto: fragment shader [0-9.]+ ms, compute shader [0-9.]+ ms a frame \(median of 3\): (fragment|compute) shader$' \
   "$out/auto.log" || { cat "$out/auto.log"; echo "FAIL: shading=auto did not say what it kept"; exit 1; }

@@ -26,6 +26,10 @@ TEST(FasterOfTwo, TakesTurnsThenKeepsTheFaster) {
         EXPECT_FALSE(choice.deciding());
         EXPECT_EQ(choice.next(), faster);  // and from then on only the faster
         EXPECT_DOUBLE_EQ(choice.median_ms(faster), 10.0);
+        // The log line names both, in order, their medians, the trials behind them and the winner.
+        EXPECT_EQ(choice.verdict("first", "second"), faster == 0
+                      ? "first 10.0 ms, second 30.0 ms a frame (median of 3): first"
+                      : "first 30.0 ms, second 10.0 ms a frame (median of 3): second");
     }
 }
 
