@@ -284,6 +284,14 @@ Param* ParamRegistry::find(const std::string& name) {
     return nullptr;
 }
 
+void ParamRegistry::remove(const std::vector<std::string>& names) {
+    for (const auto& name : names) {
+        const auto it = std::find_if(params_.begin(), params_.end(), [&](const auto& p) { return p->name() == name; });
+        if (it == params_.end()) throw std::logic_error("parameter '" + name + "' removed but never declared");
+        params_.erase(it);
+    }
+}
+
 std::string ParamRegistry::unknown_name_message(const std::string& name) const {
     std::string message = "unknown parameter '" + ellipsize(name, 40) + "'";
     const Param* closest = nullptr;

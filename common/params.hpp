@@ -154,6 +154,10 @@ public:
 
     Param* find(const std::string& name);
     const std::vector<std::unique_ptr<Param>>& all() const { return params_; }
+    // Takes back parameters declared by an earlier chapter's declaration that a later chapter
+    // does not show (their variables keep their defaults). A name that is not declared is a
+    // programming error (std::logic_error), so a renamed parameter cannot slip through.
+    void remove(const std::vector<std::string>& names);
 
     // "name=value" as given to --set. Returns an error message or nothing.
     std::optional<std::string> set_assignment(const std::string& assignment);

@@ -18,7 +18,6 @@
 #pragma once
 
 #include "common/gl.hpp"
-#include "common/params.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/texel_window.hpp"
@@ -41,18 +40,6 @@ struct FoamSettings {
     // same breaking, it fades as exp(-streak_decay t).
     double streak_decay = 0.1;  // 1/s
 };
-
-// foam_threshold, foam_injection, foam_decay, bound to `settings` (their defaults are its own).
-inline void declare_foam_params(ocean::ParamRegistry& p, FoamSettings& settings) {
-    p.add_float("foam_threshold", &settings.threshold, -1, 2, "Jacobian below which foam appears (bias)")
-        .in_group("foam");
-    p.add_float("foam_injection", &settings.injection, 0, 100, "foam added per second per unit below the threshold")
-        .in_group("foam");
-    p.add_float("foam_decay", &settings.decay_rate, 0, 20, "foam fades as exp(-decay t), per second").in_group("foam");
-    p.add_float("foam_streak_decay", &settings.streak_decay, 0.01f, 20,
-                "residual foam in streaks (from Beaufort 7) fades as exp(-decay t), per second")
-        .in_group("foam");
-}
 
 // A new foam texel starts where injection and decay would balance for the current J, so the
 // first frame already has foam on the crests (a fixed clock, dt = 0, would otherwise never grow

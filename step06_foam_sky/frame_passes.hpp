@@ -14,8 +14,7 @@ using step05::FramePass;
 
 // The G-buffer's world target carries the mesh's l dDx/dz, so the shading reads the slopes only.
 // Texture units as main.cpp binds them (texture_units.h): 0-1 the cascades' maps, 3 foam, 4 sky,
-// 5 the bubble pattern, 6-7 the G-buffer, 9 the fog's horizon table (the foam's second channel
-// holds the residual foam since issue 23's tenth stop; unit 8 is free).
+// 5 the bubble pattern, 6-7 the G-buffer, 9 the fog's horizon table (unit 8 is free).
 constexpr std::array<FramePass, 8> kFramePasses{{
     {"simulation", "step05's evolve.comp, fft.comp x 2, assemble.comp, box_mip.comp", "h0, omega (SSBOs, once)",
      "displacement (4 layers);slopes (4 layers)"},
@@ -25,7 +24,7 @@ constexpr std::array<FramePass, 8> kFramePasses{{
      "sky (cubemap);horizon (1D, 256)"},
     {"ocean", "ocean.vert, ocean.tesc, ocean.tese, ocean.frag: the G-buffer", "displacement (4 layers)",
      "G-buffer (world RGBA32F, rest RGBA32UI);depth"},
-    {"ocean", "ocean_shade.frag or .comp where depth < far: ocean_shade.glsl",
+    {"ocean", "ocean_shade.frag where depth < far",
      "G-buffer (world RGBA32F, rest RGBA32UI);depth;slopes (4 layers);foam (rg32f, 3 levels);bubble pattern;sky (cubemap);horizon (1D, 256)",
      "scene (RGBA16F, HDR)"},
     {"background", "sky.frag where depth = far: sky and sun disc", "depth;sky (cubemap)", "scene (RGBA16F, HDR)"},

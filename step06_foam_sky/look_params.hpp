@@ -6,6 +6,7 @@
 #include "common/params.hpp"
 #include "common/shader.hpp"
 #include "step03_lighting/light_params.hpp"
+#include "step06_foam_sky/post.hpp"
 #include "step06_foam_sky/sky.hpp"
 
 #include <glm/vec3.hpp>
@@ -46,7 +47,6 @@ public:
             p.add_float("sun_azimuth", &sun_azimuth, 0, 360, "sun heading, degrees (0 = +x, 90 = +z)");
             p.add_float("sun_elevation", &sun_elevation, -5, 90, "sun height above the horizon, degrees");
             p.add_float("sun_intensity", &sun_intensity, 0, 100, "sunlight, linear units (the disc is brighter)");
-            p.add_color("sun_colour", &sun_colour, "colour of the sunlight (sRGB)");
             p.add_color("zenith_colour", &zenith_colour, "sky straight up (sRGB)");
             p.add_color("horizon_colour", &horizon_colour, "sky at the horizon (sRGB)");
             p.add_float("cloud_cover", &cloud_cover, 0, 1, "fraction of the sky under cloud");
@@ -59,26 +59,15 @@ public:
             p.add_choice("microfacet", &microfacet, {"ggx", "beckmann"}, "specular microfacet distribution");
             p.add_float("roughness", &roughness, 0.01f, 1, "a floor on alpha (the waves a pixel does not show add theirs)");
             p.add_color("scatter_colour", &scatter_colour, "colour of light scattered in the water (sRGB)");
-            p.add_color("crest_colour", &crest_colour, "colour of sunlight through thin crests, backlit (sRGB)");
-            p.add_color("bubble_colour", &bubble_colour, "colour of light scattered by bubbles (sRGB)");
-            p.add_float("scatter_crest", &scatter_crest, 0, 10, "k1: light through the crests (times wave height)");
-            p.add_float("scatter_view", &scatter_view, 0, 10, "k2: scatter towards the viewer");
-            p.add_float("scatter_lambert", &scatter_lambert, 0, 10, "k3: Lambert term of the scattered light");
-            p.add_float("scatter_bubbles", &scatter_bubbles, 0, 10, "k4: bubbles (where there is foam)");
-            p.add_float("height_scale", &height_scale, 0.01f, 50, "metres of height that count as a full crest");
-            p.add_float("ambient", &ambient, 0, 10, "skylight reaching the water, linear");
-            p.add_color("foam_colour", &foam_colour, "foam albedo (sRGB)");
-            p.add_float("foam_roughness", &foam_roughness, 0.01f, 1, "microfacet roughness of foam");
+            p.add_float("scatter_crest", &scatter_crest, 0, 10, "k1: sunlight through the crests (times wave height)");
         }
         {
             const auto post_group = p.group(kPost);
             p.add_float("fog_density", &fog_density, 0, 0.1f, "fog per metre at sea level");
-            p.add_float("fog_falloff", &fog_falloff, 0.0001f, 1, "how fast fog thins with height, per metre");
-            p.add_float("bloom_threshold", &bloom_threshold, 0, 100, "linear brightness where bloom starts");
             p.add_float("bloom_strength", &bloom_strength, 0, 2, "how much of the glow is added");
             p.add_float("exposure", &exposure, 0.01f, 20, "scale before the tonemapper").logarithmic();
-            p.add_choice("tonemapper", &tonemapper, {"aces", "agx", "none"}, "filmic curve: ACES fitted, AgX, or a clamp");
-            p.add_bool("dither", &dither, "one 8-bit step of triangular noise before the screen rounds (off: to measure a picture)");
+            p.add_choice("tonemapper", &tonemapper, {"aces", "agx", "none"},
+                         "filmic curve: ACES fitted or AgX (both dithered), or none: the values clamped as they are");
         }
         const auto effects_group = p.group("terms and passes");
         for (std::size_t i = 0; i < std::size(kEffectNames); ++i)
@@ -142,13 +131,28 @@ public:
 
     bool show(Effect e) const { return shown[std::size_t(e)]; }
 
-    // The defaults (declare() binds each to its parameter).
+    // The image passes this frame: the final picture as set, a debug view as it is. The dither
+    // (one 8-bit step of triangular noise before the screen rounds, against banding) goes with a
+    // filmic curve; tonemapper none shows the values to measure.
+    PostSettings post(bool final_picture) const {
+        PostSettings s;
+        s.bloom = final_picture && show(Effect::Bloom);
+        s.bloom_threshold = bloom_threshold;
+        s.bloom_strength = bloom_strength;
+        s.exposure = final_picture ? exposure : 1.0f;
+        s.tonemapper = final_picture ? tonemapper : kTonemapNone;
+        s.dither = s.tonemapper != kTonemapNone;
+        return s;
+    }
+
+    // The defaults (declare() binds each to its parameter; the others are the chapter's constants,
+    // named in the lesson).
     float sun_azimuth = 330, sun_elevation = 11, sun_intensity = 6, cloud_cover = 0.35f, cloud_speed = 12;
     glm::vec3 sun_colour{1.0f, 0.92f, 0.8f}, zenith_colour{0.16f, 0.36f, 0.7f}, horizon_colour{0.6f, 0.7f, 0.8f};
     std::string sky_image;
     ocean::Generation sky_image_changes;  // bumped when sky_image changes: the image is loaded again
     int microfacet = 0, tonemapper = 0;
-    bool dither = true;
+    static constexpr int kTonemapNone = 2;  // tonemapper's third choice
     float roughness = 0.02f;
     glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, crest_colour{0.15f, 0.75f, 0.6f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
     float scatter_crest = 3.0f, scatter_view = 0.35f, scatter_lambert = 0.25f, scatter_bubbles = 0.3f;  // the notes' k1 .. k4

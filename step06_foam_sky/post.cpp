@@ -2,6 +2,7 @@
 
 #include "step06_foam_sky/bloom.hpp"
 
+#include <string>
 #include <utility>
 
 namespace step06 {
@@ -43,6 +44,39 @@ void PostProcess::resize(glm::ivec2 size) {
         glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, bloom_.id(), level);
         bloom_targets_.push_back(std::move(target));
     }
+}
+
+void PostProcess::begin(glm::ivec2 size) {
+    resize(size);
+    bind_scene();
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void PostProcess::bloom(const PostSettings& settings, GLuint fullscreen_vao) const {
+    if (!settings.bloom) return;
+    const std::string frag = "step06_foam_sky/shaders/bloom_down.frag";
+    ocean::ShaderProgram* first = programs_("bloom_first", {"fullscreen.vert", frag}, {"FIRST_LEVEL 1"});
+    ocean::ShaderProgram* down = programs_("bloom_down", {"fullscreen.vert", frag}, {});
+    ocean::ShaderProgram* up = programs_("bloom_up", {"fullscreen.vert", "step06_foam_sky/shaders/bloom_up.frag"}, {});
+    if (first != nullptr && down != nullptr && up != nullptr)
+        bloom(*first, *down, *up, settings.bloom_threshold, fullscreen_vao);
+}
+
+void PostProcess::tonemap(const PostSettings& settings, GLuint fullscreen_vao) const {
+    ocean::ShaderProgram* tonemap =
+        programs_("tonemap", {"fullscreen.vert", "step06_foam_sky/shaders/tonemap.frag"},
+                  {"TONEMAPPER " + std::to_string(settings.tonemapper), std::string("DITHER ") + (settings.dither ? "1" : "0")});
+    if (tonemap == nullptr) return;
+    tonemap->set("u_scene", 0);
+    tonemap->set("u_bloom", 1);
+    tonemap->set("u_exposure", settings.exposure);
+    tonemap->set("u_bloom_strength", settings.bloom ? settings.bloom_strength : 0.0f);
+    glBindTextureUnit(0, scene_texture());
+    glBindTextureUnit(1, bloom_texture());
+    glUseProgram(tonemap->id());
+    glBindVertexArray(fullscreen_vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void PostProcess::bind_scene() const {

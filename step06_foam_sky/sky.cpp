@@ -2,15 +2,18 @@
 
 #include "common/error.hpp"
 #include "step05_fft/box_mipmaps.hpp"
+#include "step06_foam_sky/far_plane.hpp"
 #include "step06_foam_sky/texture_units.h"
 
 #include <stb_image.h>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iostream>
 #include <sys/stat.h>
 
 namespace step06 {
@@ -30,6 +33,27 @@ Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(program
     glTextureParameteri(horizon_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(horizon_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(horizon_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the horizon goes round
+}
+
+void Sky::follow_image(const std::string& path, unsigned version) {
+    if (version == image_version_) return;
+    image_version_ = version;
+    if (auto warning = use_image(path)) std::cerr << "warning: " << *warning << "\n";
+}
+
+// Drawn last, and only where the sea left the depth at the far plane: drawn first, under
+// everything, most of its pixels would be drawn again by the sea.
+void Sky::draw_background(const SkySettings& settings, const glm::mat4& view_projection, GLuint fullscreen_vao) {
+    ocean::ShaderProgram* sky = programs_("sky", {"fullscreen.vert", std::string(kShaders) + "sky.frag"}, {});
+    if (sky == nullptr) return;
+    sky->set("u_to_sun", settings.to_sun);
+    sky->set("u_sun_radiance", settings.sun_radiance);
+    sky->set("u_sun_size", settings.sun_size);
+    sky->set("u_draw_sun_disc", int(!uses_image()));
+    sky->set("u_inverse_view_projection", glm::inverse(view_projection));
+    bind();
+    glUseProgram(sky->id());
+    draw_at_far_plane(GL_LEQUAL, fullscreen_vao);
 }
 
 float Sky::max_lod() const { return float(step05::mip_levels(size_) - 1); }  // the 1 x 1 level

@@ -1,6 +1,5 @@
 // A square window of whole texels around a point, moving with it in whole texels: the foam's
-// clipmap (foam.hpp) and the combined surface's levels (combined_surface.hpp) are both made of
-// them. Because the window moves by whole texels, a texel always holds the same point of the world:
+// clipmap (foam.hpp) is made of them. Because the window moves by whole texels, a texel always holds the same point of the world:
 // what it shows does not swim as the camera moves.
 #pragma once
 

@@ -10,8 +10,5 @@
 #define UNIT_FOAM_PATTERN 5   // the bubble pattern (u_foam_pattern)
 #define UNIT_GBUFFER_WORLD 6  // the G-buffer's surface points (u_gbuffer_world)
 #define UNIT_GBUFFER_REST 7   // the G-buffer's rest positions and footprints (u_gbuffer_rest)
-#define UNIT_GBUFFER_DEPTH 8  // the mesh's depth, for the shading pass as a compute shader (ocean_shade.comp)
 #define UNIT_SKY_HORIZON 9    // the fog's colour around the horizon (sky_horizon.glsl's u_sky_horizon)
-#define UNIT_COMBINED_DISPLACEMENT 10  // the cascades combined around the camera (combined_surface.glsl)
-#define UNIT_COMBINED_SLOPES 11
 #endif

@@ -1,17 +1,24 @@
 // step07_buoyancy: things that float on step06's sea.
-// Beyond the notes. The sea is step06's, drawn by step06's program (foam_sky.hpp); this chapter
-// asks it questions. Each frame the maps the renderer draws reach the CPU (from the FFTW backend
+// Beyond the notes. The sea is step06's: this program owns step06's parts (the Sea, the Sky, the
+// SeaRenderer, the PostProcess) and composes them as step06's main.cpp does, adding the bodies
+// between the sea and the sky behind it; this chapter asks the sea questions. Each frame the maps the renderer draws reach the CPU (from the FFTW backend
 // directly, or from the GPU through map_readback.hpp, a frame late), the height above each hull
 // cell is found by inverting the choppy displacement (sea_query.hpp), and a buoy, a raft and a
 // boat move under buoyancy and drag (floating_body.hpp).
 // Controls: step06's; the arrows steer the boat, a right click pushes the body under the cursor;
 // the panel sets each body's size and density, drops them again, and sets the boat's throttle
 // and rudder.
-#include "step06_foam_sky/foam_sky.hpp"
+#include "common/app.hpp"
+#include "step06_foam_sky/look_params.hpp"
+#include "step06_foam_sky/post.hpp"
+#include "step06_foam_sky/sea.hpp"
+#include "step06_foam_sky/sea_renderer.hpp"
+#include "step06_foam_sky/sky.hpp"
 #include "step07_buoyancy/body_mesh.hpp"
 #include "step07_buoyancy/floating_body.hpp"
 #include "step07_buoyancy/gpu_queries.hpp"
 #include "step07_buoyancy/map_readback.hpp"
+#include "step07_buoyancy/query_dots.hpp"
 #include "step07_buoyancy/sea_maps.hpp"
 #include "step07_buoyancy/sea_query.hpp"
 
@@ -19,19 +26,15 @@
 
 #include <GLFW/glfw3.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <imgui.h>
 
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <memory>
 #include <optional>
 
 namespace {
-
-ocean::StepInfo buoyancy_info() {
-    return {"Buoyancy", "",
-            "step06's sea, read back: the height above a world point by inverting the choppy displacement, "
-            "and bodies that float on it (buoyancy and drag over the hull's cells, semi-implicit Euler)."};
-}
 
 // A sea the bodies can read, and the time it belongs to.
 struct TimedSea {
@@ -39,11 +42,18 @@ struct TimedSea {
     double time = 0;
 };
 
-class Buoyancy : public step06::FoamSky {
+class Buoyancy : public ocean::App {
 public:
-    Buoyancy() : FoamSky(buoyancy_info()) {
-        use_shaders_of("step06_foam_sky");
+    Buoyancy()
+        : App({"Buoyancy", "",
+               "step06's sea, read back: the height above a world point by inverting the choppy displacement, "
+               "and bodies that float on it (buoyancy and drag over the hull's cells, semi-implicit Euler).",
+               /*window_samples=*/0}) {
         ocean::ParamRegistry& p = params();
+        // step06's parameters, then the bodies'.
+        sea_.declare(p);
+        renderer_.declare(p);
+        look_.declare(p);
         auto group = p.group("bodies", &bodies_changed_);
         p.add_float("buoy_diameter", &buoy_diameter_, 0.2f, 5, "the buoy's diameter, metres");
         p.add_float("buoy_density", &buoy_density_, 50, 3000, "kg/m^3 (water: 1025)");
@@ -63,12 +73,37 @@ public:
                      "where the queries are answered: cpu (sea_query.cpp, every core, this frame's maps) or gpu "
                      "(height_query.comp, answers a frame late)")
             .in_group("queries");
+        use_camera(ocean::camera_view("low"), ocean::kOceanReach);
         offer_export([this](const std::string& dir) { export_all(dir); });
+        offer_warm_up([this] { return sea_.choosing_backend(); });
     }
 
 private:
+    void init() override {
+        sea_.init(program_factory());
+        sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
+        renderer_.init(program_factory());
+        post_.init(program_factory());
+        dots_.init(program_factory());
+    }
+
+    // step06's frame (its main.cpp), then the bodies on the sea it made.
     void update(double time, double dt) override {
-        FoamSky::update(time, dt);
+        const glm::dvec3 eye = camera().eye_world();
+        {
+            ocean::GpuScope timed(timers(), "simulation");
+            sea_.simulate(time, eye);
+        }
+        {
+            ocean::GpuScope timed(timers(), "foam");
+            sea_.update_foam(dt, eye, camera().forward());
+        }
+        {
+            ocean::GpuScope timed(timers(), "sky");
+            sky_->follow_image(look_.sky_image, look_.sky_image_changes.value);
+            sky_settings_ = look_.sky(time, sea_.wind_direction());
+            sky_->render(sky_settings_);
+        }
         ocean::GpuScope timed(timers(), "bodies");
         const auto started = std::chrono::steady_clock::now();
         std::optional<TimedSea> sea = newest_sea();
@@ -97,9 +132,8 @@ private:
 
     // The maps of this frame (FFTW) or the latest read back from the GPU (a frame late).
     std::optional<TimedSea> newest_sea() {
-        std::vector<double> tiles;
-        for (const auto& s : spectra_) tiles.push_back(s->patch_size);
-        if (const step05::CpuSimulation* cpu = gpu_->maps_on_cpu()) {
+        const std::vector<double> tiles = sea_.tile_sizes();
+        if (const step05::CpuSimulation* cpu = sea_.simulation().maps_on_cpu()) {
             readback_.forget();  // auto's trial frames switch backends: no older GPU maps after these
             const auto& level = cpu->levels()[0];
             latency_frames_ = 0;
@@ -107,7 +141,7 @@ private:
         }
         // Last frame's copy first (exactly a frame late), then this frame's is queued.
         std::optional<step07::ArrivedMaps> arrived = readback_.take();
-        readback_.request(*gpu_, time());
+        readback_.request(sea_.simulation(), time());
         if (!arrived) return std::nullopt;
         latency_frames_ = 1;
         return TimedSea{step07::sea_from_layers(arrived->displacement, arrived->slopes, arrived->n, tiles), arrived->time};
@@ -179,9 +213,9 @@ private:
         // On the GPU: this frame's points go up; last frame's answers come back.
         if (!gpu_queries_) gpu_queries_ = std::make_unique<step07::GpuQueries>(program_factory());
         std::vector<glm::vec2> relative;
-        for (const auto& w : world) relative.emplace_back(w - cascade_view_.origin);
+        for (const auto& w : world) relative.emplace_back(w - sea_.cascades().origin);
         std::optional<step07::GpuAnswers> arrived = gpu_queries_->take();  // last frame's, then this frame's
-        gpu_queries_->submit(relative, *gpu_, cascade_view_, time());
+        gpu_queries_->submit(relative, sea_.simulation(), sea_.cascades(), time());
         if (arrived) {
             query_dots_.resize(arrived->points.size());
             for (std::size_t i = 0; i < arrived->points.size(); ++i) {
@@ -191,39 +225,40 @@ private:
         }
     }
 
-    void draw_query_dots(const glm::mat4& view_projection) {
-        if (query_dots_.empty()) return;
-        ocean::ShaderProgram* p = program("query_points", {"query_points.vert", "query_points.frag"});
-        if (p == nullptr) return;
-        std::vector<glm::vec3> positions;
-        for (const auto& d : query_dots_) positions.emplace_back(d - world_origin());
-        dots_buffer_ = ocean::make_buffer();
-        glNamedBufferStorage(dots_buffer_.id(), GLsizeiptr(positions.size() * sizeof(glm::vec3)), positions.data(), 0);
-        if (dots_vao_.id() == 0) {
-            dots_vao_ = ocean::make_vertex_array();
-            glEnableVertexArrayAttrib(dots_vao_.id(), 0);
-            glVertexArrayAttribFormat(dots_vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-            glVertexArrayAttribBinding(dots_vao_.id(), 0, 0);
+    // step06's frame with the bodies and the query dots drawn into the scene between the sea (its
+    // depth is there) and the sky behind it.
+    void render() override {
+        post_.begin(framebuffer_size());
+        const glm::mat4 view_projection = camera().projection(aspect()) * camera().view(sea_.world_origin());
+        {
+            ocean::GpuScope timed(timers(), "ocean");
+            renderer_.draw(sea_, *sky_, look_,
+                           {view_projection, camera().eye_world(), framebuffer_size(), post_.scene_framebuffer(),
+                            post_.depth_texture(), fullscreen_vao()});
         }
-        glVertexArrayVertexBuffer(dots_vao_.id(), 0, dots_buffer_.id(), 0, sizeof(glm::vec3));
-        p->set("u_view_projection", view_projection);
-        glUseProgram(p->id());
-        glEnable(GL_PROGRAM_POINT_SIZE);
-        glEnable(GL_DEPTH_TEST);
-        glBindVertexArray(dots_vao_.id());
-        glDrawArrays(GL_POINTS, 0, GLsizei(positions.size()));
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_PROGRAM_POINT_SIZE);
+        dots_.draw(query_dots_, sea_.world_origin(), view_projection);
+        draw_bodies(view_projection);
+        {
+            ocean::GpuScope timed(timers(), "background");
+            sky_->draw_background(sky_settings_, view_projection, fullscreen_vao());
+        }
+        const step06::PostSettings image = look_.post(renderer_.view() == step06::kViewShaded);
+        {
+            ocean::GpuScope timed(timers(), "bloom");
+            post_.bloom(image, fullscreen_vao());
+        }
+        ocean::GpuScope timed(timers(), "tonemap");
+        bind_target();
+        post_.tonemap(image, fullscreen_vao());
     }
 
-    void draw_in_scene(const glm::mat4& view_projection) override {
-        draw_query_dots(view_projection);
+    void draw_bodies(const glm::mat4& view_projection) {
         ocean::ShaderProgram* p = program("body", {"body.vert", "body.frag"});
         if (p == nullptr || bodies_.empty()) return;
         if (!meshes_) meshes_ = std::make_unique<step07::BodyMeshes>();
         look_.upload_shading(*p);
         p->set("u_view_projection", view_projection);
-        p->set("u_eye", eye_from_origin());
+        p->set("u_eye", glm::vec3(camera().eye_world() - sea_.world_origin()));
         p->set("u_sky_max_lod", sky_->max_lod());
         sky_->bind();
         glUseProgram(p->id());
@@ -234,7 +269,7 @@ private:
             const step07::Shape& shape = body.settings().shape;
             const glm::vec3 scale = shape.kind == step07::ShapeKind::Sphere ? glm::vec3(float(shape.size.x)) : glm::vec3(shape.size);  // box and hull: (length, depth, beam)
             // From the world origin near the camera, in double, then float: small numbers anywhere.
-            const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(body.position() - world_origin())) *
+            const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(body.position() - sea_.world_origin())) *
                                     glm::mat4_cast(glm::quat(body.orientation())) *
                                     glm::translate(glm::mat4(1.0f), glm::vec3(body.shape_centre())) *
                                     glm::scale(glm::mat4(1.0f), scale);
@@ -257,9 +292,9 @@ private:
         if (io.WantCaptureMouse || !ImGui::IsMouseClicked(ImGuiMouseButton_Right) || io.DisplaySize.x <= 0) return;
         // The cursor's ray, from the world origin near the camera, then the body closest to it.
         const glm::vec2 ndc(2 * io.MousePos.x / io.DisplaySize.x - 1, 1 - 2 * io.MousePos.y / io.DisplaySize.y);
-        const glm::mat4 inverse = glm::inverse(camera().projection(aspect()) * camera().view(world_origin()));
+        const glm::mat4 inverse = glm::inverse(camera().projection(aspect()) * camera().view(sea_.world_origin()));
         const glm::vec4 near = inverse * glm::vec4(ndc, -1, 1), far = inverse * glm::vec4(ndc, 1, 1);
-        const glm::dvec3 from = world_origin() + glm::dvec3(glm::vec3(near) / near.w);
+        const glm::dvec3 from = sea_.world_origin() + glm::dvec3(glm::vec3(near) / near.w);
         const glm::dvec3 ray = glm::normalize(glm::dvec3(glm::vec3(far) / far.w - glm::vec3(near) / near.w));
         step07::FloatingBody* hit = nullptr;
         double best = 0;
@@ -274,7 +309,6 @@ private:
     }
 
     void ui() override {
-        FoamSky::ui();
         read_input();
         ImGui::Separator();
         ImGui::Text("bodies and queries: %.2f ms a frame; the maps %s", bodies_ms_,
@@ -292,8 +326,7 @@ private:
     // step06's export (the surface and foam) and each body's trajectory, one row a body a frame.
     void export_all(const std::string& dir) {
         ocean::ProgramFactory programs = program_factory();
-        step06::export_surface(dir, programs, *gpu_, *foam_, cascade_view_, time(), ocean_params_.choppiness,
-                               short_wave_slope_variance_, params());
+        sea_.export_surface(dir, programs, time(), params());
         std::ofstream out(dir + "/trajectories.csv");
         out << "time,body,x,y,z,qw,qx,qy,qz\n";
         out.precision(10);
@@ -309,6 +342,14 @@ private:
         glm::dvec3 position;
         glm::dquat orientation;
     };
+    // step06's parts.
+    step06::Sea sea_;
+    std::unique_ptr<step06::Sky> sky_;
+    step06::SkySettings sky_settings_;
+    step06::SeaRenderer renderer_;
+    step06::PostProcess post_;
+    step06::LookParams look_;
+    // The bodies, and what asks the sea.
     std::vector<step07::FloatingBody> bodies_;
     std::vector<TrajectoryRow> trajectory_;
     std::optional<TimedSea> sea_before_, sea_now_;
@@ -324,8 +365,7 @@ private:
     double bodies_ms_ = 0;
     std::unique_ptr<step07::GpuQueries> gpu_queries_;
     std::vector<glm::dvec3> query_dots_;  // world metres: the latest answers
-    ocean::Buffer dots_buffer_;
-    ocean::VertexArray dots_vao_;
+    step07::QueryDots dots_;
 };
 
 }  // namespace

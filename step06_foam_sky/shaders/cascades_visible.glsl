@@ -1,13 +1,10 @@
-// For the shading pass (a fragment shader, which has screen-space derivatives, or
-// ocean_shade.comp, which gives every level; SHADING_IN_COMPUTE): the cascades summed as this pixel
-// sees them, filtered over the pixel's footprint on the sea. The footprint is given (the
+// For the shading pass (ocean_shade.frag): the cascades summed as this pixel sees them, filtered over the pixel's footprint on the sea. The footprint is given (the
 // deferred shading pass reads it from the G-buffer, gbuffer.hpp): GL's own level for texture()
 // comes from the differences across a 2 x 2 quad, meaningless where the quad straddles a crest
 // and the water behind it, so every fetch here takes the bias that turns GL's level into the one
 // the footprint asks for.
 #extension GL_ARB_shader_group_vote : enable  // sample_surface: one loop length for neighbours (below)
 #include "cascades.glsl"
-#include "combined_surface.glsl"
 #include "foam_map.glsl"
 
 #ifndef ANISOTROPIC_TAPS
@@ -32,21 +29,8 @@ struct SurfaceFootprint {
     vec2 dx, dy;
 };
 
-// The footprint made no finer than `finest` metres along either of its axes: what a sampling that
-// cannot resolve less than `finest` would see (combined_levels.glsl; ocean_shade.frag).
-SurfaceFootprint no_finer_than(SurfaceFootprint f, float finest) {
-    return SurfaceFootprint(f.dx * max(1.0, finest / max(length(f.dx), 1e-20)),
-                            f.dy * max(1.0, finest / max(length(f.dy), 1e-20)));
-}
-
-#ifndef SHADING_IN_COMPUTE
-#define SHADING_IN_COMPUTE 0  // 1: ocean_shade.comp, which has no quads: textureLod at the footprint's level
-#endif
-
-#if !SHADING_IN_COMPUTE
 // The longer side of the footprint GL assumes for texture(): from the quad's differences of p.
 float implicit_long_side(vec2 p) { return max(max(length(dFdxCoarse(p)), length(dFdyCoarse(p))), 1e-20); }
-#endif
 
 // What the pixel sees of the summed surface: set by sample_surface. Not the displacement: the
 // mesh has moved the point, and the normal's cross term l dDx/dz comes from its vertices too.
@@ -112,14 +96,7 @@ void add_cascade(int c, vec2 p, vec2 long_axis, float long_length, float short_l
     // per pixel for explicit ones, which made the pass 30 % slower. Everything that decides
     // the loop comes from the recorded coarse (per 2 x 2) derivatives, so the 2 x 2 pixels
     // agree on it.
-#if SHADING_IN_COMPUTE
-    // No quad, no implicit level: the piece's own, per pixel (on llvmpipe slower per fetch, above).
-    float lod = cascade_lod(c, footprint);
-#define SLOPE_PIECE(uv) textureLod(u_slopes, uv, lod)
-#else
     float bias = log2(footprint / implicit_long_side(p));
-#define SLOPE_PIECE(uv) texture(u_slopes, uv, bias)
-#endif
     vec4 slopes = vec4(0.0);
     // A do-while, not a for: every pixel takes at least one piece, and a loop that tests at
     // its top runs its body once more, masked off, after the last pixel's last piece on a
@@ -127,9 +104,8 @@ void add_cascade(int c, vec2 p, vec2 long_axis, float long_length, float short_l
     // cascade, 6 to 11 % of the ocean pass; ./ocean bench --against, docs/performance.md).
     int i = 0;
     do {
-        slopes += SLOPE_PIECE(cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c));
+        slopes += texture(u_slopes, cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c), bias);
     } while (++i < taps);
-#undef SLOPE_PIECE
     s.slopes += slopes / float(taps);
     // The pixel's normal is the mean slope over its long x short footprint: what that averages
     // away is about what a square of the same area does (the level of sqrt(long x short)).
@@ -146,49 +122,6 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
     for (int c = 0; c < CASCADES; ++c) add_cascade(c, p, long_axis, long_length, short_length, s);
     return s;
 }
-
-#if COMBINED_SURFACE
-// The pieces of the pixel's long footprint in one combined level: sample_surface's anisotropic
-// filtering with one fetch a piece where the cascades take four. A piece is no shorter than the
-// level's texel (below it the level is magnified: one fetch is exact).
-vec4 combined_slopes_in(int level, vec2 p, vec2 long_axis, float long_length, float short_length) {
-    float texel = combined_texel(level);
-    int taps = clamp(int(long_length / max(short_length, texel) + 0.5), 1, ANISOTROPIC_TAPS);
-    float lod = combined_lod(level, max(short_length, long_length / float(taps)));
-    vec4 slopes = vec4(0.0);
-    for (int i = 0; i < taps; ++i)
-        slopes += textureLod(u_combined_slopes, combined_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), level), lod);
-    return slopes / float(taps);
-}
-
-// sample_surface from the combined levels (surface=combined): the same slopes and unresolved
-// variance, one level read (two in the band where a level hands over) instead of four cascades.
-// textureLod at the piece's own level, per pixel: nothing here needs the pixel's neighbours.
-SurfaceSample sample_combined_surface(vec2 p, SurfaceFootprint f) {
-    float lx = length(f.dx), ly = length(f.dy);
-    vec2 long_axis = lx > ly ? f.dx : f.dy;
-    float long_length = max(lx, ly), short_length = min(lx, ly);
-    CombinedLevels at = combined_levels_at(p);
-    SurfaceSample s;
-    s.slopes = combined_slopes_in(at.level, p, long_axis, long_length, short_length);
-    if (at.next_weight > 0.0)
-        s.slopes = mix(s.slopes, combined_slopes_in(at.level + 1, p, long_axis, long_length, short_length), at.next_weight);
-    // What the footprint averages away of each combined cascade, as sample_surface counts it,
-    // with the footprint no finer than the level's texel: a level holds nothing finer (arithmetic
-    // only). The cascades left out of the levels (u_combined_cascades and on) are read as
-    // sample_surface reads them: their waves are finer than the levels' texels.
-    float texels = float(textureSize(u_slopes, 0).x);
-    float level_texel = combined_texel(at.level);
-    s.unresolved_slope_variance = 0.0;
-    for (int c = 0; c < u_combined_cascades; ++c) {
-        if (!u_cascade_enabled[c]) continue;
-        float texel = u_patch_sizes[c] / texels;
-        s.unresolved_slope_variance += unresolved_at(c, cascade_lod(c, max(sqrt(long_length * max(short_length, texel)), level_texel)));
-    }
-    for (int c = u_combined_cascades; c < CASCADES; ++c) add_cascade(c, p, long_axis, long_length, short_length, s);
-    return s;
-}
-#endif
 
 // The foam at rest position p (fragment shaders), averaged over a footprint `long_side` metres
 // long: (whitecaps' foam, residual foam), from the finest level whose window holds p, blended

@@ -3,7 +3,6 @@
 // displacement of all cascades.
 layout(quads, equal_spacing, ccw) in;
 #include "cascades.glsl"
-#include "combined_surface.glsl"
 
 in vec2 te_rest_xz[];
 
@@ -27,13 +26,7 @@ void main() {
     // spacing is a function of the position alone, so two patches sharing an edge displace its
     // vertices alike and no crack opens.
     float spacing = length(vec3(v_rest_xz.x, 0.0, v_rest_xz.y) - u_eye) / u_tess_scale;
-#if COMBINED_SURFACE
-    // The levels around the camera, and the cascades they leave out.
-    vec4 displacement = combined_displacement_at(v_rest_xz, 2.0 * spacing);
-    for (int c = u_combined_cascades; c < CASCADES; ++c) displacement += cascade_displacement_at(c, v_rest_xz, 2.0 * spacing);
-#else
     vec4 displacement = displacement_at(v_rest_xz, 2.0 * spacing);
-#endif
     v_world_position = vec3(v_rest_xz.x, 0.0, v_rest_xz.y) + displacement.xyz;
     v_cross_term = displacement.w;
     v_level = gl_TessLevelInner[0];

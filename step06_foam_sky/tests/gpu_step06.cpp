@@ -7,8 +7,6 @@
 #include "common/image.hpp"
 #include "step06_foam_sky/bloom.hpp"
 #include "step06_foam_sky/cascades.hpp"
-#include "step06_foam_sky/combined_levels.hpp"
-#include "step06_foam_sky/combined_surface.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/patch_grid.hpp"
@@ -282,106 +280,6 @@ TEST_F(Step06Gpu, FoamReadsEachCascadeAtTheWholeMipLevelNearestItsTexel) {
     ASSERT_GT(folded, 20) << "the test needs some foam to compare";
     EXPECT_GT(blend_gap, 10 * tolerance) << "whole levels and blended ones must be told apart";
     EXPECT_LT(worst, tolerance);
-}
-
-// surface=combined: each texel of a combined level holds the four cascades summed at its world
-// position, each read at the whole mip level nearest the level's texel (surface_at, as the foam),
-// within what RGBA16F's rounding (2^-11 of the value) and 8-bit filter weights can cost. Level 0
-// (1/8 m texels) magnifies every cascade; level 3 (1 m) reads them at mip levels 0, 0, 1 and 2,
-// where a blend of the two levels around each footprint (trilinear) would be far outside the limit.
-TEST_F(Step06Gpu, CombinedLevelsHoldTheSummedCascadesAtEachTexel) {
-    const float choppiness = 1.3f;
-    const WindySea sea = windy_sea(factory(), 7.0, choppiness);
-    const step06::CascadeView cascades = all_cascades();
-    const double texel0 = step06::combined_texel0(double(cascades.patch_sizes[3]) / 64);
-    ASSERT_DOUBLE_EQ(texel0, 0.125);
-    step06::CombinedSurface combined(factory());
-    combined.resize(64, 4, texel0);
-    combined.update(*sea.gpu, cascades, {37.3, -12.6});
-    // The channels as the GPU packs them (step05's assemble.comp): displacement (l Dx, h, l Dz,
-    // l dDx/dz), slopes (dh/dx, dh/dz, l dDx/dx, l dDz/dz).
-    const std::array<std::array<step05::Field, 4>, 2> channels{{{step05::DisplacementX, step05::Height, step05::DisplacementZ, step05::DDxDz},
-                                                                {step05::SlopeX, step05::SlopeZ, step05::DDxDx, step05::DDzDz}}};
-    const std::array<std::array<double, 4>, 2> scales{{{choppiness, 1, choppiness, choppiness}, {1, 1, choppiness, choppiness}}};
-    for (int level : {0, 3}) {
-        const step06::TexelWindow& window = combined.window(level);
-        ASSERT_DOUBLE_EQ(window.texel_size, texel0 * std::exp2(level));
-        // Each channel against its own tolerance (metres for the displacement, slopes for the rest).
-        double worst_share = 0, blend_share = 0;
-        for (int map = 0; map < 2; ++map) {
-            const std::vector<glm::vec4> values = combined.read_level(level, map == 1);
-            for (int ch = 0; ch < 4; ++ch) {
-                std::vector<MipField> nearest, below, above;
-                std::vector<double> blends;
-                for (const auto& maps : sea.cpu) {
-                    const double lod = std::max(0.0, std::log2(window.texel_size * maps.n / maps.patch_size));
-                    nearest.emplace_back(maps, channels[map][ch], int(std::floor(lod + 0.5)));
-                    below.emplace_back(maps, channels[map][ch], int(std::floor(lod)));
-                    above.emplace_back(maps, channels[map][ch], int(std::floor(lod)) + 1);
-                    blends.push_back(lod - std::floor(lod));
-                }
-                double worst = 0, weight_gap = 0, blend_gap = 0;
-                for (int j = 0; j < 64; ++j)
-                    for (int i = 0; i < 64; ++i) {
-                        const glm::dvec2 p = window.cell_centre(i, j);
-                        double expected = 0, truncated = 0, blended = 0;
-                        for (std::size_t c = 0; c < nearest.size(); ++c) {
-                            expected += scales[map][ch] * nearest[c].at(p.x, p.y);
-                            truncated += scales[map][ch] * nearest[c].at(p.x, p.y, 8);
-                            blended += scales[map][ch] * ((1 - blends[c]) * below[c].at(p.x, p.y) + blends[c] * above[c].at(p.x, p.y));
-                        }
-                        const double gpu = values[std::size_t(j) * 64 + std::size_t(i)][ch];
-                        // Past RGBA16F's rounding of the value: what is left is the sampling's error.
-                        worst = std::max(worst, std::max(0.0, std::abs(gpu - expected) - std::ldexp(std::abs(expected), -11)));
-                        weight_gap = std::max(weight_gap, std::abs(truncated - expected));
-                        blend_gap = std::max(blend_gap, std::abs(blended - expected));
-                    }
-                const double tolerance = 2 * weight_gap + 1e-5;  // as the foam's tests
-                worst_share = std::max(worst_share, worst / tolerance);
-                blend_share = std::max(blend_share, blend_gap / tolerance);
-            }
-        }
-        std::printf("combined level %d (%.3f m texels): worst |GPU - CPU| beyond half-float rounding %.3f of the "
-                    "tolerance (8-bit filter weights, each channel); a trilinear blend of the cascades' levels %.1f\n",
-                    level, window.texel_size, worst_share, blend_share);
-        EXPECT_LT(worst_share, 1.0) << "level " << level;
-        if (level == 3) {
-            EXPECT_GT(blend_share, 10.0) << "whole levels and blended ones must be told apart";
-        }
-    }
-}
-
-// The combined levels move with the camera in whole texels, so a point of the sea is always held
-// by a texel centred on it: after the camera moves 5.4 texels one way and 2.7 the other, every
-// world cell both windows hold has the same value to the bit (the same sum at the same point).
-// Windows centred on the camera itself would resample the sea each frame: the sea would swim.
-TEST_F(Step06Gpu, CombinedLevelsMoveInWholeTexelsSoNothingSwims) {
-    const WindySea sea = windy_sea(factory(), 3.0, 1.3f);
-    step06::CombinedSurface combined(factory());
-    combined.resize(64, 3, 0.125);
-    const glm::dvec2 eye(11.1, -4.3);
-    combined.update(*sea.gpu, all_cascades(), eye);
-    const step06::TexelWindow before = combined.window(2);
-    const std::vector<glm::vec4> first = combined.read_level(2, true);
-    combined.update(*sea.gpu, all_cascades(), eye + glm::dvec2(5.4, -2.7) * before.texel_size);
-    const step06::TexelWindow after = combined.window(2);
-    const std::vector<glm::vec4> second = combined.read_level(2, true);
-    const glm::ivec2 moved = after.origin - before.origin;
-    ASSERT_TRUE(moved == glm::ivec2(5, -3) || moved == glm::ivec2(6, -3) || moved == glm::ivec2(5, -2) ||
-                moved == glm::ivec2(6, -2))
-        << moved.x << ", " << moved.y;
-    int compared = 0, differing = 0;
-    for (int j = 0; j < 64; ++j)
-        for (int i = 0; i < 64; ++i) {
-            const int i2 = i - moved.x, j2 = j - moved.y;  // the same world cell in the second window
-            if (i2 < 0 || j2 < 0 || i2 >= 64 || j2 >= 64) continue;
-            ++compared;
-            differing += first[std::size_t(j) * 64 + std::size_t(i)] != second[std::size_t(j2) * 64 + std::size_t(i2)];
-        }
-    std::printf("combined level 2 after the camera moved (%d, %d) texels: %d of %d shared cells differ\n", moved.x,
-                moved.y, differing, compared);
-    EXPECT_GT(compared, 3000);
-    EXPECT_EQ(differing, 0);
 }
 
 // The same foam at 6 and at 60 frames a second, texel by texel, on a windy sea held still (J
@@ -773,52 +671,6 @@ TEST_F(Step06Gpu, TheFogsHorizonTableIsTheSkyCubeAtTheHorizon) {
     ASSERT_GT(brightest, 0.1) << "the sky must be lit for the comparison to mean anything";
     EXPECT_LT(worst_colour, 0.0025 * brightest);
     EXPECT_LT(worst_coordinate, 1e-6);
-}
-
-// combined_levels.glsl against combined_levels.hpp in double, at 4096 random offsets within 3 km of
-// the centre (and the centre itself): the texels are powers of two times the finest, so they agree
-// but for float rounding (relative 1e-6), except within 1e-4 of a level's edge, where a float and a
-// double may fall on either side (those points are left out, and must be few).
-TEST_F(Step06Gpu, CombinedLevelTexelsAreTheCpuReferences) {
-    constexpr int kCount = 4096;
-    const float texels = 256, finest = 0.045f;
-    std::mt19937 random(29);
-    std::uniform_real_distribution<float> metres(-3000, 3000), scale(-6, 0);
-    std::vector<glm::vec2> offsets{{0, 0}};
-    // Spread over the levels: |offset| from about 3 mm to 3 km, evenly in its logarithm.
-    while (int(offsets.size()) < kCount) offsets.emplace_back(glm::vec2(metres(random), metres(random)) * std::exp2(scale(random) * 3.3f));
-    ocean::Buffer in = ocean::make_buffer(), out = ocean::make_buffer();
-    glNamedBufferStorage(in.id(), GLsizeiptr(offsets.size() * sizeof(glm::vec2)), offsets.data(), 0);
-    glNamedBufferStorage(out.id(), GLsizeiptr(offsets.size() * sizeof(float)), nullptr, 0);
-    ocean::ShaderProgram* program = cache("eval_combined_levels", {"step06_foam_sky/tests/eval_combined_levels.comp"}, {});
-    ASSERT_NE(program, nullptr);
-    program->set("u_count", kCount);
-    program->set("u_texels", texels);
-    program->set("u_finest_texel", finest);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-    glUseProgram(program->id());
-    glDispatchCompute(kCount / 64, 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<float> gpu(offsets.size());
-    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(gpu.size() * sizeof(float)), gpu.data());
-    double worst = 0;
-    int compared = 0;
-    std::set<double> levels;
-    for (std::size_t i = 0; i < offsets.size(); ++i) {
-        const glm::dvec2 offset(offsets[i]);
-        const double edge = std::log2(2 * std::max(std::abs(offset.x), std::abs(offset.y)) / (double(texels) * finest));
-        if (edge > 0 && std::abs(edge - std::round(edge)) < 1e-4) continue;
-        const double cpu = step06::combined_level_texel(offset, texels, finest);
-        worst = std::max(worst, std::abs(gpu[i] - cpu) / cpu);
-        levels.insert(cpu);
-        ++compared;
-    }
-    std::printf("combined levels: %d of %d offsets compared, %zu levels, worst relative |GPU - CPU| %.1e\n", compared,
-                kCount, levels.size(), worst);
-    EXPECT_GT(compared, kCount * 99 / 100);
-    EXPECT_GE(levels.size(), 8u) << "the offsets should reach across most levels";
-    EXPECT_LT(worst, 1e-6);
 }
 
 // A float texture of width x height holding `texels` (RGBA), sampled linearly and clamped.

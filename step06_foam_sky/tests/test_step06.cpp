@@ -5,9 +5,8 @@
 #include "step05_fft/spectrum.hpp"
 #include "step06_foam_sky/bloom.hpp"
 #include "step06_foam_sky/cascades.hpp"
-#include "step06_foam_sky/combined_levels.hpp"
-#include "step06_foam_sky/combined_surface.hpp"
 #include "step06_foam_sky/fog.hpp"
+#include "step06_foam_sky/sea.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/look_params.hpp"
@@ -294,22 +293,20 @@ TEST(Step06FoamPattern, StreaksFromBeaufortSevenOutlastTheWhitecaps) {
 TEST(Step06Presets, AStormIsAtLeastTwiceAsHighAsABreeze) {
     std::map<std::string, double> hs;
     for (const char* name : {"calm", "breezy", "stormy", "crossing"}) {
-        step05::OceanParams ocean;
-        step06::use_default_sea(ocean);
+        step06::Sea sea;  // the parameters step06 declares, as its program does
         step06::LookParams look;
-        step06::FoamSettings foam;
         ocean::ParamRegistry registry;
-        ocean.declare(registry);
+        sea.declare(registry);
         look.declare(registry);
-        step06::declare_foam_params(registry, foam);
         const auto error = registry.load_preset(std::string(OCEAN_SOURCE_DIR) + "/step06_foam_sky/presets/" + name + ".preset");
         ASSERT_FALSE(error) << *error;
         double variance = 0;
-        for (const auto& p : step06::cascade_spectra(ocean.spectrum)) variance += step05::resolved_variance(p);
+        const step05::SpectrumParams& spectrum = sea.spectrum();
+        for (const auto& p : step06::cascade_spectra(spectrum)) variance += step05::resolved_variance(p);
         hs[name] = 4 * std::sqrt(variance);
         std::printf("%-8s U %4.1f m/s, fetch %5.0f km, swell %.1f m: Hs of the drawn sea %.2f m, first tile %.0f m\n",
-                    name, ocean.spectrum.wind_speed, ocean.spectrum.fetch / 1000, ocean.spectrum.swell_height, hs[name],
-                    step06::largest_tile(ocean.spectrum));
+                    name, spectrum.wind_speed, spectrum.fetch / 1000, spectrum.swell_height, hs[name],
+                    step06::largest_tile(spectrum));
     }
     EXPECT_GE(hs["stormy"], 2 * hs["breezy"]);
     EXPECT_LT(hs["calm"], hs["breezy"]);
@@ -646,55 +643,4 @@ TEST(Step06Effects, OneTableOfNamesAndAMisspeltNameIsRefused) {
         EXPECT_FALSE(registry.set(std::string("show_") + name, "false").has_value()) << name;
         EXPECT_FALSE(look.show(step06::effect_named(name))) << name;
     }
-}
-
-// The cascades combined around the camera (combined_levels.hpp): nested squares, each twice the
-// extent of the one inside it and each `texels` on a side, so level k reaches texels * t0 * 2^k / 2
-// from the centre with texels t0 * 2^k. A point just inside a level's reach has its texel, just
-// outside it twice that; the reach is the square's (max(|x|, |z|)), not the circle's.
-TEST(Step06CombinedLevels, EachLevelTwiceTheExtentAndTheTexelOfTheOneInside) {
-    const double texels = 256, finest = 0.05;
-    EXPECT_DOUBLE_EQ(step06::combined_level_texel({0, 0}, texels, finest), finest);
-    for (int k = 0; k < 10; ++k) {
-        const double reach = texels * finest * std::exp2(k) / 2, texel = finest * std::exp2(k);
-        EXPECT_DOUBLE_EQ(step06::combined_level_texel({reach * 0.999, 0}, texels, finest), texel) << "level " << k;
-        EXPECT_DOUBLE_EQ(step06::combined_level_texel({0, -reach * 1.001}, texels, finest), 2 * texel) << "level " << k;
-        // A corner of the square: farther than the reach as the crow flies, still inside.
-        EXPECT_DOUBLE_EQ(step06::combined_level_texel({-reach * 0.99, reach * 0.99}, texels, finest), texel) << "level " << k;
-    }
-    // Twice the texels a level: the same point one level further in, at the same texel size there.
-    EXPECT_DOUBLE_EQ(step06::combined_level_texel({1000, 0}, 256, finest), finest * 256);  // 2000 / 12.8 = 156: level 8
-    EXPECT_DOUBLE_EQ(step06::combined_level_texel({1000, 0}, 512, finest), finest * 128);
-}
-
-// surface=combined (combined_surface.hpp): the levels hold the whole mesh, the finest texel is a
-// power of two no coarser than the finest cascade's (so every level's texel divides kOriginStep),
-// and the level a point is read from hands over to the next without a jump: the blended level
-// (level + the next one's weight) grows continuously with the reach, and the level holds the point.
-TEST(Step06CombinedSurface, LevelsHoldTheMeshAndHandOverWithoutAJump) {
-    const double finest = 500 / 3.7 / 3.3 / 3.55 / 256;  // the default sea's finest texel, 4.5 cm
-    const double texel0 = step06::combined_texel0(finest);
-    EXPECT_DOUBLE_EQ(texel0, 1.0 / 32);
-    EXPECT_DOUBLE_EQ(step06::combined_texel0(0.125), 0.125);
-    EXPECT_DOUBLE_EQ(std::fmod(step06::kOriginStep, texel0), 0.0);
-    for (int n : {256, 1024}) {
-        const double side0 = n * texel0, reach = 0.5 * 96 * 16 + 16 + 12;  // the default mesh's half side
-        const int levels = step06::combined_level_count(reach, n, texel0);
-        EXPECT_GE(step06::kLevelReach * side0 * std::exp2(levels - 1), reach) << n;  // the last level holds it
-        EXPECT_LT(step06::kLevelReach * side0 * std::exp2(levels - 2), reach) << n;  // and no level is spare
-        double before = 0;
-        for (double r = 0; r <= reach; r += side0 / 4096) {
-            const step06::LevelChoice at = step06::combined_level_at(r, side0, levels);
-            const double side = side0 * std::exp2(at.level);
-            ASSERT_LE(r, step06::kLevelReach * side + 1e-9) << "level " << at.level << " does not hold r = " << r;
-            const double blended = at.level + at.next_weight;
-            ASSERT_LE(std::abs(blended - before), 0.02) << "a jump at r = " << r;
-            ASSERT_GE(blended, before - 1e-12) << "the level should only grow with the reach";
-            before = blended;
-        }
-        EXPECT_EQ(step06::combined_level_at(0, side0, levels).level, 0);
-        EXPECT_EQ(step06::combined_level_at(reach, side0, levels).next_weight, 0.0);  // past the last: no next
-    }
-    // A vast mesh gets the most levels there are (kMaxCombinedLevels), not more.
-    EXPECT_EQ(step06::combined_level_count(1e9, 256, texel0), step06::kMaxCombinedLevels);
 }

@@ -1,0 +1,98 @@
+#include "step06_foam_sky/sea_renderer.hpp"
+
+#include "common/frustum.hpp"
+#include "step06_foam_sky/far_plane.hpp"
+#include "step06_foam_sky/texture_units.h"
+
+namespace step06 {
+
+// Most samples of each cascade along a pixel's long footprint (cascades_visible.glsl: a sea seen
+// at a grazing angle, filtered as anisotropic filtering would).
+constexpr int kAnisotropicTaps = 4;
+
+void SeaRenderer::declare(ocean::ParamRegistry& p) {
+    {
+        const auto mesh_group = p.group("mesh");
+        p.add_float("tess_scale", &tess_scale_, 0.5f, 64, "edge level = tess_scale * patch / distance");
+        p.add_float("tess_patch_size", &tess_patch_size_, 2, 200, "side of a tessellated patch, metres")
+            .bumps(patches_changed_);
+        p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").bumps(patches_changed_);
+        p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level");
+    }
+    p.add_choice("view", &view_, {"shaded", "normals", "foam", "jacobian", "tessellation"},
+                 "the final picture, or one ingredient");
+}
+
+void SeaRenderer::draw(const Sea& sea, const Sky& sky, const LookParams& look, const SeaFrame& frame) {
+    if (patches_built_for_ != patches_changed_.value) {
+        patches_built_for_ = patches_changed_.value;
+        patches_.build(patch_count_, tess_patch_size_);
+    }
+    if (wireframe_) {
+        draw_mesh("ocean_wireframe", {"WIREFRAME 1"}, sea, frame);
+        return;
+    }
+    // Deferred (gbuffer.hpp): the mesh records where each pixel meets the sea, then each of
+    // those pixels is shaded once.
+    gbuffer_.resize(frame.size, frame.scene_depth);
+    gbuffer_.bind();
+    // The view coloured by tessellation level has the mesh record the level where the shading
+    // otherwise reads the choppy normal's cross term (ocean.frag).
+    if (view_ == kViewTessellationLevel) draw_mesh("ocean_levels", {"LEVEL_VIEW 1"}, sea, frame);
+    else draw_mesh("ocean", {}, sea, frame);
+    glBindFramebuffer(GL_FRAMEBUFFER, frame.scene);
+    glViewport(0, 0, frame.size.x, frame.size.y);
+    shade(sea, sky, look, frame);
+}
+
+// The tessellated patches around the camera (depth tested and written): ocean.frag records the
+// G-buffer, or with WIREFRAME 1 draws the edges.
+void SeaRenderer::draw_mesh(const std::string& name, const std::vector<std::string>& defines, const Sea& sea,
+                            const SeaFrame& frame) {
+    ocean::ShaderProgram* mesh =
+        programs_(name, {"step06_foam_sky/shaders/ocean.vert", "step06_foam_sky/shaders/ocean.tesc",
+                         "step06_foam_sky/shaders/ocean.tese", "step06_foam_sky/shaders/ocean.frag"},
+                  defines);
+    if (mesh == nullptr) return;
+    sea.bind_maps(*mesh);
+    // The grid follows the camera in whole patches of the world (in double), then is placed
+    // from the world origin.
+    const double patch = double(tess_patch_size_);
+    const glm::dvec2 grid_offset = glm::floor(glm::dvec2(frame.eye.x, frame.eye.z) / patch) * patch;
+    mesh->set("u_view_projection", frame.view_projection);
+    mesh->set("u_eye", glm::vec3(frame.eye - sea.world_origin()));
+    mesh->set("u_grid_offset", glm::vec2(grid_offset - sea.cascades().origin));
+    mesh->set("u_tess_patch_size", tess_patch_size_);
+    mesh->set("u_tess_scale", tess_scale_);
+    mesh->set("u_frustum", ocean::frustum_planes(frame.view_projection));
+    // The patches' boxes widened by how far the sea can move them.
+    mesh->set("u_max_displacement", float(sea.largest_displacement()));
+    mesh->set("u_cull", 1);
+    glEnable(GL_DEPTH_TEST);
+    glUseProgram(mesh->id());
+    if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    patches_.draw();
+    if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDisable(GL_DEPTH_TEST);
+}
+
+// ocean_shade.frag at every pixel where the mesh wrote depth.
+void SeaRenderer::shade(const Sea& sea, const Sky& sky, const LookParams& look, const SeaFrame& frame) {
+    const int debug = view_ == kViewShaded ? 0 : view_;
+    ocean::ShaderProgram* shade = programs_(
+        "ocean_shade", {"fullscreen.vert", "step06_foam_sky/shaders/ocean_shade.frag"},
+        {"MICROFACET " + std::to_string(look.microfacet), "DEBUG_VIEW " + std::to_string(debug),
+         "ANISOTROPIC_TAPS " + std::to_string(kAnisotropicTaps), "STREAKS " + std::to_string(int(sea.has_streaks()))});
+    if (shade == nullptr) return;
+    sea.bind_for_shading(*shade);
+    sky.bind();
+    look.upload_shading(*shade);
+    shade->set("u_eye", glm::vec3(frame.eye - sea.world_origin()));
+    shade->set("u_sky_max_lod", sky.max_lod());
+    glBindTextureUnit(UNIT_GBUFFER_WORLD, gbuffer_.world_texture());
+    glBindTextureUnit(UNIT_GBUFFER_REST, gbuffer_.rest_texture());
+    glUseProgram(shade->id());
+    draw_at_far_plane(GL_GREATER, frame.fullscreen_vao);
+}
+
+}  // namespace step06

@@ -1,0 +1,67 @@
+// step06's sea drawn into the HDR scene, the third part of its program: the patches around the
+// camera, tessellated by distance and culled by the view (ocean.vert/.tesc/.tese), record where
+// each pixel meets the sea (deferred: gbuffer.hpp); then each of those pixels is shaded once
+// (ocean_shade.frag): foam, scatter, microfacet specular, the sky's reflection, fog.
+#pragma once
+
+#include "common/params.hpp"
+#include "common/shader.hpp"
+#include "step06_foam_sky/gbuffer.hpp"
+#include "step06_foam_sky/look_params.hpp"
+#include "step06_foam_sky/patch_grid.hpp"
+#include "step06_foam_sky/sea.hpp"
+#include "step06_foam_sky/sky.hpp"
+
+#include <glm/mat4x4.hpp>
+
+#include <string>
+#include <vector>
+
+namespace step06 {
+
+// The `view` parameter's choices, in its order: the picture, or one of its ingredients. Normals
+// to TessellationLevel are also ocean_shade.frag's DEBUG_VIEW numbers.
+enum View : int { kViewShaded, kViewNormals, kViewFoam, kViewJacobian, kViewTessellationLevel };
+
+// What a frame gives the renderer: where the camera is (the eye in world metres, double) and the
+// view-projection from the sea's world origin (Sea::world_origin).
+struct SeaFrame {
+    glm::mat4 view_projection;
+    glm::dvec3 eye;
+    glm::ivec2 size;  // pixels
+    GLuint scene;        // the HDR scene's framebuffer, which the shading draws into
+    GLuint scene_depth;  // and its depth texture, shared with the G-buffer
+    GLuint fullscreen_vao;
+};
+
+class SeaRenderer {
+public:
+    // The mesh (tessellation, patches, wireframe) and the view.
+    void declare(ocean::ParamRegistry& p);
+    void init(ocean::ProgramFactory programs) { programs_ = std::move(programs); }
+
+    // Draws the sea: into the G-buffer, then shaded into the HDR scene where the mesh wrote depth
+    // (the wireframe straight into the scene).
+    void draw(const Sea& sea, const Sky& sky, const LookParams& look, const SeaFrame& frame);
+
+    View view() const { return View(view_); }
+    int patch_count() const { return patches_.patch_count(); }
+    float patch_size() const { return tess_patch_size_; }
+
+private:
+    void draw_mesh(const std::string& name, const std::vector<std::string>& defines, const Sea& sea,
+                   const SeaFrame& frame);
+    void shade(const Sea& sea, const Sky& sky, const LookParams& look, const SeaFrame& frame);
+
+    ocean::ProgramFactory programs_;
+    PatchGrid patches_;
+    GBuffer gbuffer_;
+    ocean::Generation patches_changed_;  // patch_count, tess_patch_size
+    unsigned patches_built_for_ = 0;
+    float tess_scale_ = 12, tess_patch_size_ = 16;
+    int patch_count_ = 96;
+    bool wireframe_ = false;
+    int view_ = kViewShaded;
+};
+
+}  // namespace step06
