@@ -6,10 +6,6 @@
 
 namespace step06 {
 
-// Most samples of each cascade along a pixel's long footprint (cascades_visible.glsl: a sea seen
-// at a grazing angle, filtered as anisotropic filtering would).
-constexpr int kAnisotropicTaps = 4;
-
 void SeaRenderer::declare(ocean::ParamRegistry& p) {
     {
         const auto mesh_group = p.group("mesh");
@@ -18,6 +14,8 @@ void SeaRenderer::declare(ocean::ParamRegistry& p) {
             .bumps(patches_changed_);
         p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").bumps(patches_changed_);
         p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level");
+        p.add_int("anisotropy", &anisotropy_, 1, 16,
+                  "most samples of each cascade along a pixel's long footprint (1: isotropic trilinear)");
     }
     p.add_choice("view", &view_, {"shaded", "normals", "foam", "jacobian", "tessellation"},
                  "the final picture, or one ingredient");
@@ -82,7 +80,7 @@ void SeaRenderer::shade(const Sea& sea, const Sky& sky, const LookParams& look, 
     ocean::ShaderProgram* shade = programs_(
         "ocean_shade", {"fullscreen.vert", "step06_foam_sky/shaders/ocean_shade.frag"},
         {"MICROFACET " + std::to_string(look.microfacet), "DEBUG_VIEW " + std::to_string(debug),
-         "ANISOTROPIC_TAPS " + std::to_string(kAnisotropicTaps), "STREAKS " + std::to_string(int(sea.has_streaks()))});
+         "ANISOTROPIC_TAPS " + std::to_string(anisotropy_), "STREAKS " + std::to_string(int(sea.has_streaks()))});
     if (shade == nullptr) return;
     sea.bind_for_shading(*shade);
     sky.bind();

@@ -36,7 +36,7 @@ struct SeaFrame {
 
 class SeaRenderer {
 public:
-    // The mesh (tessellation, patches, wireframe) and the view.
+    // The mesh (tessellation, patches, wireframe), the filtering of the maps, and the view.
     void declare(ocean::ParamRegistry& p);
     void init(ocean::ProgramFactory programs) { programs_ = std::move(programs); }
 
@@ -61,6 +61,7 @@ private:
     float tess_scale_ = 12, tess_patch_size_ = 16;
     int patch_count_ = 96;
     bool wireframe_ = false;
+    int anisotropy_ = 4;  // cascades_visible.glsl's ANISOTROPIC_TAPS: a sea seen at a grazing angle
     int view_ = kViewShaded;
 };
 

@@ -11,8 +11,7 @@ Only the frame (total_ms) is a cost on its own. On llvmpipe the per-pass times a
 compute dispatch first finishes the drawing queued before it, so a pass's timer can hold some of
 the previous pass's work. They are printed as a guide. A `bench-csv-header:` line, where the file
 has one, names the columns after the passes (a step's own figures, in ms): those are printed too,
-under their names. One of them is a cost on its own: step06's `shading_alone_ms`
-(`--set bench_shading_repeats=N`), its shading pass drawn again and timed alone.
+under their names.
 """
 import statistics
 import sys

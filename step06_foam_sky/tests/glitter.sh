@@ -12,7 +12,6 @@ winds=${*:-3 7 10 15 20}
 mkdir -p "$out"
 view=(--headless --size 256x256 --frames 1 --time 5
       --set microfacet=beckmann --set sun_elevation=90 --set sun_intensity=3 --set exposure=1 --set tonemapper=none
-      --set dither=false
       --set show_ambient_term=false --set show_scatter_term=false --set show_reflection_term=false
       --set show_foam=false --set show_fog=false --set show_bloom=false
       --set camera_pitch=89 --set camera_distance=800 --set camera_target_y=0 --set camera_fov=100

@@ -17,7 +17,7 @@ mkdir -p "$out"
 # photograph HEIGHT WIND: leaves $out/HEIGHT_WIND (the export) and its .foam, .water, .white.png
 photograph() {
   local dir="$out/${1}m_wind_$2"
-  local sea=(--headless --size 256x256 --set tonemapper=none --set dither=false --set exposure=0.5
+  local sea=(--headless --size 256x256 --set tonemapper=none --set exposure=0.5
              --set show_specular_term=false --set show_reflection_term=false --set show_fog=false --set show_bloom=false
              --set camera_pitch=89 --set "camera_distance=$1" --set camera_target_y=0 --set camera_fov=80
              --set "wind_speed=$2")

@@ -37,8 +37,8 @@ TEST_F(ShaderBuild, TheListHasEveryStepsShaders) {
 }
 
 TEST_F(ShaderBuild, EveryShaderCompilesAndEveryProgramLinks) {
-    // folder/stem -> stage files; a compute shader is a program of its own (step06's
-    // ocean_shade.comp beside ocean_shade.frag: one shading, two programs).
+    // folder/stem -> stage files; a compute shader is a program of its own (a shader.comp beside
+    // a shader.frag of the same stem would be two programs, not one).
     std::map<std::string, std::vector<std::string>> programs;
     for (const auto& file : repository_shaders()) {
         const fs::path p(file);

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 
 namespace {
 
@@ -41,6 +42,22 @@ TEST_F(Fixture, DeclarationStoresTheDefault) {
     EXPECT_EQ(count, 3);
     EXPECT_FALSE(wireframe);
     EXPECT_EQ(colour, glm::vec3(0.1f, 0.2f, 0.3f));
+}
+
+// A later chapter takes back what an earlier chapter's declaration gives and it does not show
+// (step06 keeps step05's sea state, not the spectrum's shape): the name is then unknown, its
+// variable keeps its default, and a name never declared is a programming error.
+TEST_F(Fixture, RemovedParametersAreUnknownAndKeepTheirDefaults) {
+    params.remove({"wave_count", "sky_image"});
+    EXPECT_EQ(params.find("wave_count"), nullptr);
+    EXPECT_EQ(params.all().size(), 4u);
+    const auto error = params.set("wave_count", "5");
+    ASSERT_TRUE(error.has_value());
+    EXPECT_NE(error->find("unknown parameter 'wave_count'"), std::string::npos) << *error;
+    EXPECT_EQ(count, 3);
+    EXPECT_FALSE(params.set("amplitude", "2").has_value());  // the others as before
+    EXPECT_EQ(params.list_text().find("wave_count"), std::string::npos);
+    EXPECT_THROW(params.remove({"no_such_parameter"}), std::logic_error);
 }
 
 TEST_F(Fixture, SetsGoodValuesOfEveryType) {
