@@ -3,8 +3,7 @@
 
 A lesson teaches what the code does and why; how fast it ran on which machine, which issue changed
 it and what was tried and not kept belong to the maintainers' pages: docs/performance.md (costs,
-drivers, what did not pay) and each step's how_we_know.md (tests and their evidence). See DESIGN.md,
-"Lesson and lab". Where a technique exists for speed the lesson says why in one sentence and links
+drivers, what did not pay) and each step's how_we_know.md (tests and their evidence). Where a technique exists for speed the lesson says why in one sentence and links
 ../docs/performance.md; the figures stay there, so a lesson does not go stale with a driver.
 
 Every line of every step*/README.md (step_template's too), code blocks included but their
