@@ -44,7 +44,7 @@ strip() {  # strip NAME [flags...]
   local name=$1
   shift
   "$build/step06_foam_sky/step06_foam_sky" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 \
-    --set show_bloom=false --set dither=false --screenshot "$scratch/$name.png" "$@" > /dev/null
+    --set show_bloom=false --screenshot "$scratch/$name.png" "$@" > /dev/null
 }
 strip isotropic --set anisotropy=1
 strip two --set anisotropy=2
@@ -55,14 +55,31 @@ crop=0,0.3,0.625,0.6
   "before: one trilinear fetch|$scratch/isotropic.png|$crop" "2 pieces|$scratch/two.png|$crop" \
   "4 pieces (the default)|$scratch/four.png|$crop" "reference: 16x supersampled|$scratch/reference.png|$crop"
 echo step06_foam_sky/streaks.png
-# What the cascades combined around the camera would keep (README, "Why the cascades are not
-# combined around the camera"): the same strip, closer, with combined_texels.
-strip combined_256 --set combined_texels=256
-strip combined_512 --set combined_texels=512
-near=0.1,0.34,0.45,0.5
-"$build/tools/image_panel" "$root/step06_foam_sky/combined_levels.png" 560x128 2 \
-  "the cascades sampled per pixel (what step06 does)|$scratch/four.png|$near" \
-  "reference: 16x supersampled|$scratch/reference.png|$near" \
-  "combined around the camera, 256 x 256 a level|$scratch/combined_256.png|$near" \
-  "combined, 512 x 512 a level|$scratch/combined_512.png|$near"
-echo step06_foam_sky/combined_levels.png
+
+# Build it yourself (step06's README): the picture after each piece of the chapter, made with its
+# own switches (every piece is on in the last), then close-ups of the two pieces whose change is
+# small at that size (fog, bloom), and the sky's reflection on the left of a split view, off on
+# the right.
+piece() {  # piece NAME [flags...]
+  local name=$1
+  shift
+  "$build/step06_foam_sky/step06_foam_sky" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 \
+    --screenshot "$scratch/$name.png" "$@" > /dev/null
+}
+piece mesh --set wireframe=true
+piece lit --set show_specular_term=false --set show_reflection_term=false --set show_foam=false \
+  --set show_fog=false --set show_bloom=false
+piece sky --set show_foam=false --set show_fog=false --set show_bloom=false
+piece foam --set show_fog=false --set show_bloom=false
+piece fog --set show_bloom=false
+piece bloom
+"$build/tools/image_panel" "$root/step06_foam_sky/build_it_yourself.png" 320x180 3 \
+  "1. the mesh (wireframe=true)|$scratch/mesh.png" "2. lit: ambient and scatter|$scratch/lit.png" \
+  "3. + the sky's reflection and the sun|$scratch/sky.png" "4. + foam|$scratch/foam.png" \
+  "5. + fog|$scratch/fog.png" "6. + bloom: the final picture|$scratch/bloom.png"
+echo step06_foam_sky/build_it_yourself.png
+"$build/tools/image_panel" "$root/step06_foam_sky/build_it_yourself_closeup.png" 480x180 2 \
+  "without fog|$scratch/foam.png|0,0.3,0.5,0.55" "with fog|$scratch/fog.png|0,0.3,0.5,0.55" \
+  "without bloom|$scratch/fog.png|0.55,0,1,0.6" "with bloom|$scratch/bloom.png|0.55,0,1,0.6"
+echo step06_foam_sky/build_it_yourself_closeup.png
+run step06_foam_sky split_reflection.png --split --set split_effect=reflection_term
