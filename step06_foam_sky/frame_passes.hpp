@@ -24,7 +24,7 @@ constexpr std::array<FramePass, 8> kFramePasses{{
      "sky (cubemap);horizon (1D, 256)"},
     {"ocean", "ocean.vert, ocean.tesc, ocean.tese, ocean.frag: the G-buffer", "displacement (4 layers)",
      "G-buffer (world RGBA32F, rest RGBA32UI);depth"},
-    {"ocean", "ocean_shade.frag where depth < far",
+    {"ocean", "ocean_shade.frag where depth < far: ocean_shade.glsl",
      "G-buffer (world RGBA32F, rest RGBA32UI);depth;slopes (4 layers);foam (rg32f, 3 levels);bubble pattern;sky (cubemap);horizon (1D, 256)",
      "scene (RGBA16F, HDR)"},
     {"background", "sky.frag where depth = far: sky and sun disc", "depth;sky (cubemap)", "scene (RGBA16F, HDR)"},

@@ -15,7 +15,6 @@
 //   PostProcess  post.hpp          bloom and the tonemapper
 // and LookParams (look_params.hpp), the light, water and image parameters they share.
 #include "common/app.hpp"
-#include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/look_params.hpp"
 #include "step06_foam_sky/post.hpp"
 #include "step06_foam_sky/sea.hpp"
@@ -24,7 +23,6 @@
 
 #include <imgui.h>
 
-#include <iostream>
 #include <memory>
 
 namespace {
@@ -74,9 +72,7 @@ private:
             sea_.update_foam(dt, eye, camera().forward());
         }
         ocean::GpuScope timed(timers(), "sky");
-        sky_->follow_image(look_.sky_image, look_.sky_image_changes.value);
-        sky_settings_ = look_.sky(time, sea_.wind_direction());
-        sky_->render(sky_settings_);
+        sky_->update(look_.sky(time, sea_.wind_direction()), look_.sky_image, look_.sky_image_changes.value);
     }
 
     // The frame into the HDR scene, then to the screen. Camera-relative: the view, the mesh and
@@ -93,7 +89,7 @@ private:
         }
         {
             ocean::GpuScope timed(timers(), "background");
-            sky_->draw_background(sky_settings_, view_projection, fullscreen_vao());
+            sky_->draw_background(view_projection, fullscreen_vao());
         }
         const step06::PostSettings image = look_.post(renderer_.view() == step06::kViewShaded);
         {
@@ -124,17 +120,12 @@ private:
             ocean::ProgramFactory programs = program_factory();
             sea_.export_surface(dir, programs, time(), params());
         });
-        offer_bench_figures([this] {
-            const step05::BackendTimes times = step05::time_backends(sea_.simulation(), time(), 5);
-            for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
-            return times.figures();
-        });
+        offer_bench_figures([this] { return sea_.time_backends(time()); });
         offer_warm_up([this] { return sea_.choosing_backend(); });
     }
 
     step06::Sea sea_;
     std::unique_ptr<step06::Sky> sky_;
-    step06::SkySettings sky_settings_;  // this frame's, as the cubemap was rendered with
     step06::SeaRenderer renderer_;
     step06::PostProcess post_;
     step06::LookParams look_;

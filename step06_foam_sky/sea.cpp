@@ -113,6 +113,12 @@ std::vector<double> Sea::tile_sizes() const {
     return tiles;
 }
 
+std::vector<std::pair<std::string, double>> Sea::time_backends(double time) {
+    const step05::BackendTimes times = step05::time_backends(*simulation_, time, 5);
+    for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
+    return times.figures();
+}
+
 void Sea::export_surface(const std::string& dir, ocean::ProgramFactory& programs, double time,
                          const ocean::ParamRegistry& params) const {
     step06::export_surface(dir, programs, *simulation_, *foam_, cascade_view_, time, params_.choppiness,

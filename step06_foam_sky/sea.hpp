@@ -21,6 +21,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace step06 {
@@ -62,6 +63,9 @@ public:
     const step05::OceanSimulation& simulation() const { return *simulation_; }
     // Whether backend auto is still timing the two transforms (--bench waits for it).
     bool choosing_backend() const { return !simulation_ || simulation_->auto_deciding(); }
+    // --bench's extra figures: the four cascades' transforms through each backend and the FFTW
+    // floor (step05's time_backends), printed as `bench:` lines and returned as (label, ms).
+    std::vector<std::pair<std::string, double>> time_backends(double time);
     // --export: the summed surface and the foam on one grid around the camera (surface_export.hpp).
     void export_surface(const std::string& dir, ocean::ProgramFactory& programs, double time,
                         const ocean::ParamRegistry& params) const;

@@ -22,6 +22,18 @@ void SeaRenderer::declare(ocean::ParamRegistry& p) {
 }
 
 void SeaRenderer::draw(const Sea& sea, const Sky& sky, const LookParams& look, const SeaFrame& frame) {
+    record(sea, frame);
+    if (wireframe_) return;
+    // ocean_shade.frag at every pixel where the mesh wrote depth.
+    ocean::ShaderProgram* shade = programs_("ocean_shade", {"fullscreen.vert", "step06_foam_sky/shaders/ocean_shade.frag"},
+                                            shading_defines(sea, look));
+    if (shade == nullptr) return;
+    bind_shading(*shade, sea, sky, look, frame);
+    glUseProgram(shade->id());
+    draw_at_far_plane(GL_GREATER, frame.fullscreen_vao);
+}
+
+void SeaRenderer::record(const Sea& sea, const SeaFrame& frame) {
     if (patches_built_for_ != patches_changed_.value) {
         patches_built_for_ = patches_changed_.value;
         patches_.build(patch_count_, tess_patch_size_);
@@ -30,8 +42,8 @@ void SeaRenderer::draw(const Sea& sea, const Sky& sky, const LookParams& look, c
         draw_mesh("ocean_wireframe", {"WIREFRAME 1"}, sea, frame);
         return;
     }
-    // Deferred (gbuffer.hpp): the mesh records where each pixel meets the sea, then each of
-    // those pixels is shaded once.
+    // Deferred (gbuffer.hpp): the mesh records where each pixel meets the sea; the shading then
+    // reads it back, one pixel at a time, into the scene.
     gbuffer_.resize(frame.size, frame.scene_depth);
     gbuffer_.bind();
     // The view coloured by tessellation level has the mesh record the level where the shading
@@ -40,7 +52,6 @@ void SeaRenderer::draw(const Sea& sea, const Sky& sky, const LookParams& look, c
     else draw_mesh("ocean", {}, sea, frame);
     glBindFramebuffer(GL_FRAMEBUFFER, frame.scene);
     glViewport(0, 0, frame.size.x, frame.size.y);
-    shade(sea, sky, look, frame);
 }
 
 // The tessellated patches around the camera (depth tested and written): ocean.frag records the
@@ -74,23 +85,21 @@ void SeaRenderer::draw_mesh(const std::string& name, const std::vector<std::stri
     glDisable(GL_DEPTH_TEST);
 }
 
-// ocean_shade.frag at every pixel where the mesh wrote depth.
-void SeaRenderer::shade(const Sea& sea, const Sky& sky, const LookParams& look, const SeaFrame& frame) {
+std::vector<std::string> SeaRenderer::shading_defines(const Sea& sea, const LookParams& look) const {
     const int debug = view_ == kViewShaded ? 0 : view_;
-    ocean::ShaderProgram* shade = programs_(
-        "ocean_shade", {"fullscreen.vert", "step06_foam_sky/shaders/ocean_shade.frag"},
-        {"MICROFACET " + std::to_string(look.microfacet), "DEBUG_VIEW " + std::to_string(debug),
-         "ANISOTROPIC_TAPS " + std::to_string(anisotropy_), "STREAKS " + std::to_string(int(sea.has_streaks()))});
-    if (shade == nullptr) return;
-    sea.bind_for_shading(*shade);
+    return {"MICROFACET " + std::to_string(look.microfacet), "DEBUG_VIEW " + std::to_string(debug),
+            "ANISOTROPIC_TAPS " + std::to_string(anisotropy_), "STREAKS " + std::to_string(int(sea.has_streaks()))};
+}
+
+void SeaRenderer::bind_shading(const ocean::ShaderProgram& shade, const Sea& sea, const Sky& sky,
+                               const LookParams& look, const SeaFrame& frame) const {
+    sea.bind_for_shading(shade);
     sky.bind();
-    look.upload_shading(*shade);
-    shade->set("u_eye", glm::vec3(frame.eye - sea.world_origin()));
-    shade->set("u_sky_max_lod", sky.max_lod());
+    look.upload_shading(shade);
+    shade.set("u_eye", glm::vec3(frame.eye - sea.world_origin()));
+    shade.set("u_sky_max_lod", sky.max_lod());
     glBindTextureUnit(UNIT_GBUFFER_WORLD, gbuffer_.world_texture());
     glBindTextureUnit(UNIT_GBUFFER_REST, gbuffer_.rest_texture());
-    glUseProgram(shade->id());
-    draw_at_far_plane(GL_GREATER, frame.fullscreen_vao);
 }
 
 }  // namespace step06

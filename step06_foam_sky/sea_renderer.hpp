@@ -20,7 +20,7 @@
 namespace step06 {
 
 // The `view` parameter's choices, in its order: the picture, or one of its ingredients. Normals
-// to TessellationLevel are also ocean_shade.frag's DEBUG_VIEW numbers.
+// to TessellationLevel are also ocean_shade.glsl's DEBUG_VIEW numbers.
 enum View : int { kViewShaded, kViewNormals, kViewFoam, kViewJacobian, kViewTessellationLevel };
 
 // What a frame gives the renderer: where the camera is (the eye in world metres, double) and the
@@ -44,14 +44,22 @@ public:
     // (the wireframe straight into the scene).
     void draw(const Sea& sea, const Sky& sky, const LookParams& look, const SeaFrame& frame);
 
+    // The two halves of draw(), for a program that shades the G-buffer its own way (lab/): the
+    // mesh into the G-buffer (the wireframe straight into the scene), and what the shading reads:
+    // its variant's defines, and its textures and uniforms bound to `shade`.
+    void record(const Sea& sea, const SeaFrame& frame);
+    std::vector<std::string> shading_defines(const Sea& sea, const LookParams& look) const;
+    void bind_shading(const ocean::ShaderProgram& shade, const Sea& sea, const Sky& sky, const LookParams& look,
+                      const SeaFrame& frame) const;
+
     View view() const { return View(view_); }
+    bool wireframe() const { return wireframe_; }
     int patch_count() const { return patches_.patch_count(); }
     float patch_size() const { return tess_patch_size_; }
 
 private:
     void draw_mesh(const std::string& name, const std::vector<std::string>& defines, const Sea& sea,
                    const SeaFrame& frame);
-    void shade(const Sea& sea, const Sky& sky, const LookParams& look, const SeaFrame& frame);
 
     ocean::ProgramFactory programs_;
     PatchGrid patches_;

@@ -35,15 +35,19 @@ Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(program
     glTextureParameteri(horizon_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the horizon goes round
 }
 
-void Sky::follow_image(const std::string& path, unsigned version) {
-    if (version == image_version_) return;
-    image_version_ = version;
-    if (auto warning = use_image(path)) std::cerr << "warning: " << *warning << "\n";
+void Sky::update(const SkySettings& settings, const std::string& image, unsigned image_version) {
+    if (image_version != image_version_) {
+        image_version_ = image_version;
+        if (auto warning = use_image(image)) std::cerr << "warning: " << *warning << "\n";
+    }
+    settings_ = settings;
+    render(settings_);
 }
 
 // Drawn last, and only where the sea left the depth at the far plane: drawn first, under
 // everything, most of its pixels would be drawn again by the sea.
-void Sky::draw_background(const SkySettings& settings, const glm::mat4& view_projection, GLuint fullscreen_vao) {
+void Sky::draw_background(const glm::mat4& view_projection, GLuint fullscreen_vao) {
+    const SkySettings& settings = settings_;
     ocean::ShaderProgram* sky = programs_("sky", {"fullscreen.vert", std::string(kShaders) + "sky.frag"}, {});
     if (sky == nullptr) return;
     sky->set("u_to_sun", settings.to_sun);

@@ -33,13 +33,15 @@ public:
     // keeps (or goes back to) the procedural sky. An empty path means the procedural sky.
     std::optional<std::string> use_image(const std::string& path);
     void render(const SkySettings& settings);  // procedural: every call; image: once
-    // use_image(path) when `version` (the sky_image parameter's Generation) moved since the last
-    // call; a file that cannot be read is a warning on stderr, and the procedural sky.
-    void follow_image(const std::string& path, unsigned version);
+    // Once a frame: use_image(image) when `image_version` (the sky_image parameter's Generation)
+    // moved since the last call (a file that cannot be read is a warning on stderr, and the
+    // procedural sky), then render(settings). The frame's other passes read settings().
+    void update(const SkySettings& settings, const std::string& image, unsigned image_version);
+    const SkySettings& settings() const { return settings_; }
     // The sky behind the sea and the sun's disc, where the sea left the depth at the far plane
     // (sky.frag). The disc is drawn here, not kept in the cubemap: the water's specular term is
     // the sun's reflection, and a disc in the reflected sky would count it twice.
-    void draw_background(const SkySettings& settings, const glm::mat4& view_projection, GLuint fullscreen_vao);
+    void draw_background(const glm::mat4& view_projection, GLuint fullscreen_vao);
 
     GLuint cubemap() const { return cubemap_.id(); }
     // The fog's colour around the horizon (sky_horizon.glsl): kHorizonTexels of the cube at
@@ -62,7 +64,8 @@ private:
     int size_;
     ocean::Texture cubemap_, equirect_, horizon_;
     bool image_rendered_ = false;
-    unsigned image_version_ = 0;  // follow_image's last version
+    unsigned image_version_ = 0;  // update()'s last image_version
+    SkySettings settings_;        // update()'s
 };
 
 // sky.glsl's clouds, the CPU reference: lattice_hash(x, y) in [0, 1) from integers alone (PCG),

@@ -75,6 +75,7 @@ public:
             .in_group("queries");
         use_camera(ocean::camera_view("low"), ocean::kOceanReach);
         offer_export([this](const std::string& dir) { export_all(dir); });
+        offer_bench_figures([this] { return sea_.time_backends(time()); });
         offer_warm_up([this] { return sea_.choosing_backend(); });
     }
 
@@ -100,9 +101,7 @@ private:
         }
         {
             ocean::GpuScope timed(timers(), "sky");
-            sky_->follow_image(look_.sky_image, look_.sky_image_changes.value);
-            sky_settings_ = look_.sky(time, sea_.wind_direction());
-            sky_->render(sky_settings_);
+            sky_->update(look_.sky(time, sea_.wind_direction()), look_.sky_image, look_.sky_image_changes.value);
         }
         ocean::GpuScope timed(timers(), "bodies");
         const auto started = std::chrono::steady_clock::now();
@@ -240,7 +239,7 @@ private:
         draw_bodies(view_projection);
         {
             ocean::GpuScope timed(timers(), "background");
-            sky_->draw_background(sky_settings_, view_projection, fullscreen_vao());
+            sky_->draw_background(view_projection, fullscreen_vao());
         }
         const step06::PostSettings image = look_.post(renderer_.view() == step06::kViewShaded);
         {
@@ -345,7 +344,6 @@ private:
     // step06's parts.
     step06::Sea sea_;
     std::unique_ptr<step06::Sky> sky_;
-    step06::SkySettings sky_settings_;
     step06::SeaRenderer renderer_;
     step06::PostProcess post_;
     step06::LookParams look_;

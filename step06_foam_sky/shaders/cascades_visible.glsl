@@ -1,5 +1,6 @@
-// For the shading pass (ocean_shade.frag): the cascades summed as this pixel sees them, filtered over the pixel's footprint on the sea. The footprint is given (the
-// deferred shading pass reads it from the G-buffer, gbuffer.hpp): GL's own level for texture()
+// For the shading pass (ocean_shade.glsl): the cascades summed as this pixel sees them, filtered
+// over the pixel's footprint on the sea. The footprint is given (the deferred shading pass reads
+// it from the G-buffer, gbuffer.hpp): GL's own level for texture()
 // comes from the differences across a 2 x 2 quad, meaningless where the quad straddles a crest
 // and the water behind it, so every fetch here takes the bias that turns GL's level into the one
 // the footprint asks for.
@@ -29,8 +30,10 @@ struct SurfaceFootprint {
     vec2 dx, dy;
 };
 
+#ifndef EXPLICIT_LEVELS
 // The longer side of the footprint GL assumes for texture(): from the quad's differences of p.
 float implicit_long_side(vec2 p) { return max(max(length(dFdxCoarse(p)), length(dFdyCoarse(p))), 1e-20); }
+#endif
 
 // What the pixel sees of the summed surface: set by sample_surface. Not the displacement: the
 // mesh has moved the point, and the normal's cross term l dDx/dz comes from its vertices too.
@@ -96,7 +99,14 @@ void add_cascade(int c, vec2 p, vec2 long_axis, float long_length, float short_l
     // per pixel for explicit ones, which made the pass 30 % slower. Everything that decides
     // the loop comes from the recorded coarse (per 2 x 2) derivatives, so the 2 x 2 pixels
     // agree on it.
+#ifdef EXPLICIT_LEVELS
+    // A pass with no 2 x 2 quads (lab/compute_shading): each piece at its own footprint's level.
+    float lod = cascade_lod(c, footprint);
+#define SLOPE_PIECE(uv) textureLod(u_slopes, uv, lod)
+#else
     float bias = log2(footprint / implicit_long_side(p));
+#define SLOPE_PIECE(uv) texture(u_slopes, uv, bias)
+#endif
     vec4 slopes = vec4(0.0);
     // A do-while, not a for: every pixel takes at least one piece, and a loop that tests at
     // its top runs its body once more, masked off, after the last pixel's last piece on a
@@ -104,8 +114,9 @@ void add_cascade(int c, vec2 p, vec2 long_axis, float long_length, float short_l
     // cascade, 6 to 11 % of the ocean pass; ./ocean bench --against, docs/performance.md).
     int i = 0;
     do {
-        slopes += texture(u_slopes, cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c), bias);
+        slopes += SLOPE_PIECE(cascade_uv(p + long_axis * ((float(i) + 0.5) / float(taps) - 0.5), c));
     } while (++i < taps);
+#undef SLOPE_PIECE
     s.slopes += slopes / float(taps);
     // The pixel's normal is the mean slope over its long x short footprint: what that averages
     // away is about what a square of the same area does (the level of sqrt(long x short)).

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# compare_bench.sh compare|bench|sweep|against REPO BUILD_DIR OUT_DIR [SHEET_CHECK]: runs ./ocean
+# compare_bench.sh compare|bench|sweep|against|lab REPO BUILD_DIR OUT_DIR [SHEET_CHECK]: runs ./ocean
 # compare, ./ocean bench, ./ocean bench --sweep or ./ocean bench --baseline-bin on what ctest built
 # (small sizes), then checks what they wrote: a contact sheet with one non-blank tile per step; a
 # bench CSV with a numeric row per step (and the FFT backends for step05 and step06); a sweep CSV
 # with a row per simulating step, resolution and window; the pairs' table (and bench_pairs.py's
-# arithmetic on pairs whose answer is known).
+# arithmetic on pairs whose answer is known); a lab/ program against its chapter.
 set -u
 what=$1 repo=$2 build=$3 out=$4 check=${5:-}
 cd "$repo" || exit 1
@@ -62,7 +62,7 @@ case "$what" in
     echo "$known"
     echo "$known" | grep -Eq '^frame +200\.00 +180\.00 +1\.100 +\[1\.000, 1\.100\]$' || { echo "FAIL: the frame's pairs"; exit 1; }
     echo "$known" | grep -Eq '^  draw +200\.00 +180\.00 +1\.100 ' || { echo "FAIL: a pass's pairs"; exit 1; }
-    # A header names the figures after the passes (step06's shading_alone_ms); an empty one is not measured.
+    # A header names a step's own figures (step05's backends); an empty one is not measured.
     printf 'bench-csv-header: step,size,fps,total_ms,passes,alone_ms,unmeasured_ms\nbench-csv: s,1x1,1,100,draw=90,%s,\n' 50 40 > "$out/known_c.csv"
     printf 'bench-csv-header: step,size,fps,total_ms,passes,alone_ms,unmeasured_ms\nbench-csv: s,1x1,1,100,draw=90,%s,\n' 45 30 > "$out/known_d.csv"
     extra=$(python3 tools/bench_pairs.py "$out/known_c.csv" "$out/known_d.csv") || { echo "FAIL: bench_pairs.py with a header"; exit 1; }
@@ -87,5 +87,19 @@ case "$what" in
     fi
     grep -q "unknown flag" "$out/bad.log" || { cat "$out/bad.log"; echo "FAIL: no message for the bad flag"; exit 1; }
     echo "against.txt: 3 pairs, the frame's ratio; flags for one side; a bad one stops it" ;;
-  *) echo "compare_bench.sh: compare, bench, sweep or against"; exit 2 ;;
+  lab)
+    # lab/compute_shading against step06, the chapter it is built from: one pair, the ocean pass
+    # (where the two differ) in the table; an unknown lab program is refused, the known ones named.
+    mkdir -p "$out"
+    ./ocean bench --lab compute_shading --pairs 1 --frames 2 --size 160x90 --out "$out" > "$out/lab.log" 2>&1 ||
+      { cat "$out/lab.log"; echo "FAIL: ./ocean bench --lab compute_shading"; exit 1; }
+    cat "$out/lab.log"
+    grep -Eq '^step06_foam_sky at .*baseline .*/step06_foam_sky/step06_foam_sky .*current .*/lab/lab_compute_shading' "$out/lab.log" ||
+      { echo "FAIL: not step06 against the lab program"; exit 1; }
+    grep -Eq '^  ocean +[0-9.]+ +[0-9.]+ +[0-9]+\.[0-9]{3} ' "$out/against.txt" || { echo "FAIL: no ocean pass in against.txt"; exit 1; }
+    if ./ocean bench --lab nope --out "$out" > "$out/bad.log" 2>&1; then echo "FAIL: --lab nope ran"; exit 1; fi
+    grep -q "no lab program 'nope' (lab/CMakeLists.txt: compute_shading" "$out/bad.log" ||
+      { cat "$out/bad.log"; echo "FAIL: no message naming the lab programs"; exit 1; }
+    echo "bench --lab: compute_shading against step06, one pair; an unknown name refused" ;;
+  *) echo "compare_bench.sh: compare, bench, sweep, against or lab"; exit 2 ;;
 esac
