@@ -16,9 +16,8 @@
 #include "step06_foam_sky/sky.hpp"
 #include "step07_buoyancy/body_mesh.hpp"
 #include "step07_buoyancy/floating_body.hpp"
-#include "step07_buoyancy/gpu_queries.hpp"
 #include "step07_buoyancy/map_readback.hpp"
-#include "step07_buoyancy/query_dots.hpp"
+#include "step07_buoyancy/query_grid.hpp"
 #include "step07_buoyancy/sea_maps.hpp"
 #include "step07_buoyancy/sea_query.hpp"
 
@@ -54,25 +53,25 @@ public:
         sea_.declare(p);
         renderer_.declare(p);
         look_.declare(p);
-        auto group = p.group("bodies", &bodies_changed_);
-        p.add_float("buoy_diameter", &buoy_diameter_, 0.2f, 5, "the buoy's diameter, metres");
-        p.add_float("buoy_density", &buoy_density_, 50, 3000, "kg/m^3 (water: 1025)");
-        p.add_float("raft_size", &raft_size_, 1, 200, "the raft's side, metres");
-        p.add_float("raft_density", &raft_density_, 50, 3000, "kg/m^3");
-        p.add_float("boat_length", &boat_length_, 2, 60, "the boat's length (beam a third, depth a sixth), metres");
-        p.add_float("boat_density", &boat_density_, 50, 3000, "kg/m^3 of its closed hull");
-        p.add_float("drag", &drag_, 0, 5, "linear drag, per second per kilogram of water displaced");
-        p.add_float("drop_height", &drop_height_, -2, 10, "metres above the mean level the bodies are dropped from");
-        // Not in the group: steering and the query load do not drop the bodies again.
-        p.add_float("boat_throttle", &throttle_, -1, 1, "the boat's thrust, a fraction of its weight / 20").in_group("steering");
-        p.add_float("boat_rudder", &rudder_, -1, 1, "the boat's turning force at its stern").in_group("steering");
-        p.add_int("queries", &extra_queries_, 0, 100000,
-                  "height queries a frame on a grid ahead of the camera, drawn as dots where the water is")
-            .in_group("queries");
-        p.add_choice("query_device", &query_device_, {"cpu", "gpu"},
-                     "where the queries are answered: cpu (sea_query.cpp, every core, this frame's maps) or gpu "
-                     "(height_query.comp, answers a frame late)")
-            .in_group("queries");
+        {
+            // A change to any of these drops the bodies again (bodies_changed_).
+            const auto group = p.group("bodies", &bodies_changed_);
+            p.add_float("buoy_diameter", &buoy_diameter_, 0.2f, 5, "the buoy's diameter, metres");
+            p.add_float("buoy_density", &buoy_density_, 50, 3000, "kg/m^3 (water: 1025)");
+            p.add_float("raft_size", &raft_size_, 1, 200, "the raft's side, metres");
+            p.add_float("raft_density", &raft_density_, 50, 3000, "kg/m^3");
+            p.add_float("boat_length", &boat_length_, 2, 60, "the boat's length (beam a third, depth a sixth), metres");
+            p.add_float("boat_density", &boat_density_, 50, 3000, "kg/m^3 of its closed hull");
+            p.add_float("drag", &drag_, 0, 5, "linear drag, per second per kilogram of water displaced");
+            p.add_float("drop_height", &drop_height_, -2, 10, "metres above the mean level the bodies are dropped from");
+        }
+        // Outside that group: steering and the query load do not drop the bodies again.
+        {
+            const auto group = p.group("steering");
+            p.add_float("boat_throttle", &throttle_, -1, 1, "the boat's thrust, a fraction of its weight / 20");
+            p.add_float("boat_rudder", &rudder_, -1, 1, "the boat's turning force at its stern");
+        }
+        queries_.declare(p);
         use_camera(ocean::camera_view("low"), ocean::kOceanReach);
         offer_export([this](const std::string& dir) { export_all(dir); });
         offer_bench_figures([this] { return sea_.time_backends(time()); });
@@ -85,7 +84,7 @@ private:
         sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
         renderer_.init(program_factory());
         post_.init(program_factory());
-        dots_.init(program_factory());
+        queries_.init(program_factory());
     }
 
     // step06's frame (its main.cpp), then the bodies on the sea it made.
@@ -123,7 +122,7 @@ private:
         steer_boat();
         const double sea_interval = sea_now_->time - sea_before_->time;
         for (auto& body : bodies_) body.step(before, sea_now_->sea, dt, sea_interval);
-        run_extra_queries();
+        queries_.update(sea_now_->sea, sea_, camera().eye_world(), camera().forward(), time);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             trajectory_.push_back({time, int(b), bodies_[b].position(), bodies_[b].orientation()});
         bodies_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
@@ -189,41 +188,6 @@ private:
         boat.add_force(rudder * weight / 100 * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
     }
 
-    // `queries` heights on a grid ahead of the camera, 0.7 m apart: what a game's particles or
-    // floating debris would ask. Each answer becomes a dot (draw_query_dots), in world metres.
-    void run_extra_queries() {
-        if (extra_queries_ == 0) {
-            query_dots_.clear();
-            return;
-        }
-        const glm::dvec3 eye = camera().eye_world();
-        const glm::vec3 f = camera().forward();
-        const glm::dvec2 ahead = glm::normalize(glm::dvec2(f.x, f.z) + glm::dvec2(1e-9, 0)), side(-ahead.y, ahead.x);
-        const int columns = int(std::ceil(std::sqrt(double(extra_queries_))));
-        std::vector<glm::dvec2> world;
-        for (int i = 0; i < extra_queries_; ++i)
-            world.push_back(glm::dvec2(eye.x, eye.z) + (5.0 + 0.7 * (i / columns)) * ahead + 0.7 * (i % columns - columns / 2) * side);
-        if (query_device_ == 0) {
-            const std::vector<step07::SeaPoint> answers = step07::query_many(sea_now_->sea, world);
-            query_dots_.resize(world.size());
-            for (std::size_t i = 0; i < world.size(); ++i) query_dots_[i] = {world[i].x, answers[i].height, world[i].y};
-            return;
-        }
-        // On the GPU: this frame's points go up; last frame's answers come back.
-        if (!gpu_queries_) gpu_queries_ = std::make_unique<step07::GpuQueries>(program_factory());
-        std::vector<glm::vec2> relative;
-        for (const auto& w : world) relative.emplace_back(w - sea_.cascades().origin);
-        std::optional<step07::GpuAnswers> arrived = gpu_queries_->take();  // last frame's, then this frame's
-        gpu_queries_->submit(relative, sea_.simulation(), sea_.cascades(), time());
-        if (arrived) {
-            query_dots_.resize(arrived->points.size());
-            for (std::size_t i = 0; i < arrived->points.size(); ++i) {
-                const glm::dvec2 w = arrived->origin + glm::dvec2(arrived->points[i]);
-                query_dots_[i] = {w.x, arrived->answers[i].height, w.y};
-            }
-        }
-    }
-
     // step06's frame with the bodies and the query dots drawn into the scene between the sea (its
     // depth is there) and the sky behind it.
     void render() override {
@@ -235,7 +199,7 @@ private:
                            {view_projection, camera().eye_world(), framebuffer_size(), post_.scene_framebuffer(),
                             post_.depth_texture(), fullscreen_vao()});
         }
-        dots_.draw(query_dots_, sea_.world_origin(), view_projection);
+        queries_.draw(sea_.world_origin(), view_projection);
         draw_bodies(view_projection);
         {
             ocean::GpuScope timed(timers(), "background");
@@ -359,11 +323,9 @@ private:
     float boat_length_ = 9, boat_density_ = 300, drag_ = 0.5f, drop_height_ = 1.5f;
     float throttle_ = 0, rudder_ = 0;
     double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held
-    int extra_queries_ = 0, query_device_ = 0, latency_frames_ = 0;
+    int latency_frames_ = 0;
     double bodies_ms_ = 0;
-    std::unique_ptr<step07::GpuQueries> gpu_queries_;
-    std::vector<glm::dvec3> query_dots_;  // world metres: the latest answers
-    step07::QueryDots dots_;
+    step07::QueryGrid queries_;
 };
 
 }  // namespace
