@@ -57,15 +57,17 @@ crop=0,0.3,0.625,0.6
 echo step06_foam_sky/streaks.png
 
 # Build it yourself (step06's README): the picture after each piece of the chapter, made with its
-# own switches (every piece is on in the last), then close-ups of the two pieces whose change is
-# small at that size (fog, bloom), and the sky's reflection on the left of a split view, off on
-# the right.
+# own switches (every piece is on in the last); then close-ups of the two pieces whose change is
+# small at that size, each the same view without and with the effect, cropped alike and scaled
+# alike in x and y (fog made thicker so that it shows; the bloom around the glitter at 2x); and
+# the sky's reflection: the whole frame with it, then without it.
 piece() {  # piece NAME [flags...]
   local name=$1
   shift
   "$build/step06_foam_sky/step06_foam_sky" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 \
     --screenshot "$scratch/$name.png" "$@" > /dev/null
 }
+piece cascades --camera overview --set view=jacobian
 piece mesh --set wireframe=true
 piece lit --set show_specular_term=false --set show_reflection_term=false --set show_foam=false \
   --set show_fog=false --set show_bloom=false
@@ -73,13 +75,19 @@ piece sky --set show_foam=false --set show_fog=false --set show_bloom=false
 piece foam --set show_fog=false --set show_bloom=false
 piece fog --set show_bloom=false
 piece bloom
-"$build/tools/image_panel" "$root/step06_foam_sky/build_it_yourself.png" 320x180 3 \
-  "1. the mesh (wireframe=true)|$scratch/mesh.png" "2. lit: ambient and scatter|$scratch/lit.png" \
-  "3. + the sky's reflection and the sun|$scratch/sky.png" "4. + foam|$scratch/foam.png" \
-  "5. + fog|$scratch/fog.png" "6. + bloom: the final picture|$scratch/bloom.png"
+piece thick_fog_off --set fog_density=0.006 --set show_fog=false --set show_bloom=false
+piece thick_fog_on --set fog_density=0.006 --set show_bloom=false
+piece no_reflection --set show_reflection_term=false
+"$build/tools/image_panel" "$root/step06_foam_sky/build_it_yourself.png" 320x180 4 \
+  "1. cascades (view=jacobian)|$scratch/cascades.png" "2. the mesh (wireframe=true)|$scratch/mesh.png" \
+  "3. lit: ambient and scatter|$scratch/lit.png" "4. + sky reflection, sun|$scratch/sky.png" \
+  "5. + foam|$scratch/foam.png" "6. + fog|$scratch/fog.png" "7. + bloom: the final picture|$scratch/bloom.png"
 echo step06_foam_sky/build_it_yourself.png
-"$build/tools/image_panel" "$root/step06_foam_sky/build_it_yourself_closeup.png" 480x180 2 \
-  "without fog|$scratch/foam.png|0,0.3,0.5,0.55" "with fog|$scratch/fog.png|0,0.3,0.5,0.55" \
-  "without bloom|$scratch/fog.png|0.55,0,1,0.6" "with bloom|$scratch/bloom.png|0.55,0,1,0.6"
+"$build/tools/image_panel" "$root/step06_foam_sky/build_it_yourself_closeup.png" 320x180 2 \
+  "6. fog off (density 0.006)|$scratch/thick_fog_off.png|0,0.2,0.5,0.7" \
+  "6. fog on (density 0.006)|$scratch/thick_fog_on.png|0,0.2,0.5,0.7" \
+  "7. bloom off (2x)|$scratch/fog.png|0.7,0.33,0.95,0.58" "7. bloom on (2x)|$scratch/bloom.png|0.7,0.33,0.95,0.58"
 echo step06_foam_sky/build_it_yourself_closeup.png
-run step06_foam_sky split_reflection.png --split --set split_effect=reflection_term
+"$build/tools/image_panel" "$root/step06_foam_sky/reflection_on_off.png" 320x180 2 \
+  "the sky's reflection on|$scratch/bloom.png" "off (show_reflection_term=false)|$scratch/no_reflection.png"
+echo step06_foam_sky/reflection_on_off.png
