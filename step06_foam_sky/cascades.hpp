@@ -20,8 +20,8 @@
 namespace step06 {
 
 constexpr int kCascades = 4;
-// step06's sea, where it differs from step05's (the tests use the same): a fresh breeze over
-// cascade 0's 500 m tile, choppy. Set before OceanParams::declare, so these are the defaults.
+// step06's sea, where it differs from step05's (the tests use the same): a near gale (14 m/s,
+// Beaufort 7) over cascade 0's 500 m tile, choppy. Set before OceanParams::declare, so these are the defaults.
 inline void use_default_sea(step05::OceanParams& params) {
     params.spectrum.patch_size = 500;
     params.spectrum.wind_speed = 14;

@@ -28,7 +28,7 @@ namespace step06 {
 
 class Sea {
 public:
-    Sea();  // step06's sea: a fresh breeze over a 500 m first tile (use_default_sea)
+    Sea();  // step06's sea: a near gale (14 m/s) over a 500 m first tile (use_default_sea)
 
     // The sea state (wind, fetch, swell, choppiness, resolution), which cascades are drawn, and the
     // foam's two rates. The spectrum's shape (model, gamma, cut-offs, ...) is step05's lesson: its
