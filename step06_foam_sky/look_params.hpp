@@ -131,18 +131,10 @@ public:
 
     bool show(Effect e) const { return shown[std::size_t(e)]; }
 
-    // The image passes this frame: the final picture as set, a debug view as it is. The dither
-    // (one 8-bit step of triangular noise before the screen rounds, against banding) goes with a
-    // filmic curve; tonemapper none shows the values to measure.
+    // The image passes this frame: the final picture as set, a debug view as it is.
     PostSettings post(bool final_picture) const {
-        PostSettings s;
-        s.bloom = final_picture && show(Effect::Bloom);
-        s.bloom_threshold = bloom_threshold;
-        s.bloom_strength = bloom_strength;
-        s.exposure = final_picture ? exposure : 1.0f;
-        s.tonemapper = final_picture ? tonemapper : kTonemapNone;
-        s.dither = s.tonemapper != kTonemapNone;
-        return s;
+        return {final_picture && show(Effect::Bloom), bloom_threshold, bloom_strength,
+                final_picture ? exposure : 1.0f, final_picture ? tonemapper : kTonemapNone};
     }
 
     // The defaults (declare() binds each to its parameter; the others are the chapter's constants,
@@ -152,7 +144,6 @@ public:
     std::string sky_image;
     ocean::Generation sky_image_changes;  // bumped when sky_image changes: the image is loaded again
     int microfacet = 0, tonemapper = 0;
-    static constexpr int kTonemapNone = 2;  // tonemapper's third choice
     float roughness = 0.02f;
     glm::vec3 scatter_colour{0.05f, 0.32f, 0.36f}, crest_colour{0.15f, 0.75f, 0.6f}, bubble_colour{0.2f, 0.45f, 0.45f}, foam_colour{0.92f, 0.94f, 0.95f};
     float scatter_crest = 3.0f, scatter_view = 0.35f, scatter_lambert = 0.25f, scatter_bubbles = 0.3f;  // the notes' k1 .. k4

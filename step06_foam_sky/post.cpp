@@ -66,7 +66,8 @@ void PostProcess::bloom(const PostSettings& settings, GLuint fullscreen_vao) con
 void PostProcess::tonemap(const PostSettings& settings, GLuint fullscreen_vao) const {
     ocean::ShaderProgram* tonemap =
         programs_("tonemap", {"fullscreen.vert", "step06_foam_sky/shaders/tonemap.frag"},
-                  {"TONEMAPPER " + std::to_string(settings.tonemapper), std::string("DITHER ") + (settings.dither ? "1" : "0")});
+                  {"TONEMAPPER " + std::to_string(settings.tonemapper),
+                   std::string("DITHER ") + (settings.tonemapper != kTonemapNone ? "1" : "0")});
     if (tonemap == nullptr) return;
     tonemap->set("u_scene", 0);
     tonemap->set("u_bloom", 1);

@@ -12,16 +12,16 @@
 
 namespace step06 {
 
+constexpr int kTonemapNone = 2;  // the tonemapper parameter's third choice, tonemap.frag's TONEMAPPER 2
 constexpr int kBloomLevels = 5;  // 1/4 of the screen down to 1/64: the same widest glow as before
 
 // What the image passes do this frame (LookParams::post): a debug view is shown as it is, with no
-// bloom, no filmic curve and no dither.
+// bloom and no filmic curve.
 struct PostSettings {
-    bool bloom = true;
-    float bloom_threshold = 2.5f, bloom_strength = 0.06f;  // linear brightness; fraction of the glow added
-    float exposure = 1;
-    int tonemapper = 0;  // tonemap.frag's TONEMAPPER: 0 ACES, 1 AgX, 2 a clamp
-    bool dither = true;
+    bool bloom;
+    float bloom_threshold, bloom_strength;  // linear brightness; fraction of the glow added
+    float exposure;
+    int tonemapper;  // tonemap.frag's TONEMAPPER: 0 ACES, 1 AgX, 2 none (the values clamped, to measure)
 };
 
 class PostProcess {
@@ -30,7 +30,8 @@ public:
     // The frame's HDR scene, (re)made for `size`, bound and cleared (black, depth at the far plane).
     void begin(glm::ivec2 size);
     // Bloom from the scene (when settings.bloom), then the scene and its glow through the exposure,
-    // the tonemapper and sRGB into the framebuffer bound on entry (the window's).
+    // the tonemapper and sRGB into the framebuffer bound on entry (the window's). A filmic curve
+    // is dithered (one 8-bit step of triangular noise against banding); none is not.
     void bloom(const PostSettings& settings, GLuint fullscreen_vao) const;
     void tonemap(const PostSettings& settings, GLuint fullscreen_vao) const;
 

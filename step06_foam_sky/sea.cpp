@@ -38,6 +38,7 @@ void Sea::make_spectra() {
     std::vector<const step05::InitialSpectrum*> pointers;
     height_variance_ = 0;
     unresolved_by_level_.assign(std::size_t(kCascades * kMaxMipLevels), 0.0f);
+    description_.clear();
     for (const auto& p : cascade_spectra(params_.spectrum)) {
         spectra_.push_back(std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(p)));
         pointers.push_back(spectra_.back().get());
@@ -48,6 +49,12 @@ void Sea::make_spectra() {
         const std::size_t base = (pointers.size() - 1) * kMaxMipLevels;
         for (std::size_t l = 0; l < kMaxMipLevels; ++l)
             unresolved_by_level_[base + l] = float(by_level[std::min(l, by_level.size() - 1)]);
+        // For the panel: the cascade's tile and the wavelengths of its band (2 pi / |k|).
+        char line[128];
+        std::snprintf(line, sizeof line, "cascade %zu: tile %.1f m, waves %.2f m .. %.2f m", pointers.size() - 1,
+                      p.patch_size, 2 * step05::kPi / p.high_cutoff,
+                      p.low_cutoff > 0 ? 2 * step05::kPi / p.low_cutoff : std::numeric_limits<double>::infinity());
+        description_.push_back(line);
     }
     simulation_->set_spectra(pointers);
     foam_->resize(params_.spectrum.resolution);
@@ -57,16 +64,6 @@ void Sea::make_spectra() {
     wind_heading_ = wind_heading(params_.spectrum);
     foam_->set_wind(wind_heading_, params_.spectrum.wind_speed);
 
-    description_.clear();
-    const auto sizes = cascade_patch_sizes(params_.spectrum);
-    const auto bands = cascade_bands(sizes, params_.spectrum.resolution);
-    for (std::size_t c = 0; c < std::size_t(kCascades); ++c) {
-        char line[128];
-        std::snprintf(line, sizeof line, "cascade %zu: tile %.1f m, waves %.2f m .. %.2f m", c, sizes[c],
-                      bands[c].high > 0 ? 2 * step05::kPi / bands[c].high : 0.0,
-                      bands[c].low > 0 ? 2 * step05::kPi / bands[c].low : std::numeric_limits<double>::infinity());
-        description_.push_back(line);
-    }
 }
 
 void Sea::simulate(double time, glm::dvec3 eye) {

@@ -76,7 +76,6 @@ void SeaRenderer::draw_mesh(const std::string& name, const std::vector<std::stri
     mesh->set("u_frustum", ocean::frustum_planes(frame.view_projection));
     // The patches' boxes widened by how far the sea can move them.
     mesh->set("u_max_displacement", float(sea.largest_displacement()));
-    mesh->set("u_cull", 1);
     glEnable(GL_DEPTH_TEST);
     glUseProgram(mesh->id());
     if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
@@ -86,8 +85,7 @@ void SeaRenderer::draw_mesh(const std::string& name, const std::vector<std::stri
 }
 
 std::vector<std::string> SeaRenderer::shading_defines(const Sea& sea, const LookParams& look) const {
-    const int debug = view_ == kViewShaded ? 0 : view_;
-    return {"MICROFACET " + std::to_string(look.microfacet), "DEBUG_VIEW " + std::to_string(debug),
+    return {"MICROFACET " + std::to_string(look.microfacet), "DEBUG_VIEW " + std::to_string(view_),
             "ANISOTROPIC_TAPS " + std::to_string(anisotropy_), "STREAKS " + std::to_string(int(sea.has_streaks()))};
 }
 

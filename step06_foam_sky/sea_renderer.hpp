@@ -19,8 +19,8 @@
 
 namespace step06 {
 
-// The `view` parameter's choices, in its order: the picture, or one of its ingredients. Normals
-// to TessellationLevel are also ocean_shade.glsl's DEBUG_VIEW numbers.
+// The `view` parameter's choices, in its order: the picture, or one of its ingredients. They are
+// also ocean_shade.glsl's DEBUG_VIEW numbers (0: the shaded picture).
 enum View : int { kViewShaded, kViewNormals, kViewFoam, kViewJacobian, kViewTessellationLevel };
 
 // What a frame gives the renderer: where the camera is (the eye in world metres, double) and the

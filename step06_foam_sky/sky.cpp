@@ -47,12 +47,11 @@ void Sky::update(const SkySettings& settings, const std::string& image, unsigned
 // Drawn last, and only where the sea left the depth at the far plane: drawn first, under
 // everything, most of its pixels would be drawn again by the sea.
 void Sky::draw_background(const glm::mat4& view_projection, GLuint fullscreen_vao) {
-    const SkySettings& settings = settings_;
     ocean::ShaderProgram* sky = programs_("sky", {"fullscreen.vert", std::string(kShaders) + "sky.frag"}, {});
     if (sky == nullptr) return;
-    sky->set("u_to_sun", settings.to_sun);
-    sky->set("u_sun_radiance", settings.sun_radiance);
-    sky->set("u_sun_size", settings.sun_size);
+    sky->set("u_to_sun", settings_.to_sun);
+    sky->set("u_sun_radiance", settings_.sun_radiance);
+    sky->set("u_sun_size", settings_.sun_size);
     sky->set("u_draw_sun_disc", int(!uses_image()));
     sky->set("u_inverse_view_projection", glm::inverse(view_projection));
     bind();

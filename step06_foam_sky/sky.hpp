@@ -35,9 +35,8 @@ public:
     void render(const SkySettings& settings);  // procedural: every call; image: once
     // Once a frame: use_image(image) when `image_version` (the sky_image parameter's Generation)
     // moved since the last call (a file that cannot be read is a warning on stderr, and the
-    // procedural sky), then render(settings). The frame's other passes read settings().
+    // procedural sky), then render(settings); draw_background uses the same settings.
     void update(const SkySettings& settings, const std::string& image, unsigned image_version);
-    const SkySettings& settings() const { return settings_; }
     // The sky behind the sea and the sun's disc, where the sea left the depth at the far plane
     // (sky.frag). The disc is drawn here, not kept in the cubemap: the water's specular term is
     // the sun's reflection, and a disc in the reflected sky would count it twice.

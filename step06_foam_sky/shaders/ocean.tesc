@@ -11,7 +11,6 @@ out vec2 te_rest_xz[];
 #include "tessellation.glsl"
 uniform vec4 u_frustum[6];      // planes, normals pointing inwards: dot(plane.xyz, p) + plane.w >= 0 inside
 uniform float u_max_displacement;  // metres: how far any point can move from rest
-uniform bool u_cull;
 
 bool outside_frustum(vec2 lo, vec2 hi) {
     float r = u_max_displacement;
@@ -28,7 +27,7 @@ void main() {
     te_rest_xz[gl_InvocationID] = tc_rest_xz[gl_InvocationID];
     if (gl_InvocationID != 0) return;
     vec2 p0 = tc_rest_xz[0], p1 = tc_rest_xz[1], p2 = tc_rest_xz[2], p3 = tc_rest_xz[3];  // counter-clockwise
-    if (u_cull && outside_frustum(min(p0, p2), max(p0, p2))) {
+    if (outside_frustum(min(p0, p2), max(p0, p2))) {
         gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = gl_TessLevelOuter[3] = 0.0;
         gl_TessLevelInner[0] = gl_TessLevelInner[1] = 0.0;
         return;

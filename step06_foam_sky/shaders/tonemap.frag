@@ -7,7 +7,7 @@
 #define TONEMAPPER 0  // 0: ACES (Hill's fit), 1: AgX (minimal), 2: none (clamp)
 #endif
 #ifndef DITHER
-#define DITHER 1  // 0: no dither (the debug views; pictures made to be measured, dither=false)
+#define DITHER 1  // 0: no dither (tonemapper none: the debug views, and pictures made to be measured)
 #endif
 
 in vec2 v_uv;

@@ -464,7 +464,6 @@ struct Tessellated : Step06Gpu {
         program->set("u_tess_scale", tess_scale);
         program->set("u_frustum", ocean::frustum_planes(vp));
         program->set("u_max_displacement", 1.0f);
-        program->set("u_cull", 1);
         program->set("u_patch_sizes", std::vector<float>{500, 137, 41, 12});
         glBindTextureUnit(0, ocean->displacement_texture());
         glBindTextureUnit(1, ocean->slopes_texture());
