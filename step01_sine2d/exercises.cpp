@@ -32,6 +32,7 @@ std::vector<Exercise> chapter() {
          "its height at x is a sin(x w + phase). Without it the plot is a flat line.",
          "u_waves[i].x is w (radians per metre), .y the amplitude a, .z the phase (-t phi, reduced on the CPU): "
          "a * sin(x * w + phase). The phase is added, not multiplied.",
+         "", {},
          [](const fs::path& work) {
              return check_values(
                  work, "sine_sum.glsl", "sum_of_sines(a.x)",
@@ -44,6 +45,7 @@ std::vector<Exercise> chapter() {
          "its line equally thick on steep slopes: without it the line thins where the wave is steep.",
          "The chain rule brings w out of the sine, and the amplitude stays: a w cos(x w + phase). The notes' 2.2 "
          "writes cos(...) alone, without w a: that is the slope of a wave of one radian per metre and amplitude 1.",
+         "", {},
          [](const fs::path& work) {
              return check_values(
                  work, "sine_sum.glsl", "sum_of_sines_slope(a.x)",

@@ -22,6 +22,7 @@ std::vector<Exercise> chapter() {
          "u_waves[i] = (d.x, d.z, w, a) and the phase in u_wave_phases[i]. Without it the sea is flat.",
          "dot(d, xz) is how far along the wave's direction the point lies: crests are lines across d. "
          "u_waves[i].xy is d, .z is w, .w is a; the phase is its own uniform array, u_wave_phases[i].",
+         "", {},
          [](const fs::path& work) {
              return check_values(
                  work, "waves.glsl", "wave_height(a.xy)",
@@ -37,6 +38,7 @@ std::vector<Exercise> chapter() {
          "facet is shaded alike and the waves' shape is hard to read (step02 draws with facet_shading on).",
          "normalize(cross(along_x, along_y)), then negate it when its y is negative: the order of the edges "
          "(and the screen's orientation) decides which side the cross product points to.",
+         "", {},
          [](const fs::path& work) {
              return check_vector(
                  work, "facet.glsl", "facet_normal(a.xyz, b.xyz)",

@@ -54,6 +54,7 @@ std::vector<Exercise> chapter() {
          "(N.L <= 0). Without them the sea is flat ambient colour.",
          "H is normalize(to_eye + to_sun), the direction halfway between eye and sun, not the reflection of either; "
          "the specular needs N.L > 0 (a sun below the surface makes no glint) even where N.H is large.",
+         "", {},
          [](const fs::path& work) {
              const Verdict diffuse = check_step03_term(work, "diffuse.y", [](const step03::LightTerms& t) { return t.diffuse.g; });
              if (!diffuse.pass) return diffuse;
@@ -66,6 +67,7 @@ std::vector<Exercise> chapter() {
          "derivatives, with angle = dot(d, xz) w + phase. The normal (and so all the light) comes from them.",
          "The derivative of a sin(dot(d, xz) w + phase) along x is a w cos(angle) d.x (the chain rule brings out w "
          "and the direction); the notes' 2.2 forgets the w a. u_waves[i] = (d.x, d.z, w, a).",
+         "", {},
          [](const fs::path& work) {
              return check_vector(
                  work, "wave_gradient.glsl", "wave_height_gradient(a.xy)",

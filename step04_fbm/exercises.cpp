@@ -24,6 +24,7 @@ std::vector<Exercise> chapter() {
          "The starter is step02's sine: round crests, as wide as the troughs.",
          "d/dtheta e^(sin theta - 1) = e^(sin theta - 1) cos theta; differentiate that product again: "
          "e^(sin theta - 1)(cos^2 theta - sin theta). The mean is subtracted from W only.",
+         "", {},
          [](const fs::path& work) {
              return check_vector(
                  work, "fbm.glsl", "wave_shape(a.x)",
@@ -39,6 +40,7 @@ std::vector<Exercise> chapter() {
          "The starter's normal is straight up: the sea is lit as if flat.",
          "B x T = (-dh/dx, 1, -dh/dz) before normalising; T x B points down, into the water (then the light is "
          "on the wrong side of every wave).",
+         "", {},
          [](const fs::path& work) {
              return check_vector(
                  work, "fbm.glsl", "fbm_normal(a.xy)",

@@ -4,10 +4,13 @@
 #include "tools/exercise.hpp"
 
 #include "step05_fft/ocean_maps.hpp"
+#include "step05_fft/spectrum.hpp"
 
 #include <glm/vec3.hpp>
 
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace exercises {
 
@@ -42,15 +45,59 @@ Verdict check_packed_pairs(const fs::path& work) {
     return verdict;
 }
 
+// Exercise 8's check: the height variance the learner's initial_amplitude gives, averaged over many
+// draws, against the spectrum's integral (resolved_variance: the sum of Phi dk^2 over the resolved
+// modes, computed without h0). The driver holds the default sea's mode energies (N = 64) and draws
+// its own Gaussian numbers; by Parseval the height's variance at t = 0 is sum_k |h0(k) + conj(h0(-k))|^2.
+std::string variance_driver() {
+    step05::SpectrumParams p;
+    p.resolution = 64;
+    const step05::InitialSpectrum sea = step05::initial_spectrum(p);
+    std::ostringstream driver;
+    driver.precision(17);
+    driver << "#include \"step05_fft/mode_amplitude.hpp\"\n#include <complex>\n#include <cstdio>\n#include <random>\n"
+           << "#include <vector>\nconst int n = " << p.resolution << ";\nconst double integral = "
+           << step05::resolved_variance(p) << ";\nconst double energy[] = {";
+    for (double e : sea.density) driver << e << ",";
+    driver << R"(};
+int main() {
+    const int draws = 200;
+    double mean = 0;
+    for (int draw = 0; draw < draws; ++draw) {
+        std::mt19937_64 random(std::uint64_t(draw) + 1);
+        std::normal_distribution<double> normal;
+        std::vector<std::complex<double>> h0(n * n);
+        for (int i = 0; i < n * n; ++i) {
+            const double xr = normal(random), xi = normal(random);
+            h0[std::size_t(i)] = step05::initial_amplitude(xr, xi, energy[i]);
+        }
+        double variance = 0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const std::size_t k = std::size_t(j * n + i), minus_k = std::size_t(((n - j) % n) * n + (n - i) % n);
+                variance += std::norm(h0[k] + std::conj(h0[minus_k]));
+            }
+        mean += variance / draws;
+    }
+    std::printf("%.17g\n", mean / integral);
+}
+)";
+    return driver.str();
+}
+
 std::vector<Exercise> chapter() {
     return {
         {"step05_fft", 1, "Where the surface folds", "ocean_maps.glsl", "float jacobian(vec4 displacement, vec4 slopes) {",
          "    // TODO (exercise 1): the Jacobian of the choppy displacement.\n    return 1.0;\n",
-         "Write jacobian: J = (1 + l dDx/dx)(1 + l dDz/dz) - (l dDx/dz)^2, with l dDx/dx = slopes.z, l dDz/dz =\n"
-         "slopes.w, l dDx/dz = displacement.w. J < 0 where the surface folds over itself: view=jacobian shows\n"
-         "it, and step06 puts its foam there.",
-         "J is the determinant of the 2 x 2 matrix [[1 + l dDx/dx, l dDx/dz], [l dDx/dz, 1 + l dDz/dz]]: the "
-         "product of the diagonal minus the square of the off-diagonal term (the maps hold l D already).",
+         "Write jacobian. The water resting at x is drawn at x + l D(x). How much does that map stretch a small\n"
+         "square around x? The factor is the determinant of the map's 2 x 2 matrix of derivatives: below 1 the\n"
+         "water is squeezed (crests), below 0 the surface has folded over itself (step06 puts foam there).\n"
+         "Derive the matrix from x + l D(x), then its determinant. The maps hold the derivatives of l D already:\n"
+         "slopes.z = l dDx/dx, slopes.w = l dDz/dz, displacement.w = l dDx/dz (= l dDz/dx). view=jacobian shows J.",
+         "Each diagonal entry is the derivative of one coordinate of x + l D along its own axis: it starts at 1. "
+         "The matrix is symmetric.",
+         "J = (1 + l dDx/dx)(1 + l dDz/dz) - (l dDx/dz)^2 = (1 + slopes.z)(1 + slopes.w) - displacement.w^2",
+         {"--set", "view=jacobian", "--set", "choppiness=2"},
          [](const fs::path& work) {
              return check_values(
                  work, "ocean_maps.glsl", std::string("jacobian(") + kStep05Sample + ")",
@@ -61,11 +108,16 @@ std::vector<Exercise> chapter() {
          "vec3 choppy_normal(vec4 displacement, vec4 slopes) {",
          "    // TODO (exercise 2): the normal of the displaced surface. For now, step03's.\n"
          "    return normalize(vec3(-slopes.x, 1.0, -slopes.y));\n",
-         "Write choppy_normal: the surface point of rest position p is P = (p.x + l Dx, h, p.z + l Dz); its\n"
-         "tangents are dP/dx = (1 + l dDx/dx, dh/dx, l dDx/dz) and dP/dz = (l dDx/dz, dh/dz, 1 + l dDz/dz), and\n"
-         "N = normalize(dP/dz x dP/dx). The starter is step03's normal, right only where l = 0.",
-         "slopes = (dh/dx, dh/dz, l dDx/dx, l dDz/dz), displacement.w = l dDx/dz (= l dDz/dx). The order of the "
-         "cross product decides up or down: dP/dz x dP/dx points up for a flat sea.",
+         "Write choppy_normal. The surface point of rest position p is P(p) = (p.x + l Dx, h, p.z + l Dz).\n"
+         "A normal is perpendicular to the surface's two tangents, the derivatives of P along x and along z.\n"
+         "Derive both tangents from P (the maps hold every derivative you need: slopes = (dh/dx, dh/dz,\n"
+         "l dDx/dx, l dDz/dz), displacement.w = l dDx/dz), then combine them. The starter is step03's normal,\n"
+         "right only where l = 0: crank up choppiness and watch the crests' shading.",
+         "Differentiate each coordinate of P: the horizontal ones start at 1 on their own axis. The order of the "
+         "cross product decides up or down: check it on a flat sea.",
+         "dP/dx = (1 + l dDx/dx, dh/dx, l dDx/dz), dP/dz = (l dDx/dz, dh/dz, 1 + l dDz/dz), "
+         "N = normalize(cross(dP/dz, dP/dx))",
+         {"--set", "choppiness=2.5", "--camera", "low"},
          [](const fs::path& work) {
              return check_vector(
                  work, "ocean_maps.glsl", std::string("choppy_normal(") + kStep05Sample + ")",
@@ -78,13 +130,15 @@ std::vector<Exercise> chapter() {
         {"step05_fft", 3, "From texel to wave vector", "mode.glsl", "vec2 wave_vector(ivec2 texel, int n, float patch_size) {",
          "    // TODO (exercise 3): the wave vector k that texel (i, j) of the spectrum holds.\n"
          "    return (6.2831853 / patch_size) * vec2(texel);\n",
-         "Write wave_vector: texel (i, j) of an N x N spectrum holds k = 2 pi (n, m) / L. The inverse FFT sums\n"
-         "frequencies 0, 1, ..., N/2 - 1 and then -N/2, ..., -1 in that order, so n = i for i < N/2 and i - N\n"
-         "above, and the same for m. The starter takes n = i everywhere: half the waves run the wrong way, and\n"
-         "the tile is no longer a sum of Hermitian pairs.",
-         "Texels N/2 .. N-1 hold the negative frequencies: n = i - N there (an FFT of N points cannot tell "
-         "frequency n from n - N, and the spectrum is centred on k = 0). Check both halves: texel 1 is "
-         "+2 pi / L, texel N - 1 is -2 pi / L.",
+         "Write wave_vector: which wave vector k does texel (i, j) of the N x N spectrum hold? On a tile of side\n"
+         "L only whole numbers of wavelengths fit, so k = 2 pi (n, m) / L. An FFT of N points cannot tell\n"
+         "frequency n from n - N (e^{2 pi i n x / N} is the same at every sample x): decide which of the two each\n"
+         "texel must mean so that the spectrum holds as many waves running one way as the other. The step runs\n"
+         "the GPU FFT (backend=gpu_fft) so that your shader is used.",
+         "The texels are in the FFT's order, not centred: texel 0 is k = 0, texel 1 is +2 pi / L, and texel N - 1 "
+         "is the wave next to k = 0 on the other side.",
+         "n = i for i < N/2, n = i - N for i >= N/2 (the same for m); k = (2 pi / L) (n, m)",
+         {"--set", "backend=gpu_fft"},
          [](const fs::path& work) {
              return check_vector(
                  work, "ocean_layout.glsl,mode.glsl", "wave_vector(ivec2(64.0 * a.xy), 64, 100.0 + 400.0 * b.x)",
@@ -96,13 +150,15 @@ std::vector<Exercise> chapter() {
          }},
         {"step05_fft", 4, "The phase: a mode in time", "mode.glsl", "vec2 evolve_mode(vec2 h0_k, vec2 h0_minus_k, float phase) {",
          "    // TODO (exercise 4): h~(k, t) from h0(k), h0(-k) and phase = omega t.\n    return h0_k;\n",
-         "Write evolve_mode: h~(k, t) = h0(k) e^{-i omega t} + conj(h0(-k)) e^{+i omega t}, with phase = omega t\n"
-         "(omega from the dispersion relation, omega^2 = g k tanh(k depth), formed and reduced in double on the\n"
-         "CPU). Complex numbers are vec2 (real, imaginary); complex_multiply is in ocean_layout.glsl. The\n"
-         "starter returns h0(k): a frozen sea, and not even a real one.",
-         "e^{-i phase} is vec2(cos(phase), -sin(phase)); the second term is the conjugate of h0(-k) times the "
-         "conjugate rotation, which makes h~(-k) = conj(h~(k)) and the height real. With e^{+i omega t} on h0(k) "
-         "(the notes' 4.3) the crests run upwind.",
+         "Write evolve_mode: the mode at time t, from h0(k), h0(-k) and phase = omega t. Two requirements fix it:\n"
+         "each wave travels along +k (a crest at k.x - omega t = const moves forward as t grows), and the\n"
+         "spectrum stays Hermitian, h~(-k) = conj(h~(k)), so that the height the FFT makes is real. Build the\n"
+         "term that moves h0(k) forward, then add the partner that makes the pair Hermitian. Complex numbers\n"
+         "are vec2 (real, imaginary); complex_multiply is in ocean_layout.glsl. The starter is a frozen sea.",
+         "Which sign of the exponent moves a crest of e^{i(k.x + s omega t)} towards +k? Then write h~(-k) from your "
+         "first term and take its conjugate. The notes' 4.3 has the sign that sends the crests upwind.",
+         "h~(k, t) = h0(k) e^{-i phase} + conj(h0(-k)) e^{+i phase}; e^{-i phase} = vec2(cos(phase), -sin(phase))",
+         {"--set", "backend=gpu_fft"},
          [](const fs::path& work) {
              return check_vector(
                  work, "ocean_layout.glsl,mode.glsl", "evolve_mode(a.xy, a.zw, 6.2831853 * b.x)",
@@ -112,27 +168,74 @@ std::vector<Exercise> chapter() {
                  },
                  1e-4, -1, 1, {}, 2);
          }},
-        {"step05_fft", 5, "One radix-4 stage of the FFT", "fft.comp", "void radix4_stage(int t, int p, int from) {",
-         "    // TODO (exercise 5): thread t's four butterflies of the stage of stride p, lines[from] -> lines[1 - from].\n"
+        {"step05_fft", 5, "One radix-2 stage of the FFT", "fft_radix2.comp",
+         "void radix2_butterfly(int s, int b, int layer, int line) {",
+         "    // TODO (exercise 5): butterfly b of stage s, source -> target. For now, a copy.\n"
+         "    target[element(layer, line, 2 * b)] = line_value(layer, line, 2 * b);\n"
+         "    target[element(layer, line, 2 * b + 1)] = line_value(layer, line, 2 * b + 1);\n",
+         "Write radix2_butterfly, the heart of the plain FFT (README section 3 derives it). A transform of 2h\n"
+         "points is two transforms of h points, E of the even samples and O of the odd ones, joined by one\n"
+         "complex multiplication per pair. After the bit-reversed read of stage 0 (line_value does it), stage s\n"
+         "(h = 2^s) finds E and O side by side in every block of 2h elements. Butterfly b (0 <= b < N/2) is\n"
+         "one frequency k of one block: work out from s and b which two elements it joins, which power of the\n"
+         "root of unity it needs (the table twiddle[m] holds e^{+2 pi i m / N}), and which two outputs it\n"
+         "writes. The step runs the GPU FFT in this form (fft=radix2); the starter's 'transform' copies.",
+         "k = b mod h; the block starts at 2h (b div h) = 2 (b - k). X[k] and X[k + h] share the same E[k] and "
+         "O[k]: they differ only by the sign of the twiddled O. zeta = e^{2 pi i / (2h)} is twiddle entry N / (2h).",
+         "h = 2^s, k = b & (h - 1), even = 2 (b - k) + k, odd = even + h, zeta^k = twiddle[k N / (2h)];\n"
+         "e = line_value(even), o = zeta^k line_value(odd); target[even] = e + o, target[odd] = e - o",
+         {"--set", "backend=gpu_fft", "--set", "fft=radix2"},
+         [](const fs::path& work) { return check_fft(work, step05::GpuFftForm::Radix2); }},
+        {"step05_fft", 6, "One radix-4 stage of the FFT", "fft.comp", "void radix4_stage(int t, int p, int from) {",
+         "    // TODO (exercise 6): thread t's four butterflies of the stage of stride p, lines[from] -> lines[1 - from].\n"
          "    for (int j = 0; j < 4; ++j) lines[1 - from][t + j * QUARTER] = lines[from][t + j * QUARTER];\n",
-         "Write radix4_stage from the rule in fft.comp's header: with k = t mod p, take a_j = x[t + j N/4] w^(j k)\n"
-         "(w^(j k) = twiddle[j k N / (4 p)]), and write y[(t - k) 4 + k + q p] = sum_j a_j e^{+2 pi i j q / 4}\n"
-         "for q = 0..3. The factors e^{2 pi i j q / 4} are 1, i, -1, -i: additions and times_i only. The\n"
-         "starter copies the line through: the 'transform' is the spectrum itself.",
-         "Output q = 1 is a0 + i a1 - a2 - i a3 (a quarter turn per j), q = 2 is a0 - a1 + a2 - a3, q = 3 is "
-         "a0 - i a1 - a2 + i a3. Twiddle the inputs before the 4-point DFT, not after, and write at (t - k) * 4 + k "
-         "+ q * p (Stockham: each stage puts its results where the next one reads them).",
-         [](const fs::path& work) { return check_fft(work); }},
-        {"step05_fft", 6, "Choppiness and slopes in the spectrum", "mode.glsl", "vec2[4] packed_pairs(vec2 h, vec2 k) {",
-         "    // TODO (exercise 6): the four packed pairs from h~ at k. For now the height alone.\n"
+         "Write radix4_stage, the optimisation of exercise 5 (README section 3): split a transform four ways\n"
+         "instead of two, so a 4-point DFT (factors 1, i, -1, -i: no multiplications) joins four quarter-size\n"
+         "transforms, and half as many stages run, all in shared memory. In Stockham's order a stage of\n"
+         "stride p reads its four inputs a quarter of the line apart and writes its outputs where the next\n"
+         "stage will read them, so no bit reversal is needed. Derive the index rule from the radix-2 one.",
+         "k = t mod p picks the twiddle, as in exercise 5. Twiddle the inputs before the 4-point DFT, not after; "
+         "output q is a sum of the four inputs turned by q quarter turns per j.",
+         "k = t & (p - 1); a_j = x[t + j N/4] zeta^(j k), zeta^(j k) = twiddle[j k N / (4 p)];\n"
+         "y[(t - k) 4 + k + q p] = sum_j a_j i^(j q), q = 0..3: q = 1 is a0 + i a1 - a2 - i a3, q = 2 is\n"
+         "a0 - a1 + a2 - a3, q = 3 is a0 - i a1 - a2 + i a3",
+         {"--set", "backend=gpu_fft", "--set", "fft=stockham4"},
+         [](const fs::path& work) { return check_fft(work, step05::GpuFftForm::Stockham4); }},
+        {"step05_fft", 7, "Choppiness and slopes in the spectrum", "mode.glsl", "vec2[4] packed_pairs(vec2 h, vec2 k) {",
+         "    // TODO (exercise 7): the four packed pairs from h~ at k. For now the height alone.\n"
          "    vec2 pairs[4] = vec2[4](h, vec2(0.0), vec2(0.0), vec2(0.0));\n    return pairs;\n",
-         "Write packed_pairs: every map is h~ times a factor, because d/dx of e^{i k.x} is i kx e^{i k.x}. With\n"
-         "u = k/|k|: D~ = +i u h~ (choppy displacement), slopes i k h~, and the derivatives of D one more factor\n"
-         "i k. Pack them as h + i Dx, Dz + i dh/dx, dh/dz + i dDx/dx, dDz/dz + i dDx/dz, and return zeros at\n"
-         "k = 0. The starter gives the height alone: no choppiness, and a sea lit as if flat.",
-         "i times a complex (x, y) is (-y, x). Multiply it out: h + i (i ux h) = (1 - ux) h; i kz h + i (i kx)(i ux h) "
-         "= (kz - kx ux) i h. The notes' 4.5 writes D~ = -i u h~: round crests and folds in the troughs.",
+         "Write packed_pairs: the spectra of the choppy displacement and of the slopes, packed two per transform.\n"
+         "Every map is h~ times a factor: a derivative d/dx of e^{i k.x} is a factor i kx. The horizontal\n"
+         "displacement is the height's phase turned by a quarter along u = k/|k|, towards the crest (README\n"
+         "section 4: derive its sign from one Gerstner wave). Pack two real maps a, b as a + i b (README 4.5):\n"
+         "h + i Dx, Dz + i dh/dx, dh/dz + i dDx/dx, dDz/dz + i dDx/dz; zeros at k = 0. The starter is the height\n"
+         "alone: round waves lit as if flat.",
+         "i times a complex (x, y) is (-y, x). The notes' 4.5 writes D~ = -i u h~: round crests and folds in the "
+         "troughs; one Gerstner wave says which sign moves points towards its crest.",
+         "D~ = +i u h~, grad h~ = i k h~, dDx/dx~ = i kx Dx~ ...: h + i (i ux h) = (1 - ux) h; "
+         "i kz h + i (i kx)(i ux h) = (kz - kx ux) i h; and so on",
+         {"--set", "backend=gpu_fft", "--camera", "low"},
          [](const fs::path& work) { return check_packed_pairs(work); }},
+        {"step05_fft", 8, "A mode's initial amplitude, h0(k)", "mode_amplitude.cpp",
+         "std::complex<double> initial_amplitude(double xi_real, double xi_imaginary, double energy) {",
+         "    // TODO (exercise 8): h0(k) from two standard normal numbers and the mode's energy Phi(k) dk^2.\n"
+         "    return {0.0, 0.0};\n",
+         "Write initial_amplitude (C++). The spectrum says how much energy each mode holds on average,\n"
+         "E = Phi(k) dk^2 (m^2 of height variance); a real sea is one random draw of it: each mode gets a\n"
+         "complex amplitude with a random phase and a random, Gaussian size. Scale a complex Gaussian\n"
+         "(xi_real + i xi_imaginary, each of mean 0 and variance 1) so that the sea's height variance is the\n"
+         "spectrum's integral, sum E. Mind that the time evolution (exercise 4) adds conj(h0(-k)) to every\n"
+         "mode: count how many copies of each mode's energy the height then holds. ./ocean check averages\n"
+         "the height variance of 200 draws of the default sea (N = 64) and compares it with the integral.",
+         "E|xi_real + i xi_imaginary|^2 = 2. At t = 0, h~(k) = h0(k) + conj(h0(-k)): two independent draws. The notes' "
+         "sqrt(E / 2) makes the sea's variance twice the spectrum's.",
+         "h0(k) = (xi_real + i xi_imaginary) sqrt(E / 4): E|h0|^2 = E / 2, and with its partner E|h~(k)|^2 = "
+         "(E(k) + E(-k)) / 2, so sum |h~|^2 = sum E",
+         {},
+         [](const fs::path& work) {
+             return check_cpp(work, "mode_amplitude.cpp", variance_driver(), 1,
+                              [](int) { return std::vector<double>{1.0}; }, 0.05);
+         }},
     };
 }
 

@@ -39,6 +39,9 @@ public:
         p.add_choice("backend", &backend_, step05::backend_names(),
                      "inverse transform: naive DFT on the GPU (N <= 64), GPU FFT, FFTW on the CPU, or auto "
                      "(the faster of the last two, timed on the first frames)");
+        p.add_choice("fft", &fft_form_, step05::gpu_fft_form_names(),
+                     "the GPU FFT's form: plain radix 2 (a dispatch a stage) or radix 4 in Stockham's order "
+                     "(every stage in shared memory); the same result");
         p.add_choice("normals", &normals_, {"slopes", "finite_difference"},
                      "normals from the slope maps (i k h~) or from differences of the height map");
         std::vector<std::string> views = step05::map_view_names();  // view 1.. is map view 0..
@@ -98,6 +101,7 @@ private:
     }
 
     void render() override {
+        gpu_->set_gpu_fft_form(step05::GpuFftForm(fft_form_));
         const Backend chosen = backend();
         if (chosen == Backend::Auto) {
             // While auto decides, frames alternate the backends, whose passes differ: one figure
@@ -162,7 +166,7 @@ private:
     ocean::GridMesh grid_;
     bool cull_ = true;
     std::vector<std::string> backend_times_;
-    int backend_ = int(Backend::Auto), normals_ = 0, view_ = 0;
+    int backend_ = int(Backend::Auto), fft_form_ = int(step05::GpuFftForm::Stockham4), normals_ = 0, view_ = 0;
     float map_range_ = 0;
     double height_variance_ = 0;  // m^2: the spectrum's resolved variance (step06 keeps the same)
     bool wireframe_ = false, warned_dft_ = false;

@@ -52,6 +52,7 @@ void OceanSimulation::allocate(int n, int cascades) {
         twiddles.push_back(float(std::cos(angle)));
         twiddles.push_back(float(std::sin(angle)));
     }
+    for (ocean::Buffer& b : radix2_scratch_) b = ocean::Buffer();  // remade at the new size when used
     twiddles_ = ocean::make_buffer();
     glNamedBufferStorage(twiddles_.id(), GLsizeiptr(twiddles.size() * sizeof(float)), twiddles.data(), 0);
     cpu_.reset();  // planned again, for the new size, when first used
@@ -94,6 +95,43 @@ void OceanSimulation::evolve(double time) {
 }
 
 void OceanSimulation::transform_fft(GLuint source, GLuint target, int layers) {
+    if (form_ == GpuFftForm::Radix2)
+        transform_radix2(source, target, layers);
+    else
+        transform_stockham4(source, target, layers);
+}
+
+void OceanSimulation::transform_radix2(GLuint source, GLuint target, int layers) {
+    const GLsizeiptr bytes = GLsizeiptr(n_) * n_ * 4 * cascade_count() * 2 * GLsizeiptr(sizeof(float));
+    for (ocean::Buffer& b : radix2_scratch_)
+        if (b.id() == 0) {  // allocate() empties them when the size changes
+            b = ocean::make_buffer();
+            glNamedBufferStorage(b.id(), bytes, nullptr, 0);
+        }
+    const int stages = int(std::lround(std::log2(double(n_)))), group = std::min(64, n_ / 2);
+    auto& p = program("fft_radix2.comp", {"FFT_SIZE " + std::to_string(n_), "GROUP " + std::to_string(group)});
+    set_common_uniforms(p);
+    glUseProgram(p.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, twiddles_.id());
+    for (int axis = 0; axis < 2; ++axis) {  // rows (x) from source to target, then the columns of target
+        p.set("u_axis", axis);
+        GLuint from = axis == 0 ? source : target;
+        for (int stage = 0; stage < stages; ++stage) {
+            // A stage reads every element another thread writes: it cannot work in place. The
+            // stages alternate between the two scratch buffers; the last one writes the target.
+            const GLuint to = stage == stages - 1 ? target : radix2_scratch_[std::size_t(stage % 2)].id();
+            p.set("u_stage", stage);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, from);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, to);
+            glDispatchCompute(GLuint(n_ / 2 / group), GLuint(n_), GLuint(layers));
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // this stage's writes before the next's reads
+            from = to;
+        }
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void OceanSimulation::transform_stockham4(GLuint source, GLuint target, int layers) {
     // fft.comp's LINES: four lines a workgroup, fewer where their 2 x 4 x N values would not fit
     // GL's minimum of 32 KB of shared memory (N = 1024 and up).
     const int lines = std::clamp(2048 / n_, 1, 4);
@@ -217,7 +255,8 @@ BackendTimes time_backends(OceanSimulation& ocean, double time, int repeats) {
     t.layers = 4 * ocean.cascade_count();
     t.repeats = repeats;
     ocean.evolve(time);
-    t.gpu_fft_ms = median_ms(repeats, [&] { ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers); });
+    t.gpu_fft_ms = median_ms(repeats, [&] { ocean.transform_stockham4(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers); });
+    t.gpu_radix2_ms = median_ms(repeats, [&] { ocean.transform_radix2(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers); });
     if (t.n <= kMaxDftSize)
         t.dft_ms = median_ms(repeats, [&] { ocean.transform_dft(ocean.spectra_buffer(), ocean.fields_buffer(), t.layers); });
     // The floor: the same inverse transforms in single precision on all cores, planned with
@@ -247,7 +286,8 @@ std::vector<std::string> BackendTimes::lines() const {
     out.push_back("N = " + std::to_string(n) + ", " + std::to_string(layers) + " complex maps, median of " +
                   std::to_string(repeats) + ", wall ms around glFinish:");
     out.push_back(n <= kMaxDftSize ? format_ms("DFT", dft_ms) : "DFT      (only for N <= 64)");
-    out.push_back(format_ms("GPU FFT", gpu_fft_ms));
+    out.push_back(format_ms("GPU FFT", gpu_fft_ms) + " (radix 4, Stockham, stages in shared memory)");
+    out.push_back(format_ms("radix 2", gpu_radix2_ms) + " (one dispatch a stage, through memory)");
     char line[200];
     std::snprintf(line, sizeof line, "FFTW floor (fftwf, %d threads, FFTW_MEASURE) %10.3f ms", threads, fftw_ms);
     out.push_back(line);
@@ -255,7 +295,8 @@ std::vector<std::string> BackendTimes::lines() const {
         std::snprintf(line, sizeof line, "DFT / GPU FFT = %.1f", dft_ms / gpu_fft_ms);
         out.push_back(line);
     }
-    std::snprintf(line, sizeof line, "GPU FFT kernel = %.1f x the floor", gpu_fft_ms / fftw_ms);
+    std::snprintf(line, sizeof line, "GPU FFT kernel = %.1f x the floor; radix 2 = %.1f x the GPU FFT", gpu_fft_ms / fftw_ms,
+                  gpu_radix2_ms / gpu_fft_ms);
     out.push_back(line);
     std::snprintf(line, sizeof line, "whole simulation (evolve, transforms, upload, unpack): FFTW backend %.2f ms = %.1f x the floor, "
                   "GPU FFT backend %.2f ms = %.1f x", simulation_fftw_ms, simulation_fftw_ms / fftw_ms, simulation_gpu_fft_ms,

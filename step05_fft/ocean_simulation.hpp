@@ -40,6 +40,14 @@ std::vector<std::string> backend_names(const std::array<Backend, N>& offered) {
     for (Backend b : offered) names.push_back(backend_names()[std::size_t(b)]);
     return names;
 }
+// The GPU FFT's two forms (the `fft` parameter): the plain radix-2 FFT the chapter derives first,
+// one dispatch per stage through memory (fft_radix2.comp), and its optimisation, radix 4 in Stockham's
+// order with every stage of a line in shared memory (fft.comp). Same sums, same result.
+enum class GpuFftForm { Radix2 = 0, Stockham4 = 1 };
+inline const std::vector<std::string>& gpu_fft_form_names() {
+    static const std::vector<std::string> names = {"radix2", "stockham4"};
+    return names;
+}
 constexpr int kAutoTrialFrames = 3;
 constexpr int kMaxDftSize = 64;  // the naive DFT is O(N^4)
 constexpr int kMaxCascades = 4;
@@ -64,6 +72,11 @@ public:
     // The passes one by one (simulate calls them; tests and the benchmark call them alone).
     void evolve(double time);
     void transform_fft(GLuint source, GLuint target, int layers);  // 2D inverse FFT, in place allowed
+    void transform_radix2(GLuint source, GLuint target, int layers);     // the same, GpuFftForm::Radix2
+    void transform_stockham4(GLuint source, GLuint target, int layers);  // the same, GpuFftForm::Stockham4
+    // Which form transform_fft (and so Backend::GpuFft) uses; Stockham4 unless set.
+    void set_gpu_fft_form(GpuFftForm form) { form_ = form; }
+    GpuFftForm gpu_fft_form() const { return form_; }
     void transform_dft(GLuint source, GLuint target, int layers);  // N <= 64
     void upload_cpu_fields(double time);                   // FFTW: the fields buffer, as the GPU FFT leaves it
     void assemble(float choppiness);
@@ -106,7 +119,9 @@ private:
     int n_ = 0;
     ocean::Buffer h0_, omega_;
     ocean::Buffer spectra_, fields_;
-    ocean::Buffer twiddles_;  // e^{+2 pi i m / N} for fft.comp
+    ocean::Buffer twiddles_;  // e^{+2 pi i m / N} for fft.comp and fft_radix2.comp
+    std::array<ocean::Buffer, 2> radix2_scratch_;  // the radix-2 stages' ping-pong pair, made when first used
+    GpuFftForm form_ = GpuFftForm::Stockham4;
     ocean::Texture displacement_, slopes_;
     std::unique_ptr<CpuSimulation> cpu_;  // the FFTW backend, made when first used
     bool maps_on_cpu_ = false;             // the last simulate() was FFTW's
@@ -122,14 +137,15 @@ private:
 // cost on this machine's CPU. Medians of `repeats` runs, wall ms around glFinish.
 struct BackendTimes {
     int n = 0, layers = 0, repeats = 0, threads = 0;
-    double dft_ms = std::nan(""), gpu_fft_ms = 0;  // no DFT above N = 64
+    double dft_ms = std::nan(""), gpu_fft_ms = 0;  // no DFT above N = 64; the GPU FFT is Stockham4
+    double gpu_radix2_ms = 0;                        // the plain radix-2 form of the same transforms
     double fftw_ms = 0;                              // the floor: the transforms alone, fftwf
     double simulation_fftw_ms = 0, simulation_gpu_fft_ms = 0;  // whole simulate() per backend
     // One line per backend and the ratios to the floor (the panel and --bench print them).
     std::vector<std::string> lines() const;
     // For --bench's machine-readable line.
     std::vector<std::pair<std::string, double>> figures() const {
-        return {{"dft_ms", dft_ms}, {"gpu_fft_ms", gpu_fft_ms}, {"fftw_ms", fftw_ms},
+        return {{"dft_ms", dft_ms}, {"gpu_fft_ms", gpu_fft_ms}, {"gpu_radix2_ms", gpu_radix2_ms}, {"fftw_ms", fftw_ms},
                 {"simulation_ms", std::min(simulation_fftw_ms, simulation_gpu_fft_ms)}};
     }
 };

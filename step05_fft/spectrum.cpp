@@ -1,5 +1,7 @@
 #include "step05_fft/spectrum.hpp"
 
+#include "step05_fft/mode_amplitude.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -230,7 +232,7 @@ InitialSpectrum initial_spectrum(const SpectrumParams& p) {
             s.omega[index] = dispersion(std::hypot(kx, kz), p.depth);
             if (!resolved_mode(p, i, j)) continue;
             s.density[index] = spectrum_2d(p, kx, kz) * dk * dk;
-            s.h0[index] = std::complex<double>(xr, xi) * std::sqrt(s.density[index] / 4);
+            s.h0[index] = initial_amplitude(xr, xi, s.density[index]);
         }
     return s;
 }

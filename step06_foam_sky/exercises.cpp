@@ -36,6 +36,7 @@ std::vector<Exercise> chapter() {
          "Looking straight down (cos theta = 1) water reflects F0 = 0.02; at grazing (cos theta = 0), "
          "everything (1). Check both ends of your formula, and clamp cos theta: a normal bent past 90 degrees "
          "gives a negative one.",
+         "", {},
          [](const fs::path& work) {
              return check_glsl(work, "shading.glsl", "fresnel_schlick(dot(n, v), 0.02)",
                                   [](const Vec3& n, const Vec3& v, const Vec3&, double) {
@@ -55,6 +56,7 @@ std::vector<Exercise> chapter() {
          "denominator is N.V alone (N.L cancels with the irradiance); return vec3(0.0) for N.L <= 0 or N.V <= 0. "
          "The check's roughness is twice as rough along a wind at (0.6, 0.8) as across it: use the anisotropic "
          "D and Lambda, not alpha alone.",
+         "", {},
          [](const fs::path& work) {
              return check_glsl(work, "shading.glsl",
                                "specular_term(n, v, l, wind_roughness(n, alpha, 0.5 * alpha, vec2(0.6, 0.8)), 0.02, vec3(1.0)).x",
@@ -73,6 +75,7 @@ std::vector<Exercise> chapter() {
          "6 frames a second than at 60.",
          "The solution of df/dt = q - r f is f(dt) = f e^{-r dt} + q (1 - e^{-r dt}) / r; for r dt -> 0 it tends "
          "to f + q dt (mind the division by r = 0, and float's cancellation in 1 - e^{-x} for tiny x).",
+         "", {},
          [](const fs::path& work) {
              return check_values(
                  work, "foam_step.glsl", "foam_step(a.x, 20.0 * a.y, 5.0 * a.z, 0.5 * b.x)",
@@ -94,6 +97,7 @@ std::vector<Exercise> chapter() {
          "away (view=tessellation shows it).",
          "Use the midpoint of the edge (so the two patches that share it compute the same level and no crack "
          "opens), at y = 0, and its distance to u_eye in 3D; clamp to [1, 64].",
+         "", {},
          [](const fs::path& work) {
              return check_values(
                  work, "tessellation.glsl", "edge_level(300.0 * a.xy, 300.0 * a.zw)",
@@ -118,6 +122,7 @@ std::vector<Exercise> chapter() {
          "starter's lobe has the right shape and the wrong size.",
          "At N.H = 1, D = 1 / (pi alpha^2): a smooth sea (small alpha) has a tall, narrow peak. Without the pi the "
          "glint is pi times too bright; check D(1) for alpha = 0.1 (31.8).",
+         "", {},
          [](const fs::path& work) {
              return check_glsl(work, "shading.glsl", "ggx_distribution(max(dot(n, normalize(v + l)), 0.0), alpha)",
                                [](const Vec3& n, const Vec3& v, const Vec3& l, double alpha) {
@@ -136,6 +141,7 @@ std::vector<Exercise> chapter() {
          "as much as one on deck.",
          "Parametrise the segment as eye + s (p - eye), s in [0, 1]: tau = |p - eye| * density e^{-f eye.y} * "
          "(1 - e^{-f dy}) / (f dy), dy = p.y - eye.y. A level ray (f dy -> 0) needs the limit 1.",
+         "", {},
          [](const fs::path& work) {
              return check_values(
                  work, "fog.glsl", std::string("apply_fog(vec3(0.0), ") + kFogRay + ", vec3(1.0)).x",

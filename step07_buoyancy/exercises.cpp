@@ -61,6 +61,7 @@ std::vector<Exercise> chapter() {
          "crests: they are the heights at p, not above p.",
          "The inverse of [a b; b d] is [d -b; -b a] / (a d - b b). Check the sign: the step must reduce the "
          "miss, so x - J^-1 miss, not plus. displacement.w is l dDx/dz, the off-diagonal term.",
+         "", {},
          [](const fs::path& work) {
              return check_vector(
                  work, "sea_query.glsl", std::string("vec3(newton_step(a.xy, a.zw, ") + kSurface + "), 0.0)",
@@ -86,6 +87,7 @@ std::vector<Exercise> chapter() {
          "the middle of the wet part (y - half + share * half, not the cell's centre). The force is vertical, "
          "so its torque has no y component. Check a dry cell (share 0) gives nothing and a drowned one "
          "rho_w g V.",
+         "", {},
          [](const fs::path& work) {
              return check_cpp(work, "hull_forces.cpp", kBuoyancyDriver, 200, buoyancy_reference, 1e-9);
          }},

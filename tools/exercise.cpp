@@ -1,10 +1,13 @@
 // exercise prepare STEP N WORK_DIR | exercise check STEP N WORK_DIR | exercise list
+// exercise hint STEP N | exercise flags STEP N
 // The exercises behind ./ocean exercise and ./ocean check (exercises/README.md).
 //   prepare: copies the step's shaders into WORK_DIR and empties one function there (its body
 //            becomes a TODO that compiles), so the step runs on the learner's copy
 //            (--shader-dir, hot reload) with that piece missing.
 //   check:   compiles the learner's function on the GPU, evaluates it at many inputs and holds it
 //            to the chapter's CPU reference; prints pass, or fail with a hint. Exit 0 on pass.
+//   hint:    the formula the task leaves out (the second hint: try first, then read it).
+//   flags:   the step's flags that run the code the exercise edits, one a line (./ocean passes them).
 // The solutions are the chapters' own shaders: an exercise removes a piece of working code.
 #include "tools/exercise.hpp"
 
@@ -84,7 +87,7 @@ void prepare(const Exercise& e, const fs::path& work) {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: exercise list | exercise prepare|check STEP N WORK_DIR\n");
+    std::fprintf(stderr, "usage: exercise list | exercise prepare|check STEP N WORK_DIR | exercise hint|flags STEP N\n");
     return 2;
 }
 
@@ -97,19 +100,29 @@ int main(int argc, char** argv) {
             for (const Exercise& e : all()) std::printf("%s %d  %s (%s)\n", e.step.c_str(), e.number, e.title.c_str(), e.file.c_str());
             return 0;
         }
-        if ((verb != "prepare" && verb != "check") || argc != 5) return usage();
+        const bool takes_work = verb == "prepare" || verb == "check";
+        if (!(takes_work && argc == 5) && !((verb == "hint" || verb == "flags") && argc == 4)) return usage();
         const Exercise* e = find(argv[2], std::atoi(argv[3]));
         if (e == nullptr) {
             std::fprintf(stderr, "exercise: no exercise %s of %s (exercise list names them)\n", argv[3], argv[2]);
             return 2;
         }
+        if (verb == "hint") {
+            std::printf("exercise %d of %s: %s\n%s\n", e->number, e->step.c_str(), e->title.c_str(), e->formula.c_str());
+            return 0;
+        }
+        if (verb == "flags") {
+            for (const std::string& flag : e->run_flags) std::printf("%s\n", flag.c_str());
+            return 0;
+        }
         const fs::path work = argv[4];
         if (verb == "prepare") {
             prepare(*e, work);
-            std::printf("exercise %d of %s: %s\n%s\nedit %s %s\n", e->number, e->step.c_str(), e->title.c_str(),
-                        e->task.c_str(), (work / e->file).string().c_str(),
+            std::printf("exercise %d of %s: %s\n%s\nedit %s %s\nstuck? ./ocean exercise %s %d --hint prints the formula\n",
+                        e->number, e->step.c_str(), e->title.c_str(), e->task.c_str(), (work / e->file).string().c_str(),
                         is_cpp(e->file) ? "(C++: ./ocean check holds it to the chapter's own)"
-                                        : "(the step reloads it when you save)");
+                                        : "(the step reloads it when you save)",
+                        e->step.c_str(), e->number);
             return 0;
         }
         if (!fs::exists(work / e->file)) {

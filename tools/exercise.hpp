@@ -5,6 +5,7 @@
 
 #include "common/shader.hpp"
 #include "step03_lighting/normals.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -32,8 +33,12 @@ struct Exercise {
     std::string file;       // the shader (in the step's shaders/) holding the function
     std::string signature;  // the function's first line, as written there
     std::string stub;       // the body the learner starts from (compiles, does nothing useful)
-    std::string task;       // what to write
-    std::string hint;       // printed when the check fails
+    std::string task;       // the principle and what to derive (no formula: the learner tries first)
+    std::string hint;       // a nudge, printed when the check fails
+    std::string formula;    // the answer's formula, printed only on request (./ocean exercise STEP N --hint)
+    // The step's flags that make it run the code this exercise edits, so the starter shows
+    // (step05's GPU exercises need backend=gpu_fft: on a CPU-only machine auto picks FFTW).
+    std::vector<std::string> run_flags;
     std::function<Verdict(const fs::path& work)> check;
 };
 
@@ -80,9 +85,10 @@ using CaseReference = std::function<std::vector<double>(int index)>;
 Verdict check_cpp(const fs::path& work, const std::string& file, const std::string& driver, int cases,
                   const CaseReference& reference, double tolerance);
 
-// step05's inverse FFT with the work folder's fft.comp, run by the chapter's own OceanSimulation (its
-// buffers, twiddle table and dispatches) on random spectra at N = 64, 128, 256 and 512 (radix-4
-// stages, and a radix-2 stage last where log2 N is odd), against the CPU reference transform.
-Verdict check_fft(const fs::path& work);
+// step05's inverse FFT in `form` with the work folder's shader (fft_radix2.comp or fft.comp), run by
+// the chapter's own OceanSimulation (its buffers, twiddle table and dispatches) on random spectra at
+// N = 64, 128, 256 and 512 (for Stockham4: radix-4 stages, and a radix-2 stage last where log2 N is
+// odd), against the CPU reference transform.
+Verdict check_fft(const fs::path& work, step05::GpuFftForm form);
 
 }  // namespace exercises

@@ -140,7 +140,7 @@ Verdict check_vector(const fs::path& work, const std::string& include, const std
     return verdict;
 }
 
-Verdict check_fft(const fs::path& work) {
+Verdict check_fft(const fs::path& work, step05::GpuFftForm form) {
     // The chapter's programs as the step gets them, its own shaders read from the work folder.
     ocean::ProgramLibrary programs;
     programs.set_shader_dir(std::string(OCEAN_SOURCE_DIR) + "/step05_fft/shaders", work.string());
@@ -152,6 +152,7 @@ Verdict check_fft(const fs::path& work) {
         const step05::InitialSpectrum sizes = step05::initial_spectrum(p);  // only to size the buffers
         step05::OceanSimulation ocean(factory);
         ocean.set_spectra({&sizes});
+        ocean.set_gpu_fft_form(form);
         std::mt19937 random{unsigned(n)};
         std::uniform_real_distribution<float> uniform(-1, 1);
         std::vector<float> input(std::size_t(n) * n * 2);  // the first of the four fields

@@ -6,6 +6,7 @@
 #include "tests/gpu/program_cache.hpp"
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <random>
 #include <string>
@@ -40,13 +41,17 @@ double relative_error(const std::vector<float>& gpu, std::size_t offset, std::si
     return largest > 0 ? worst / largest : worst;
 }
 
+// Both forms of the GPU FFT (the plain radix 2 and radix 4 in Stockham's order), every resolution.
 TEST_F(FftTest, GpuFftMatchesFftwOnRandomInput) {
+    for (GpuFftForm form : {GpuFftForm::Radix2, GpuFftForm::Stockham4})
     for (int n : {64, 128, 256, 512}) {
+        const std::string name = gpu_fft_form_names()[std::size_t(form)];
         SpectrumParams p;
         p.resolution = n;
         const InitialSpectrum s = initial_spectrum(p);  // only to size the buffers
         OceanSimulation ocean(factory());
         ocean.set_spectra({&s});
+        ocean.set_gpu_fft_form(form);
         std::mt19937 random{unsigned(n)};
         std::uniform_real_distribution<float> uniform(-1, 1);
         std::vector<float> input(std::size_t(n) * n * 4 * 2);
@@ -67,8 +72,8 @@ TEST_F(FftTest, GpuFftMatchesFftwOnRandomInput) {
             }
             const double error = std::max(relative_error(output, 2 * base, 2, re),
                                           relative_error(output, 2 * base + 1, 2, im));
-            EXPECT_LT(error, 1e-4) << "N = " << n << ", layer " << layer;
-            if (layer == 0) std::printf("N = %d: GPU FFT vs FFTW relative error %.2e\n", n, error);
+            EXPECT_LT(error, 1e-4) << name << ", N = " << n << ", layer " << layer;
+            if (layer == 0) std::printf("%s, N = %d: GPU FFT vs FFTW relative error %.2e\n", name.c_str(), n, error);
         }
     }
 }
@@ -123,31 +128,35 @@ TEST_F(FftTest, BackendsMatchTheCpuReference) {
         ocean.set_spectra({&s});
         for (double t : {0.0, 2.5, 86400.0 * 3 + 0.25}) {
             const OceanMaps reference = simulate_cpu(s, t);
-            std::vector<Backend> backends{Backend::GpuFft, Backend::Fftw};
-            if (n <= kMaxDftSize) backends.push_back(Backend::Dft);
-            for (Backend backend : backends) {
-                if (backend == Backend::Fftw) {
-                    ocean.upload_cpu_fields(t);
-                } else {
-                    ocean.evolve(t);
-                    if (backend == Backend::Dft)
-                        ocean.transform_dft(ocean.spectra_buffer(), ocean.fields_buffer(), 4);
-                    else
-                        ocean.transform_fft(ocean.spectra_buffer(), ocean.fields_buffer(), 4);
-                }
+            // Each backend, the GPU FFT in both its forms.
+            std::vector<std::pair<std::string, std::function<void()>>> backends = {
+                {"GPU FFT radix2", [&] {
+                     ocean.evolve(t);
+                     ocean.transform_radix2(ocean.spectra_buffer(), ocean.fields_buffer(), 4);
+                 }},
+                {"GPU FFT stockham4", [&] {
+                     ocean.evolve(t);
+                     ocean.transform_stockham4(ocean.spectra_buffer(), ocean.fields_buffer(), 4);
+                 }},
+                {"FFTW", [&] { ocean.upload_cpu_fields(t); }}};
+            if (n <= kMaxDftSize)
+                backends.push_back({"DFT", [&] {
+                                        ocean.evolve(t);
+                                        ocean.transform_dft(ocean.spectra_buffer(), ocean.fields_buffer(), 4);
+                                    }});
+            for (const auto& [name, run] : backends) {
+                run();
                 const auto fields = ocean.read_fields();
                 double worst = 0;
                 for (std::size_t pair = 0; pair < 4; ++pair)
                     for (std::size_t part = 0; part < 2; ++part) {
                         const double e = relative_error(fields, pair * n * n * 2 + part, 2,
                                                         reference[kPacking[pair][part]]);
-                        EXPECT_LT(e, 1e-4) << "N = " << n << ", backend " << int(backend) << ", t = " << t
+                        EXPECT_LT(e, 1e-4) << "N = " << n << ", backend " << name << ", t = " << t
                                            << ", " << field_name(kPacking[pair][part]);
                         worst = std::max(worst, e);
                     }
-                std::printf("N = %d, backend %s, t = %g: worst relative error %.2e\n", n,
-                            backend == Backend::Dft ? "DFT" : backend == Backend::GpuFft ? "GPU FFT" : "FFTW",
-                            t, worst);
+                std::printf("N = %d, backend %s, t = %g: worst relative error %.2e\n", n, name.c_str(), t, worst);
             }
         }
     }

@@ -55,7 +55,7 @@ refuses downward-normal step04_fbm 2 fbm.glsl '    return vec3(0.0, 1.0, 0.0);' 
 refuses notes-evolution step05_fft 4 mode.glsl '    return h0_k;' \
   '    vec2 r = vec2(cos(phase), sin(phase));\n    return complex_multiply(h0_k, r) + complex_multiply(vec2(h0_minus_k.x, -h0_minus_k.y), vec2(r.x, -r.y));'
 # The notes' 4.5, D = -i k/|k| h: folds in the troughs (the first pair, h + i Dx, shows it).
-refuses notes-choppiness step05_fft 6 mode.glsl '    vec2 pairs\[4\] = vec2\[4\](h, vec2(0.0), vec2(0.0), vec2(0.0));' \
+refuses notes-choppiness step05_fft 7 mode.glsl '    vec2 pairs\[4\] = vec2\[4\](h, vec2(0.0), vec2(0.0), vec2(0.0));' \
   '    vec2 u = k / max(length(k), 1e-9);\n    vec2 pairs[4] = vec2[4]((1.0 + u.x) * h, vec2(0.0), vec2(0.0), vec2(0.0));' \
   'packed_pairs(a.xy, 2.0 * a.zw)[0].x'
 # GGX without its 1/pi: the shape, not the normalisation.
@@ -64,5 +64,8 @@ refuses unnormalised-ggx step06_foam_sky 5 shading.glsl '    return pow(max(n_do
 # The texel's index used as the frequency everywhere (no negative half): fails on k's x.
 refuses unsigned-frequency step05_fft 3 mode.glsl '    return (6.2831853 / patch_size) \* vec2(texel);' \
   '    return (6.2831853 / patch_size) * vec2(texel - n / 2);'
+# The notes' h0 = xi sqrt(Phi dk^2 / 2): forgets that conj(h0(-k)) doubles every mode's energy.
+refuses notes-h0 step05_fft 8 mode_amplitude.cpp '    return {0.0, 0.0};' \
+  '    return std::complex<double>(xi_real, xi_imaginary) * std::sqrt(energy / 2);' 'got 1.99'
 [ "$count" -gt 0 ] || { echo "FAIL: no exercises listed"; status=1; }
 exit $status
