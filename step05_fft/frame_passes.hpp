@@ -27,8 +27,8 @@ constexpr std::array<FramePass, 6> kFramePasses{{
      "displacement (RGBA32F array);slopes (RGBA32F array)"},
     {"ocean", "ocean.vert (grid in chunks), ocean.frag", "displacement (RGBA32F array);slopes (RGBA32F array)",
      "screen (sRGB)"},
-    {"ocean", "or, for view = height ... jacobian, map_view.frag", "displacement (RGBA32F array);slopes (RGBA32F array)",
-     "screen (sRGB)"},
+    {"ocean", "or, for view = height ... jacobian or spectrum, map_view.frag",
+     "displacement (RGBA32F array);slopes (RGBA32F array);spectrum image (RGBA8, CPU-made)", "screen (sRGB)"},
 }};
 
 }  // namespace step05

@@ -2,6 +2,8 @@
 // chapters' own code, so a figure cannot drift from what the steps do. For each figure NAME it
 // writes NAME.dat (columns of numbers) and NAME.gp (the gnuplot script that draws NAME.png from
 // them). ./ocean figures runs gnuplot on the scripts.
+#include "common/camera.hpp"
+#include "step02_sine3d/wave_params.hpp"
 #include "step03_lighting/normals.hpp"
 #include "step04_fbm/fbm.hpp"
 #include "step05_fft/frame_passes.hpp"
@@ -14,11 +16,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -397,6 +403,70 @@ void butterfly(const fs::path& dir) {
              << "     '' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#222222', '' index 0 using 3:4 with points pt 7 ps 1.2 lc rgb '#222222'\n";
 }
 
+// The plain radix-2 FFT worked by hand (README section 3): an 8-point inverse transform of a step,
+// x = (1, 1, 1, 1, 0, 0, 0, 0), by fft_radix2.comp's rule (bit-reversed read, then stage s joins
+// blocks of h = 2^s: X[k] = E[k] + zeta^k O[k], X[k + h] = E[k] - zeta^k O[k], zeta = e^{2 pi i/(2h)}),
+// every value on its node; the result checked here against the sum X[n] = sum_m x[m] e^{2 pi i m n / 8}.
+std::string complex_label(std::complex<double> z) {
+    const auto clean = [](double v) { return std::abs(v) < 5e-13 ? 0.0 : v; };
+    const double re = clean(z.real()), im = clean(z.imag());
+    char text[64];
+    if (im == 0) std::snprintf(text, sizeof text, "%.3g", re);
+    else if (re == 0) std::snprintf(text, sizeof text, "%.3gi", im);
+    else if (std::abs(std::abs(im) - 1) < 5e-13) std::snprintf(text, sizeof text, "%.3g %s i", re, im < 0 ? "−" : "+");
+    else std::snprintf(text, sizeof text, "%.3g %s %.3gi", re, im < 0 ? "−" : "+", std::abs(im));
+    return text;
+}
+
+void radix2_by_hand(const fs::path& dir) {
+    Figure f(dir, "radix2_by_hand");
+    const int n = 8, bits = 3;
+    const std::vector<std::complex<double>> x = {1, 1, 1, 1, 0, 0, 0, 0};
+    std::vector<std::vector<std::complex<double>>> columns(1, std::vector<std::complex<double>>(n));
+    for (int e = 0; e < n; ++e) {
+        int reversed = 0;
+        for (int b = 0; b < bits; ++b) reversed |= ((e >> b) & 1) << (bits - 1 - b);
+        columns[0][std::size_t(e)] = x[std::size_t(reversed)];
+    }
+    f.data << "# segments: x0 y0 x1 y1 (index 0), twiddles: x y label (index 1), values: x y label (index 2)\n";
+    std::ostringstream twiddles;
+    for (int s = 0; s < bits; ++s) {
+        const int h = 1 << s;
+        std::vector<std::complex<double>> next(n);
+        for (int b = 0; b < n / 2; ++b) {
+            const int k = b & (h - 1), even = 2 * (b - k) + k, odd = even + h;
+            const std::complex<double> zeta_k = std::polar(1.0, 2 * kPi * k / (2 * h));
+            const auto& in = columns.back();
+            next[std::size_t(even)] = in[std::size_t(even)] + zeta_k * in[std::size_t(odd)];
+            next[std::size_t(odd)] = in[std::size_t(even)] - zeta_k * in[std::size_t(odd)];
+            for (int from : {even, odd})
+                for (int to : {even, odd}) f.data << s << ' ' << -from << ' ' << s + 1 << ' ' << -to << '\n';
+            if (k > 0) twiddles << s + 0.22 << ' ' << -odd + 0.28 << " \"×ζ_{" << 2 * h << "}^{" << k << "}\"\n";
+        }
+        columns.push_back(next);
+    }
+    for (int m = 0; m < n; ++m) {  // the direct sum, in double: the butterflies must give it
+        std::complex<double> direct = 0;
+        for (int j = 0; j < n; ++j) direct += x[std::size_t(j)] * std::polar(1.0, 2 * kPi * j * m / n);
+        if (std::abs(direct - columns.back()[std::size_t(m)]) > 1e-12) throw std::runtime_error("radix2_by_hand: wrong");
+    }
+    f.data << "\n\n" << twiddles.str() << "\n\n";
+    for (std::size_t c = 0; c < columns.size(); ++c)
+        for (int e = 0; e < n; ++e)
+            f.data << c << ' ' << -e << " \"" << complex_label(columns[c][std::size_t(e)]) << "\"\n";
+    f.script << "set terminal pngcairo size 960,560 font \"DejaVu Sans,12\"\nset output 'radix2_by_hand.png'\n"
+             << "set title \"An 8-point inverse FFT by hand: x = (1, 1, 1, 1, 0, 0, 0, 0), three radix-2 stages\"\n"
+             << "set xrange [-0.45:3.45]\nset yrange [-7.6:0.6]\nset bmargin 5\nunset key\nunset grid\nunset border\n"
+             << "set ytics (\"0\" 0, \"1\" -1, \"2\" -2, \"3\" -3, \"4\" -4, \"5\" -5, \"6\" -6, \"7\" -7) nomirror\n"
+             << "set ylabel \"index in the line\"\n"
+             << "set xtics (\"read bit-reversed:\\nx_0 x_4 x_2 x_6 x_1 x_5 x_3 x_7\" 0, \"stage 0 (h = 1):\\n4 transforms of 2\" 1, "
+                "\"stage 1 (h = 2):\\n2 transforms of 4\" 2, \"stage 2 (h = 4):\\nX, the transform of 8\" 3) nomirror\n"
+             << "set style textbox opaque noborder\n"
+             << "plot 'radix2_by_hand.dat' index 0 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#9db8d9' lw 1.5, \\\n"
+             << "     '' index 1 using 1:2:3 with labels font \",10\" tc rgb '#d9822b', \\\n"
+             << "     '' index 2 using 1:2:3 with labels boxed font \",11\" tc rgb '#1f3f68'\n";
+}
+
 // One frame's data path, from a step's own pass table (frame_passes.hpp): the passes down the
 // page in the order they run, every buffer and texture across it, and in each cell whether the
 // pass reads it (blue), writes it (orange) or both.
@@ -502,6 +572,193 @@ plot 'lighting_vectors.dat' index 0 using 1:2 with lines ls 1, \
 )gp";
 }
 
+// step02: one directional wave seen from above (x to the right, z down the page, as the "top"
+// camera shows it), its height from waves.hpp, its crest lines d.p = lambda (n + 1/4), which are
+// perpendicular to d and lambda = 2 pi / w apart, and its direction d.
+void directional_wave(const fs::path& dir) {
+    Figure f(dir, "directional_wave");
+    const step02::DirectionalWave wave{30.0, 12.0, 1.0, 0.0};  // d at 30 degrees, 12 m, 1 m high
+    const step02::Direction d = step02::direction(wave);
+    const double lambda = 2 * kPi / step02::angular_wavenumber(wave);
+    f.data << "# x z height (t = 0)\n";
+    for (int b = 0; b <= 400; ++b)
+        for (int a = 0; a <= 400; ++a) {
+            const double x = -20 + 0.1 * a, z = -20 + 0.1 * b;
+            f.data << x << ' ' << z << ' ' << step02::height({wave}, x, z, 0.0) << '\n';
+        }
+    f.data << "\n\n# crest lines: d.p = lambda (n + 1/4), where the height is the amplitude\n";
+    for (int n = -4; n <= 3; ++n) {
+        const double s = lambda * (n + 0.25);
+        for (double u : {-40.0, 40.0}) f.data << s * d.x - u * d.z << ' ' << s * d.z + u * d.x << '\n';
+        f.data << "\n";
+        if (std::abs(step02::height({wave}, s * d.x, s * d.z, 0.0) - wave.amplitude) > 1e-9)
+            std::fprintf(stderr, "figure_data: directional_wave: a crest line misses the crest\n");
+    }
+    const double s0 = lambda * 0.25, side = -9.0;  // the wavelength's arrow, beside the origin
+    f.data << "\n# x z dx dz: d (8 m long), then lambda between two crests\n"
+           << "0 0 " << 8 * d.x << ' ' << 8 * d.z << '\n'
+           << s0 * d.x + side * -d.z << ' ' << s0 * d.z + side * d.x << ' ' << lambda * d.x << ' ' << lambda * d.z << '\n';
+    f.script << "set terminal pngcairo size 760,700 font \"DejaVu Sans,12\" linewidth 1.5\nset output 'directional_wave.png'\n"
+             << "set title \"step02: one wave a sin(w d·(x, z) − tφ) seen from above (waves.hpp)\"\n"
+             << "set xlabel \"x (m)\"\nset ylabel \"z (m), down the page: the view from above\"\n"
+             << "set size ratio -1\nset xrange [-20:20]\nset yrange [20:-20]\nunset key\nunset grid\nset clip two\n"
+             << "set palette defined (-1 '#0b2e59', 0 '#6fa8dc', 1 '#ffffff')\nset cblabel \"height (m)\"\nset cbrange [-1:1]\n"
+             << "set style textbox opaque noborder\n"
+             << "set label 1 \"d = (cos θ, sin θ), θ = 30°\\ncrests travel along +d\" at " << 8.6 * d.x + 0.6 << ", "
+             << 8.6 * d.z + 0.4 << " left front boxed tc rgb '#a33b8f'\n"
+             << "set label 2 \"λ = 2π/w = " << std::lround(lambda) << " m\" at "
+             << (s0 + 0.5 * lambda) * d.x + (side - 1.2) * -d.z << ", " << (s0 + 0.5 * lambda) * d.z + (side - 1.2) * d.x
+             << " center front boxed tc rgb '#222222'\n"
+             << "set label 3 \"crest lines: d·(x, z) = const,\\nperpendicular to d\" at -19, 18 left front boxed tc rgb '#d9822b'\n"
+             << R"gp(plot 'directional_wave.dat' index 0 using 1:2:3 with image, \
+     '' index 1 using 1:2 with lines lc rgb '#d9822b' lw 2.5, \
+     '' index 2 every ::0::0 using 1:2:3:4 with vectors head filled size 1.2,20 lw 3 lc rgb '#a33b8f', \
+     '' index 2 every ::1::1 using 1:2:3:4 with vectors heads filled size 0.8,20 lw 2 lc rgb '#222222'
+)gp";
+}
+
+// step02's camera from the side: the vertical plane through the eye and the target of the
+// "overview" view (common/camera.cpp), the frustum's top and bottom edges from the inverse of
+// projection * view, the eye's forward f and up u, and the sea of step02's default waves along the
+// plane. Below: the depth the projection stores against the distance in front of the eye.
+void camera_frustum(const fs::path& dir) {
+    Figure f(dir, "camera_frustum");
+    ocean::ParamRegistry registry;
+    ocean::Camera camera;
+    camera.declare_params(registry, ocean::camera_view("overview"));
+    step02::WaveParams sea;
+    sea.declare(registry);
+    const float aspect = 16.0f / 9.0f;
+    const glm::mat4 view = camera.view(), projection = camera.projection(aspect);
+    const glm::mat4 to_world = glm::inverse(projection * view);
+    const glm::vec3 eye = camera.eye(), forward = camera.forward();
+    const glm::vec3 heading = glm::normalize(glm::vec3(forward.x, 0, forward.z));
+    const glm::vec3 up = glm::cross(glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0))), forward);
+    // A point's coordinates in the figure: s along the heading from below the eye, and y.
+    auto side = [&](glm::vec3 p) { return glm::vec2(glm::dot(p - eye, heading), p.y); };
+    f.data << "# s  height of step02's default sea along the plane (t = 0)\n";
+    for (int i = 0; i <= 830; ++i) {
+        const double s = -36 + 0.2 * i;
+        const glm::vec3 p = eye + heading * float(s);
+        f.data << s << ' ' << step02::height(sea.waves(), p.x, p.z, 0.0) << '\n';
+    }
+    // The frustum's top and bottom edges in this plane, from the eye through the far plane's points
+    // (x_ndc = 0, y_ndc = -1 and 1, z_ndc = 1), cut where they leave the figure (s = 130, y = -6).
+    const double s_max = 130, y_min = -6;
+    const glm::vec2 eye_2d = side(eye), target_2d = side(glm::vec3(camera.target));
+    glm::vec2 edge_end[2];
+    double edge_angle[2];
+    f.data << "\n\n# the frustum's edges in this plane: from the eye to where they leave the figure\n";
+    for (int e = 0; e < 2; ++e) {
+        const glm::vec4 p = to_world * glm::vec4(0.0f, e == 0 ? -1.0f : 1.0f, 1.0f, 1.0f);
+        const glm::vec2 far_point = side(glm::vec3(p) / p.w), along = glm::normalize(far_point - eye_2d);
+        const double reach = std::min(along.x > 0 ? (s_max - eye_2d.x) / along.x : 1e9,
+                                      along.y < 0 ? (y_min - eye_2d.y) / along.y : 1e9);
+        edge_end[e] = eye_2d + along * float(reach);
+        edge_angle[e] = std::atan2(double(along.y), double(along.x)) * 180 / kPi;
+        f.data << eye_2d.x << ' ' << eye_2d.y << '\n' << edge_end[e].x << ' ' << edge_end[e].y << "\n\n";
+    }
+    f.data << "\n# x y dx dy: f, u and the world's up (14 m long)\n"
+           << eye_2d.x << ' ' << eye_2d.y << ' ' << 14 * glm::dot(forward, heading) << ' ' << 14 * forward.y << '\n'
+           << eye_2d.x << ' ' << eye_2d.y << ' ' << 14 * glm::dot(up, heading) << ' ' << 14 * up.y << '\n'
+           << eye_2d.x << ' ' << eye_2d.y << " 0 14\n";
+    f.data << "\n\n# eye, target\n" << eye_2d.x << ' ' << eye_2d.y << '\n' << target_2d.x << ' ' << target_2d.y << '\n';
+    f.data << "\n\n# distance in front of the eye (m)  depth stored, in [0, 1]\n";
+    for (int i = 0; i <= 400; ++i) {
+        const double distance = camera.near_plane * std::pow(double(camera.far_plane / camera.near_plane), i / 400.0);
+        const glm::vec4 clip = projection * view * glm::vec4(eye + forward * float(distance), 1.0f);
+        f.data << distance << ' ' << 0.5 * clip.z / clip.w + 0.5 << '\n';
+    }
+    const double n = camera.near_plane, far = camera.far_plane, half = 2 * far * n / (far + n);
+    const glm::vec4 target_clip = projection * view * glm::vec4(glm::vec3(camera.target), 1.0f);
+    const double target_depth = 0.5 * target_clip.z / target_clip.w + 0.5;
+    const double distance = camera.distance, pitch = camera.pitch_deg, fov = camera.fov_deg;
+    f.script << "set terminal pngcairo size 900,880 font \"DejaVu Sans,12\" linewidth 1.5\nset output 'camera_frustum.png'\n"
+             << "set multiplot layout 2,1 title \"step02's camera (common/camera.cpp, the overview view): what the view and projection matrices do\"\n"
+             << "set size ratio -1\nset xrange [-36:" << s_max << "]\nset yrange [" << y_min << ":50]\nunset key\nset clip two\n"
+             << "set title \"from the side: the vertical plane through the eye and the target (fov " << fov << "°, pitch "
+             << pitch << "°, distance " << distance << " m)\"\n"
+             << "set xlabel \"metres along the view's heading\"\nset ylabel \"y (m)\"\n"
+             << "set style textbox opaque noborder\n"
+             << "set object 1 polygon from " << eye_2d.x << ',' << eye_2d.y << " to " << edge_end[0].x << ',' << edge_end[0].y
+             << " to " << s_max << ',' << y_min << " to " << edge_end[1].x << ',' << edge_end[1].y << " to " << eye_2d.x << ','
+             << eye_2d.y << " fc rgb '#d9822b' fs transparent solid 0.12 noborder\n"
+             << "set object 2 circle at " << eye_2d.x << ',' << eye_2d.y << " size 28 arc [" << edge_angle[0] << ':'
+             << edge_angle[1] << "] fs empty border lc rgb '#d9822b' lw 1.5 front\n"
+             << "set label 1 \"eye\" at " << eye_2d.x - 2 << ", " << eye_2d.y - 2 << " right front boxed\n"
+             << "set label 9 \"eye = target − distance · f\" at -34, 8 left front boxed\n"
+             << "set label 2 \"target\" at " << target_2d.x << ", " << target_2d.y + 4.5 << " center front boxed\n"
+             << "set label 3 \"f\" at " << eye_2d.x + 14 * glm::dot(forward, heading) + 1.5 << ", "
+             << eye_2d.y + 14 * forward.y - 1.5 << " left front tc rgb '#a33b8f'\n"
+             << "set label 4 \"u (the camera's up)\" at " << eye_2d.x + 14.5 * glm::dot(up, heading) + 1 << ", "
+             << eye_2d.y + 14.5 * up.y << " left front boxed tc rgb '#1f5fa8'\n"
+             << "set label 5 \"world up (0, 1, 0)\" at " << eye_2d.x - 1.5 << ", " << eye_2d.y + 13 << " right front boxed tc rgb '#777777'\n"
+             << "set label 6 \"field of view " << fov << "° (vertical)\" at " << eye_2d.x + 30 << ", " << eye_2d.y - 14
+             << " left front boxed tc rgb '#d9822b'\n"
+             << "set label 7 \"near plane: " << n << " m from the eye\\nfar plane: " << far
+             << " m along f, beyond the figure\" at " << s_max - 3 << ", 45 right front boxed font \",10\"\n"
+             << "set label 8 \"the sea: step02's default waves\" at 100, -3.8 center front tc rgb '#0b2e59' font \",10\"\n"
+             << R"gp(plot 'camera_frustum.dat' index 1 using 1:2 with lines lc rgb '#d9822b' lw 2, \
+     '' index 0 using 1:2 with filledcurves y=-6 fc rgb '#6fa8dc' fs solid 0.5 noborder, \
+     '' index 0 using 1:2 with lines ls 1, \
+     '' index 2 every ::0::0 using 1:2:3:4 with vectors head filled lw 2.5 lc rgb '#a33b8f', \
+     '' index 2 every ::1::1 using 1:2:3:4 with vectors head filled lw 2.5 lc rgb '#1f5fa8', \
+     '' index 2 every ::2::2 using 1:2:3:4 with vectors head filled lw 1.5 dt 2 lc rgb '#777777', \
+     '' index 3 using 1:2 with points pt 7 ps 1.4 lc rgb '#222222'
+)gp"
+             << "unset object 1\nunset object 2\nunset label\nset size noratio\nset autoscale\nset logscale x\nset format x \"10^{%L}\"\n"
+             << "set xrange [" << n << ":" << far << "]\nset yrange [0:1.05]\n"
+             << "set title \"the depth the projection stores, (z/w + 1)/2, against the distance in front of the eye\"\n"
+             << "set xlabel \"distance along f (m), near plane to far plane\"\nset ylabel \"depth\"\n"
+             << "set arrow 1 from " << half << ", graph 0 to " << half << ", graph 1 nohead ls 5\n"
+             << "set label 1 \"half the depth values lie within " << std::round(half * 100) / 100
+             << " m of the eye: 2 n f / (f + n)\" at " << half * 1.3 << ", 0.35 left boxed\n"
+             << "set arrow 2 from " << distance << ", graph 0 to " << distance << ", graph 1 nohead ls 5 lc rgb '#a33b8f'\n"
+             << "set label 2 \"the target, " << distance << " m: depth " << std::round(target_depth * 1e4) / 1e4
+             << "\" at " << distance / 1.3 << ", 0.6 right boxed tc rgb '#a33b8f'\n"
+             << "plot 'camera_frustum.dat' index 4 using 1:2 with lines ls 1\n"
+             << "unset multiplot\n";
+}
+
+// step04's fBm as a spectrum: the amplitude of each wave of its default cascades against its
+// wavenumber, on log-log axes, where a_i = a_0 gain^i and w_i = w_0 lacunarity^i lie on a line of
+// slope log(gain) / log(lacunarity). Beside them, step05's JONSWAP sea of the spectra figure
+// (14 m/s over 100 km) as the amplitudes of waves spaced like the fBm's: a = sqrt(2 F(k) k ln 1.18),
+// whose tail falls as k^-1 (F ~ k^-3).
+void fbm_spectrum(const fs::path& dir) {
+    Figure f(dir, "fbm_spectrum");
+    step04::CascadeSettings first;
+    first.wave_count = 20;  // step04's defaults (fbm_params.hpp): 20 waves of 40 m, a0 = 1.2 m, two cascades at 0.37
+    first.base_amplitude = 1.2;
+    const auto cascades = step04::make_cascades(first, 2, 0.37);
+    for (std::size_t c = 0; c < cascades.size(); ++c) {
+        f.data << "# cascade " << c << ": w (rad/m)  a (m)\n";
+        for (const auto& wave : cascades[c].waves) f.data << wave.wavenumber << ' ' << wave.amplitude << '\n';
+        f.data << "\n\n";
+    }
+    const step05::SpectrumParams p = figure_sea();
+    f.data << "# k (rad/m)  the amplitude of one wave per band of ratio 1.18: sqrt(2 F(k) k ln 1.18)\n";
+    for (int i = 0; i <= 400; ++i) {
+        const double k = std::pow(10.0, -2 + 3.5 * i / 400.0);
+        f.data << k << ' ' << std::sqrt(2 * step05::omnidirectional_k(p, k) * k * std::log(first.lacunarity)) << '\n';
+    }
+    const double slope = std::log(first.gain) / std::log(first.lacunarity);
+    const double w0 = cascades[0].waves[0].wavenumber, a0 = cascades[0].waves[0].amplitude;
+    // JONSWAP's a k where its tail is a straight line (k = 3 rad/m), for the slope -1 guide.
+    const double tail = 3 * std::sqrt(2 * step05::omnidirectional_k(p, 3) * 3 * std::log(first.lacunarity));
+    f.script << "set terminal pngcairo size 900,600 font \"DejaVu Sans,12\" linewidth 1.5\nset output 'fbm_spectrum.png'\n"
+             << "set title \"step04's fBm as a spectrum: each wave's amplitude against its wavenumber (fbm.hpp)\"\n"
+             << "set xlabel \"wavenumber w = 2π/λ (rad/m; step05 calls it k)\"\nset ylabel \"amplitude (m)\"\n"
+             << "set logscale xy\nset xrange [0.01:30]\nset yrange [0.003:3]\nset format x \"10^{%L}\"\nset format y \"10^{%L}\"\n"
+             << "set key top right font \",10\" spacing 1.2\n"
+             << "plot 'fbm_spectrum.dat' index 0 using 1:2 with points pt 7 ps 1.3 lc rgb '#1f5fa8' title \"cascade 0: 20 waves from 40 m, a_0 = 1.2 m\", \\\n"
+             << "     '' index 1 using 1:2 with points pt 5 ps 1.1 lc rgb '#d9822b' title \"cascade 1: × 0.37 in wavelength and amplitude\", \\\n"
+             << "     " << a0 << " * (x / " << w0 << ")**(" << slope
+             << ") with lines ls 5 title \"a_0 (w / w_0)^p, p = log 0.82 / log 1.18 = −" << std::round(-slope * 100) / 100 << "\", \\\n"
+             << "     '' index 2 using 1:2 with lines ls 3 title \"step05: JONSWAP, 14 m/s over 100 km, as waves 1.18 apart\", \\\n"
+             << "     " << tail << " / x with lines ls 5 lc rgb '#3a9a5b' title \"slope −1: its tail, F(k) ∝ k^{−3}\"\n";
+}
+
 }  // namespace
 
 // The timed passes of a step's table, in order, each once: what --bench must list (frame_passes.sh).
@@ -528,7 +785,8 @@ int main(int argc, char** argv) {
     fs::create_directories(dir, error);
     if (error) return std::fprintf(stderr, "figure_data: cannot make %s: %s\n", argv[1], error.message().c_str()), 1;
     const std::vector<std::function<void(const fs::path&)>> figures{
-        wave_profiles, domain_warp, spectrum_lattice, jacobian_fold, spectra, cascade_bands, glitter_slopes, fresnel, butterfly, lighting_vectors, step05_frame, step06_frame};
+        wave_profiles, domain_warp, spectrum_lattice, jacobian_fold, spectra, cascade_bands, glitter_slopes, fresnel, butterfly, radix2_by_hand, lighting_vectors, step05_frame, step06_frame,
+        directional_wave, camera_frustum, fbm_spectrum};
     for (const auto& make : figures) make(dir);
     std::printf("figure_data: %zu figures' data and scripts in %s\n", figures.size(), argv[1]);
     return 0;

@@ -1,11 +1,12 @@
 #version 450 core
-// Chapter 4.4: the inverse FFT along one axis of every line of every field of every cascade, in
-// one dispatch: workgroup (line, layer) loads its N values into shared memory, runs all stages
+// Chapter 4.4, the optimised FFT (fft=stockham4, the default; README section 3 derives it from
+// fft_radix2.comp's plain form): the inverse FFT along one axis of every line of every field of
+// every cascade, in one dispatch: workgroup (line, layer) loads its N values into shared memory, runs all stages
 // there, and writes the line back. Two dispatches (x, then z) make the 2D transform. Stockham
 // reorders as it goes, so no bit-reversal pass is needed. The stages are radix 4 (half as many
 // as radix 2, so half the barriers and half the trips through shared memory), with one radix-2
 // stage last when log2 N is odd (N = 128, 512). A stage of radix r with stride p (p = 1, r, r^2 ...):
-//     thread t < N / r, k = t mod p, a_j = x[t + j N / r] w^(j k), w = e^{+2 pi i / (r p)}
+//     thread t < N / r, k = t mod p, a_j = x[t + j N / r] zeta^(j k), zeta = e^{+2 pi i / (r p)}
 //     y[(t - k) r + k + q p] = sum_j a_j e^{+2 pi i j q / r},  q = 0 .. r - 1
 // (radix 2 is the butterfly u0 + u1, u0 - u1; radix 4 needs no multiplication beyond the
 // twiddles, e^{+2 pi i j q / 4} being 1, i, -1, -i). The twiddles come from a table of
@@ -48,7 +49,7 @@ vec2 times_i(vec2 a) { return vec2(-a.y, a.x); }
 // give four outputs of one 4-point DFT, written where the next stage reads them (Stockham).
 void radix4_stage(int t, int p, int from) {
     int k = t & (p - 1);
-    int step = k * (FFT_SIZE / (4 * p));  // w^(j k) = twiddle[j * step]
+    int step = k * (FFT_SIZE / (4 * p));  // zeta^(j k) = twiddle[j * step]
     vec2 a0 = lines[from][t];
     vec2 a1 = complex_multiply(lines[from][t + QUARTER], twiddle[step]);
     vec2 a2 = complex_multiply(lines[from][t + 2 * QUARTER], twiddle[2 * step]);
