@@ -3,11 +3,13 @@
 // the chapter's CPU reference. tools/exercise gathers every chapter's (add_step's EXERCISES).
 #include "tools/exercise.hpp"
 
+#include "step05_fft/gerstner.hpp"
 #include "step05_fft/ocean_maps.hpp"
 #include "step05_fft/spectrum.hpp"
 
 #include <glm/vec3.hpp>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -83,6 +85,39 @@ int main() {
 }
 )";
     return driver.str();
+}
+
+// Exercise 9's check: gerstner_wave's eight numbers against gerstner.hpp, three components at a time.
+// The inputs: rest position within 50 m, a direction all round, k from 0.05 to 0.55 rad/m, A from
+// 0.2 to 2.2 m, Q up to 1.2 / (k A) (past the fold), any phase.
+Verdict check_gerstner(const fs::path& work) {
+    const std::string call = "gerstner_wave(50.0 * a.xy, vec4(cos(3.14159265 * b.x), sin(3.14159265 * b.x), "
+                             "0.3 + 0.25 * b.y, 1.2 + b.z), (0.6 + 0.6 * b.w) / ((0.3 + 0.25 * b.y) * (1.2 + b.z)), "
+                             "3.14159265 * a.z)";
+    const auto sample = [](const glm::dvec4& a, const glm::dvec4& b) {
+        step05::GerstnerWave w;
+        w.direction_x = std::cos(3.14159265 * b.x);
+        w.direction_z = std::sin(3.14159265 * b.x);
+        w.wavenumber = 0.3 + 0.25 * b.y;
+        w.amplitude = 1.2 + b.z;
+        w.steepness = (0.6 + 0.6 * b.w) / (w.wavenumber * w.amplitude);
+        return step05::gerstner_sample(w, 50 * a.x, 50 * a.y, 3.14159265 * a.z);
+    };
+    Verdict verdict = check_vector(work, "gerstner.glsl", call + ".displacement.xyz", [&](const glm::dvec4& a, const glm::dvec4& b) {
+        const auto m = sample(a, b);
+        return glm::dvec3(m.displacement[0], m.displacement[1], m.displacement[2]);
+    }, 1e-4, -1, 1);
+    if (!verdict.pass) return verdict;
+    verdict = check_vector(work, "gerstner.glsl", "vec3(" + call + ".displacement.w, " + call + ".slopes.xy)",
+                           [&](const glm::dvec4& a, const glm::dvec4& b) {
+                               const auto m = sample(a, b);
+                               return glm::dvec3(m.displacement[3], m.slopes[0], m.slopes[1]);
+                           }, 1e-4, -1, 1);
+    if (!verdict.pass) return verdict;
+    return check_vector(work, "gerstner.glsl", call + ".slopes.zw", [&](const glm::dvec4& a, const glm::dvec4& b) {
+        const auto m = sample(a, b);
+        return glm::dvec3(m.slopes[2], m.slopes[3], 0.0);
+    }, 1e-4, -1, 1, {}, 2);
 }
 
 std::vector<Exercise> chapter() {
@@ -236,6 +271,28 @@ std::vector<Exercise> chapter() {
              return check_cpp(work, "mode_amplitude.cpp", variance_driver(), 1,
                               [](int) { return std::vector<double>{1.0}; }, 0.05);
          }},
+        {"step05_fft", 9, "One Gerstner wave", "gerstner.glsl", "MapSample gerstner_wave(vec2 p, vec4 wave, float steepness, float phase) {",
+         "    // TODO (exercise 9): one Gerstner wave's displacement and slopes. For now, a sine that only rises and falls.\n"
+         "    float theta = wave.z * dot(wave.xy, p) - phase;\n"
+         "    MapSample m;\n"
+         "    m.displacement = vec4(0.0, wave.w * cos(theta), 0.0, 0.0);\n"
+         "    m.slopes = vec4(-wave.w * wave.z * wave.xy * sin(theta), 0.0, 0.0);\n"
+         "    return m;\n",
+         "Write gerstner_wave (README section 4; GPU Gems 1, chapter 1). In a real wave the water moves in\n"
+         "circles: each point rises at the crest and moves forward there, sinks in the trough and moves\n"
+         "back. So a Gerstner wave moves the point of rest position p up by A cos(theta) and also sideways,\n"
+         "along the wave's direction d, by Q A times a quarter-turned copy of the same oscillation. Find\n"
+         "the sign that moves points towards the crest (then crests sharpen and troughs widen), and fill the\n"
+         "maps' form: displacement (Q Dx, h, Q Dz, Q dDx/dz), slopes (dh/dx, dh/dz, Q dDx/dx, Q dDz/dz), with\n"
+         "theta = k d.p - phase and wave = (d.x, d.z, k, A). At which Q k A does the crest become a cusp?\n"
+         "The step draws your wave with sea=gerstner; try gerstner_steepness = 0.5, 1, 1.3.",
+         "A point just behind a crest (theta slightly negative) must move forward, along +d. Differentiate each "
+         "of h, Dx, Dz along x and z: every derivative brings a factor k times a component of d.",
+         "h = A cos(theta), D = -Q A d sin(theta); dh/dx = -A k d.x sin(theta), Q dDx/dx = -Q A k d.x^2 cos(theta), "
+         "Q dDz/dz = -Q A k d.z^2 cos(theta), Q dDx/dz = -Q A k d.x d.z cos(theta); the Jacobian is 1 - Q k A cos(theta), "
+         "so the crest folds when Q k A > 1",
+         {"--set", "sea=gerstner", "--set", "wind_direction=120"},
+         [](const fs::path& work) { return check_gerstner(work); }},
     };
 }
 

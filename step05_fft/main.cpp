@@ -7,6 +7,7 @@
 // Three transform backends to compare: the notes' naive DFT, the GPU FFT, and FFTW on the CPU.
 // Controls: as step02; the panel's "spectrum" group, the backend and the map views.
 #include "common/app.hpp"
+#include "common/constants.hpp"
 #include "common/grid.hpp"
 #include "step03_lighting/light_params.hpp"
 #include "step03_lighting/light_uniforms.hpp"
@@ -17,6 +18,7 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -42,6 +44,16 @@ public:
         p.add_choice("fft", &fft_form_, step05::gpu_fft_form_names(),
                      "the GPU FFT's form: plain radix 2 (a dispatch a stage) or radix 4 in Stockham's order "
                      "(every stage in shared memory); the same result");
+        p.add_choice("sea", &sea_, {"spectrum", "gerstner"},
+                     "the FFT's sea, or one Gerstner wave in closed form along the wind (section 4)");
+        p.add_float("gerstner_wavelength", &gerstner_.wavelength, 1, 500, "sea=gerstner: the wave's length, m")
+            .in_group("gerstner");
+        p.add_float("gerstner_amplitude", &gerstner_.amplitude, 0, 20, "sea=gerstner: the wave's amplitude A, m")
+            .in_group("gerstner");
+        p.add_float("gerstner_steepness", &gerstner_.steepness, 0, 1.5,
+                    "sea=gerstner: Q k A, how far points move towards the crest (GPU Gems' Q): 1 is a cusp, "
+                    "above 1 the crest folds over itself")
+            .in_group("gerstner");
         p.add_choice("normals", &normals_, {"slopes", "finite_difference"},
                      "normals from the slope maps (i k h~) or from differences of the height map");
         std::vector<std::string> views = step05::map_view_names();  // view 1.. is map view 0..
@@ -118,7 +130,9 @@ private:
             draw_map_view();
             return;
         }
-        ocean::ShaderProgram* ocean_program = program("ocean", {"ocean.vert", "ocean.frag"}, {"NORMALS " + std::to_string(normals_)});
+        ocean::ShaderProgram* ocean_program = program("ocean", {"ocean.vert", "ocean.frag"},
+                                                      {"NORMALS " + std::to_string(normals_), "SEA " + std::to_string(sea_)});
+        if (sea_ == 1) set_gerstner_wave(*ocean_program);
         step03::upload_light(*ocean_program, light_.light());
         ocean_program->set("u_patch_size", float(ocean_params_.spectrum.patch_size));
         ocean_program->set("u_resolution", ocean_params_.spectrum.resolution);
@@ -127,8 +141,21 @@ private:
         gpu_->bind_maps(*ocean_program);
         // Only the grid's chunks that may be in view (the plane reaches the horizon all round, the
         // view sees a wedge of it), widened by how far a vertex can move.
-        const double margin = step05::largest_displacement(height_variance_, ocean_params_.choppiness);
+        double margin = step05::largest_displacement(height_variance_, ocean_params_.choppiness);
+        if (sea_ == 1) margin = gerstner_.amplitude + gerstner_.steepness / gerstner_wavenumber() + 1;  // A + Q A
         ocean::draw_grid(grid_, *ocean_program, camera(), aspect(), timers(), wireframe_, cull_ ? float(margin) : -1.0f);
+    }
+
+    double gerstner_wavenumber() const { return 2 * ocean::kPi / double(gerstner_.wavelength); }
+
+    // sea=gerstner's one wave, along the wind. The shader takes Q itself: Q = steepness / (k A).
+    void set_gerstner_wave(const ocean::ShaderProgram& p) const {
+        const step05::SpectrumParams& s = ocean_params_.spectrum;
+        const double k = gerstner_wavenumber(), amplitude = gerstner_.amplitude;
+        const double direction = s.wind_direction * ocean::kPi / 180;
+        p.set("u_gerstner", glm::vec4(float(std::cos(direction)), float(std::sin(direction)), float(k), float(amplitude)));
+        p.set("u_gerstner_steepness", float(gerstner_.steepness / std::max(k * amplitude, 1e-9)));
+        p.set("u_gerstner_phase", float(step05::reduced_phase(step05::dispersion(k, s.depth), time())));
     }
 
     void draw_map_view() {
@@ -166,8 +193,11 @@ private:
     ocean::GridMesh grid_;
     bool cull_ = true;
     std::vector<std::string> backend_times_;
-    int backend_ = int(Backend::Auto), fft_form_ = int(step05::GpuFftForm::Stockham4), normals_ = 0, view_ = 0;
+    int backend_ = int(Backend::Auto), fft_form_ = int(step05::GpuFftForm::Stockham4), normals_ = 0, view_ = 0, sea_ = 0;
     float map_range_ = 0;
+    struct {
+        float wavelength = 24, amplitude = 1.2f, steepness = 0.8f;  // k A = 0.31: a steep wind wave
+    } gerstner_;
     double height_variance_ = 0;  // m^2: the spectrum's resolved variance (step06 keeps the same)
     bool wireframe_ = false, warned_dft_ = false;
 };

@@ -91,3 +91,15 @@ echo step06_foam_sky/build_it_yourself_closeup.png
 "$build/tools/image_panel" "$root/step06_foam_sky/reflection_on_off.png" 320x180 2 \
   "the sky's reflection on|$scratch/bloom.png" "off (show_reflection_term=false)|$scratch/no_reflection.png"
 echo step06_foam_sky/reflection_on_off.png
+
+# step05's one Gerstner wave at three steepnesses Q k A (sea=gerstner), crests across the view.
+gerstner() {  # gerstner STEEPNESS
+  "$build/step05_fft/step05_fft" --headless --size 480x270 --frames 2 --time 3 --set sea=gerstner \
+    --set wind_direction=120 --set gerstner_steepness="$1" --screenshot "$scratch/gerstner$1.png" > /dev/null
+}
+gerstner 0
+gerstner 0.8
+gerstner 1.3
+"$build/tools/image_panel" "$root/step05_fft/gerstner.png" 480x270 3 "Q k A = 0: a sine|$scratch/gerstner0.png" \
+  "0.8|$scratch/gerstner0.8.png" "1.3: folded crests|$scratch/gerstner1.3.png"
+echo step05_fft/gerstner.png

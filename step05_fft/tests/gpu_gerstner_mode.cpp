@@ -7,6 +7,7 @@
 // reference (double) and on the GPU's assembled textures (what the renderer samples); the
 // notes' two sign slips each fail it (crests along -k; J largest at the crests).
 #include "common/gl.hpp"
+#include "step05_fft/gerstner.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/full_screen_draw.hpp"
 #include "tests/gpu/gl_test_context.hpp"
@@ -93,6 +94,36 @@ TEST_F(GerstnerMode, CpuProfileIsTheTrochoidAndJIsSmallestAtTheCrest) {
     EXPECT_LT(worst, 1e-12) << "the CPU maps are the closed-form trochoid";
     EXPECT_LT(std::abs(std::remainder(theta_at_smallest, 2 * kPi)), 2 * kPi / 16) << "J is smallest at a crest";
     EXPECT_NEAR(smallest_j, 1 - k * kAmplitude, 0.02);
+}
+
+// sea=gerstner's closed form (gerstner.hpp, what gerstner.glsl is held to) is the FFT's one mode:
+// with k/|k| as its direction, |k| its wavenumber, A its amplitude and Q the choppiness, its eight
+// numbers are the CPU maps' at every texel, at a steepness past the fold (Q k A = 1.3), and its
+// Jacobian is 1 - Q k A cos(theta).
+TEST_F(GerstnerMode, ClosedFormWaveIsTheFftMode) {
+    const double t = 4.1, q = 1.3 / (k * kAmplitude);
+    const OceanMaps maps = simulate_cpu(spectrum, t);
+    GerstnerWave wave;
+    wave.direction_x = kx / k;
+    wave.direction_z = kz / k;
+    wave.wavenumber = k;
+    wave.amplitude = kAmplitude;
+    wave.steepness = q;
+    double worst = 0;
+    for (int j = 0; j < kN; ++j)
+        for (int i = 0; i < kN; ++i) {
+            const std::size_t index = std::size_t(j) * kN + i;
+            const MapSample m = gerstner_sample(wave, x_of(i), x_of(j), reduced_phase(omega, t));
+            const double fft[8] = {q * maps[DisplacementX][index], maps[Height][index], q * maps[DisplacementZ][index],
+                                   q * maps[DDxDz][index],         maps[SlopeX][index], maps[SlopeZ][index],
+                                   q * maps[DDxDx][index],         q * maps[DDzDz][index]};
+            const double closed[8] = {m.displacement[0], m.displacement[1], m.displacement[2], m.displacement[3],
+                                      m.slopes[0],       m.slopes[1],       m.slopes[2],       m.slopes[3]};
+            for (int f = 0; f < 8; ++f) worst = std::max(worst, std::abs(fft[f] - closed[f]));
+            const double jacobian = (1 + closed[6]) * (1 + closed[7]) - closed[3] * closed[3];
+            worst = std::max(worst, std::abs(jacobian - (1 - 1.3 * std::cos(theta(i, j, t)))));
+        }
+    EXPECT_LT(worst, 1e-9) << "one Gerstner wave in closed form is one mode of the FFT sea";
 }
 
 TEST_F(GerstnerMode, GpuTexturesHoldTheTrochoid) {
