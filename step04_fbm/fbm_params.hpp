@@ -19,7 +19,8 @@ public:
     ocean::Generation waves_changed;
 
     // Every parameter but the shape and the warp changes the waves themselves: those bump
-    // waves_changed and the step rebuilds its cascades (the shape and the warp are uniforms).
+    // waves_changed and the step rebuilds its cascades (the shape picks a compile-time variant of
+    // the shaders, `#define SHAPE`; the warp is a uniform).
     void declare(ocean::ParamRegistry& p) {
         const auto fbm_group = p.group("fbm");
         p.add_choice("shape", &shape, {"sine", "exp_sine"},
@@ -35,7 +36,8 @@ public:
                         "a factor on every wave's phase rate: 1 = deep water, phi = sqrt(g w) (step01's speed is m/s)");
             p.add_int("seed", &seed, 0, 1000000, "seed of the wave directions");
         }
-        p.add_float("warp", &warp, 0, 10, "domain warping strength s: each wave pushes the next ones' input by s a grad f");
+        p.add_float("warp", &warp, 0, 10,
+                    "domain warping strength (beta): each wave pushes the next ones' input by warp * a * grad f");
         const auto cascades_group = p.group("cascades", &waves_changed);
         p.add_int("cascade_count", &cascade_count, 1, kMaxCascades, "independent sums layered");
         p.add_float("cascade_ratio", &cascade_ratio, 0.05f, 0.95f,

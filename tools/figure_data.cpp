@@ -712,7 +712,7 @@ void camera_frustum(const fs::path& dir) {
              << "set xlabel \"distance along f (m), near plane to far plane\"\nset ylabel \"depth\"\n"
              << "set arrow 1 from " << half << ", graph 0 to " << half << ", graph 1 nohead ls 5\n"
              << "set label 1 \"half the depth values lie within " << std::round(half * 100) / 100
-             << " m of the eye: 2 n f / (f + n)\" at " << half * 1.3 << ", 0.35 left boxed\n"
+             << " m of the eye: 2 near far / (near + far)\" at " << half * 1.3 << ", 0.35 left boxed\n"
              << "set arrow 2 from " << distance << ", graph 0 to " << distance << ", graph 1 nohead ls 5 lc rgb '#a33b8f'\n"
              << "set label 2 \"the target, " << distance << " m: depth " << std::round(target_depth * 1e4) / 1e4
              << "\" at " << distance / 1.3 << ", 0.6 right boxed tc rgb '#a33b8f'\n"
@@ -749,7 +749,7 @@ void fbm_spectrum(const fs::path& dir) {
     f.script << "set terminal pngcairo size 900,600 font \"DejaVu Sans,12\" linewidth 1.5\nset output 'fbm_spectrum.png'\n"
              << "set title \"step04's fBm as a spectrum: each wave's amplitude against its wavenumber (fbm.hpp)\"\n"
              << "set xlabel \"wavenumber w = 2π/λ (rad/m; step05 calls it k)\"\nset ylabel \"amplitude (m)\"\n"
-             << "set logscale xy\nset xrange [0.01:30]\nset yrange [0.003:3]\nset format x \"10^{%L}\"\nset format y \"10^{%L}\"\n"
+             << "set logscale xy\nset xrange [0.01:30]\nset yrange [0.003:10]\nset format x \"10^{%L}\"\nset format y \"10^{%L}\"\n"
              << "set key top right font \",10\" spacing 1.2\n"
              << "plot 'fbm_spectrum.dat' index 0 using 1:2 with points pt 7 ps 1.3 lc rgb '#1f5fa8' title \"cascade 0: 20 waves from 40 m, a_0 = 1.2 m\", \\\n"
              << "     '' index 1 using 1:2 with points pt 5 ps 1.1 lc rgb '#d9822b' title \"cascade 1: × 0.37 in wavelength and amplitude\", \\\n"
