@@ -211,13 +211,13 @@ std::vector<Exercise> chapter() {
          "Write radix2_butterfly, the heart of the plain FFT (README section 3 derives it). A transform of 2h\n"
          "points is two transforms of h points, E of the even samples and O of the odd ones, joined by one\n"
          "complex multiplication per pair. After the bit-reversed read of stage 0 (line_value does it), stage s\n"
-         "(h = 2^s) finds E and O side by side in every block of 2h elements. Butterfly b (0 <= b < N/2) is\n"
-         "one frequency k of one block: work out from s and b which two elements it joins, which power of the\n"
+         "(M = 2^s) finds E and O side by side in every block of 2M elements. Butterfly b (0 <= b < N/2) is\n"
+         "one frequency r of one block: work out from s and b which two elements it joins, which power of the\n"
          "root of unity it needs (the table twiddle[m] holds e^{+2 pi i m / N}), and which two outputs it\n"
          "writes. The step runs the GPU FFT in this form (fft=radix2); the starter's 'transform' copies.",
-         "k = b mod h; the block starts at 2h (b div h) = 2 (b - k). X[k] and X[k + h] share the same E[k] and "
-         "O[k]: they differ only by the sign of the twiddled O. zeta = e^{2 pi i / (2h)} is twiddle entry N / (2h).",
-         "h = 2^s, k = b & (h - 1), even = 2 (b - k) + k, odd = even + h, zeta^k = twiddle[k N / (2h)];\n"
+         "r = b mod M; the block starts at 2M (b div M) = 2 (b - r). X[r] and X[r + M] share the same E[r] and "
+         "O[r]: they differ only by the sign of the twiddled O. zeta = e^{2 pi i / (2M)} is twiddle entry N / (2M).",
+         "M = 2^s, r = b & (M - 1), even = 2 (b - r) + r, odd = even + M, zeta^r = twiddle[r N / (2M)];\n"
          "e = line_value(even), o = zeta^k line_value(odd); target[even] = e + o, target[odd] = e - o",
          {"--set", "backend=gpu_fft", "--set", "fft=radix2"},
          [](const fs::path& work) { return check_fft(work, step05::GpuFftForm::Radix2); }},
@@ -229,10 +229,10 @@ std::vector<Exercise> chapter() {
          "transforms, and half as many stages run, all in shared memory. In Stockham's order a stage of\n"
          "stride p reads its four inputs a quarter of the line apart and writes its outputs where the next\n"
          "stage will read them, so no bit reversal is needed. Derive the index rule from the radix-2 one.",
-         "k = t mod p picks the twiddle, as in exercise 5. Twiddle the inputs before the 4-point DFT, not after; "
+         "r = t mod p picks the twiddle, as in exercise 5. Twiddle the inputs before the 4-point DFT, not after; "
          "output q is a sum of the four inputs turned by q quarter turns per j.",
-         "k = t & (p - 1); a_j = x[t + j N/4] zeta^(j k), zeta^(j k) = twiddle[j k N / (4 p)];\n"
-         "y[(t - k) 4 + k + q p] = sum_j a_j i^(j q), q = 0..3: q = 1 is a0 + i a1 - a2 - i a3, q = 2 is\n"
+         "r = t & (p - 1); a_j = x[t + j N/4] zeta^(j r), zeta^(j r) = twiddle[j r N / (4 p)];\n"
+         "y[(t - r) 4 + r + q p] = sum_j a_j i^(j q), q = 0..3: q = 1 is a0 + i a1 - a2 - i a3, q = 2 is\n"
          "a0 - a1 + a2 - a3, q = 3 is a0 - i a1 - a2 + i a3",
          {"--set", "backend=gpu_fft", "--set", "fft=stockham4"},
          [](const fs::path& work) { return check_fft(work, step05::GpuFftForm::Stockham4); }},

@@ -117,8 +117,10 @@ void OceanSimulation::transform_radix2(GLuint source, GLuint target, int layers)
         p.set("u_axis", axis);
         GLuint from = axis == 0 ? source : target;
         for (int stage = 0; stage < stages; ++stage) {
-            // A stage reads every element another thread writes: it cannot work in place. The
-            // stages alternate between the two scratch buffers; the last one writes the target.
+            // Stage 0 reads bit-reversed, so its butterflies would overwrite values others still
+            // read; later stages could work in place (a butterfly reads and writes the same two
+            // elements), but alternating two scratch buffers keeps every stage alike and the
+            // source untouched. The last stage writes the target.
             const GLuint to = stage == stages - 1 ? target : radix2_scratch_[std::size_t(stage % 2)].id();
             p.set("u_stage", stage);
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, from);

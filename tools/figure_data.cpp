@@ -379,7 +379,7 @@ void butterfly(const fs::path& dir) {
     std::string highlighted;  // one radix-4 butterfly, its sixteen lines (stage p = 4, thread t = 1)
     for (int p = 1; p < n; p *= 4, ++stage)
         for (int t = 0; t < quarter; ++t) {
-            const int k = t & (p - 1), out = (t - k) * 4 + k;
+            const int r = t & (p - 1), out = (t - r) * 4 + r;
             for (int j = 0; j < 4; ++j)
                 for (int q = 0; q < 4; ++q) {
                     const std::string line = std::to_string(stage) + ' ' + std::to_string(t + j * quarter) + ' ' +
@@ -388,15 +388,15 @@ void butterfly(const fs::path& dir) {
                     if (p == 4 && t == 1) highlighted += line;
                 }
         }
-    f.data << "\n\n# the butterfly of thread t = 1 at p = 4: k = 1, inputs 1, 5, 9, 13, outputs 1, 5, 9, 13\n"
+    f.data << "\n\n# the butterfly of thread t = 1 at p = 4: r = 1, inputs 1, 5, 9, 13, outputs 1, 5, 9, 13\n"
            << highlighted;
     f.script << "set terminal pngcairo size 900,640 font \"DejaVu Sans,12\"\nset output 'butterfly.png'\n"
              << "set title \"A 16-point inverse FFT as fft.comp runs it: two radix-4 Stockham stages\"\n"
              << "set xlabel \"stage\"\nset ylabel \"index in the line\"\nset xrange [-0.3:3.6]\nset yrange [-0.5:15.5]\n"
-             << "set xtics (\"input x\" 0, \"after stage 1\\n(stride p = 1)\" 1, \"after stage 2\\n(p = 4): output\" 2)\n"
+             << "set xtics (\"input x\" 0, \"after stage 0\\n(stride p = 1)\" 1, \"after stage 1\\n(p = 4): output\" 2)\n"
              << "set ytics 1\nunset key\nset style textbox opaque noborder\n"
-             << "set label \"thread t, k = t mod p:\\n  a_j = x[t + 4j] w^{jk},  w = e^{2πi/4p}\\n"
-                "  y[4(t − k) + k + qp] = Σ_j a_j i^{jq}\\n\\none butterfly (stage 2, t = 1):\\n"
+             << "set label \"thread t, r = t mod p:\\n  a_j = x[t + 4j] ζ_{4p}^{jr},  ζ_{4p} = e^{2πi/4p}\\n"
+                "  y[4(t − r) + r + qp] = Σ_j a_j i^{jq}\\n\\none butterfly (stage 1, t = 1):\\n"
                 "  four inputs 1, 5, 9, 13\\n  four outputs 1, 5, 9, 13\\n  twiddles e^{2πij/16}\" at 2.15, 12.5 front boxed tc rgb '#d9822b'\n"
              << "plot 'butterfly.dat' index 0 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#9db8d9' lw 1.2, \\\n"
              << "     '' index 1 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#d9822b' lw 3, \\\n"

@@ -5,9 +5,9 @@
 // there, and writes the line back. Two dispatches (x, then z) make the 2D transform. Stockham
 // reorders as it goes, so no bit-reversal pass is needed. The stages are radix 4 (half as many
 // as radix 2, so half the barriers and half the trips through shared memory), with one radix-2
-// stage last when log2 N is odd (N = 128, 512). A stage of radix r with stride p (p = 1, r, r^2 ...):
-//     thread t < N / r, k = t mod p, a_j = x[t + j N / r] zeta^(j k), zeta = e^{+2 pi i / (r p)}
-//     y[(t - k) r + k + q p] = sum_j a_j e^{+2 pi i j q / r},  q = 0 .. r - 1
+// stage last when log2 N is odd (N = 128, 512). A stage of radix R with stride p (p = 1, R, R^2 ...):
+//     thread t < N / R, r = t mod p, a_j = x[t + j N / R] zeta^(j r), zeta = e^{+2 pi i / (R p)}
+//     y[(t - r) R + r + q p] = sum_j a_j e^{+2 pi i j q / R},  q = 0 .. R - 1
 // (radix 2 is the butterfly u0 + u1, u0 - u1; radix 4 needs no multiplication beyond the
 // twiddles, e^{+2 pi i j q / 4} being 1, i, -1, -i). The twiddles come from a table of
 // e^{+2 pi i m / N} computed once in double on the CPU (OceanSimulation::twiddles_), not from sin and
@@ -48,13 +48,13 @@ vec2 times_i(vec2 a) { return vec2(-a.y, a.x); }
 // One radix-4 stage of stride p, thread t's share: four inputs a quarter of the line apart, twiddled,
 // give four outputs of one 4-point DFT, written where the next stage reads them (Stockham).
 void radix4_stage(int t, int p, int from) {
-    int k = t & (p - 1);
-    int step = k * (FFT_SIZE / (4 * p));  // zeta^(j k) = twiddle[j * step]
+    int r = t & (p - 1);
+    int step = r * (FFT_SIZE / (4 * p));  // zeta^(j r) = twiddle[j * step]
     vec2 a0 = lines[from][t];
     vec2 a1 = complex_multiply(lines[from][t + QUARTER], twiddle[step]);
     vec2 a2 = complex_multiply(lines[from][t + 2 * QUARTER], twiddle[2 * step]);
     vec2 a3 = complex_multiply(lines[from][t + 3 * QUARTER], twiddle[3 * step]);
-    int out_index = (t - k) * 4 + k;
+    int out_index = (t - r) * 4 + r;
     lines[1 - from][out_index] = a0 + a1 + a2 + a3;
     lines[1 - from][out_index + p] = a0 + times_i(a1) - a2 - times_i(a3);
     lines[1 - from][out_index + 2 * p] = a0 - a1 + a2 - a3;
@@ -76,10 +76,10 @@ void main() {
     }
     if (p < FFT_SIZE) {  // one radix-2 stage (p = N / 2): each thread does two butterflies
         for (int half_t = t; half_t < FFT_SIZE / 2; half_t += QUARTER) {
-            int k = half_t & (p - 1);
+            int r = half_t & (p - 1);
             vec2 u0 = lines[from][half_t];
-            vec2 u1 = complex_multiply(lines[from][half_t + FFT_SIZE / 2], twiddle[k * (FFT_SIZE / (2 * p))]);
-            int out_index = (half_t - k) * 2 + k;
+            vec2 u1 = complex_multiply(lines[from][half_t + FFT_SIZE / 2], twiddle[r * (FFT_SIZE / (2 * p))]);
+            int out_index = (half_t - r) * 2 + r;
             lines[1 - from][out_index] = u0 + u1;
             lines[1 - from][out_index + p] = u0 - u1;
         }

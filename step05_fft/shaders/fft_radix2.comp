@@ -2,11 +2,11 @@
 // Chapter 4.4, the plain FFT (fft=radix2): one radix-2 stage of the inverse FFT along one axis, for
 // every line of every field of every cascade. The host dispatches it once per stage (log2 N stages
 // an axis) and ping-pongs between two buffers; README section 3 derives it.
-// Stage s joins pairs of transforms of h = 2^s points into transforms of 2h points. The first stage
-// reads the line in bit-reversed order, which puts the even samples' transform E beside the odd
-// samples' O at every stage: E at [base, base + h), O at [base + h, base + 2h). Butterfly b,
-// with k = b mod h and base = 2h (b div h), computes
-//     X[base + k] = E[k] + ζ^k O[k],   X[base + k + h] = E[k] − ζ^k O[k],   ζ = e^{+2πi/(2h)}
+// Stage s joins pairs of transforms of M = 2^s points into transforms of 2M points. The first
+// stage reads the line in bit-reversed order, which puts the even samples' transform E beside the
+// odd samples' O at every stage: E at [base, base + M), O at [base + M, base + 2M). Butterfly b,
+// with r = b mod M and base = 2M (b div M), computes
+//     X[base + r] = E[r] + ζ^r O[r],   X[base + r + M] = E[r] − ζ^r O[r],   ζ = e^{+2πi/(2M)}
 // The result is sum_m X[m] e^{+2 pi i m n / N}, unnormalised, like FFTW_BACKWARD and fft.comp.
 #ifndef FFT_SIZE
 #define FFT_SIZE 256  // N
@@ -36,15 +36,15 @@ vec2 line_value(int layer, int line, int e) {
     return source[element(layer, line, e)];
 }
 
-// Butterfly b of stage s: two neighbouring half-transforms E and O (h points each) joined into one.
+// Butterfly b of stage s: two neighbouring half-transforms E and O (M points each) joined into one.
 void radix2_butterfly(int s, int b, int layer, int line) {
-    int h = 1 << s;
-    int k = b & (h - 1);          // the frequency within the half-transforms
-    int even = (b - k) * 2 + k;   // E[k] sits at base + k, base = 2h (b div h) = 2 (b - k)
-    int odd = even + h;           // O[k] at base + h + k
-    vec2 zeta_k = twiddle[k * (FFT_SIZE / (2 * h))];  // ζ^k = e^{2πi k/(2h)}: entry k N/(2h) of the table
+    int half_size = 1 << s;       // M
+    int r = b & (half_size - 1);  // the frequency within the half-transforms
+    int even = (b - r) * 2 + r;   // E[r] sits at base + r, base = 2M (b div M) = 2 (b - r)
+    int odd = even + half_size;   // O[r] at base + M + r
+    vec2 zeta_r = twiddle[r * (FFT_SIZE / (2 * half_size))];  // ζ^r = e^{2πi r/(2M)}: entry r N/(2M) of the table
     vec2 e = line_value(layer, line, even);
-    vec2 o = complex_multiply(zeta_k, line_value(layer, line, odd));
+    vec2 o = complex_multiply(zeta_r, line_value(layer, line, odd));
     target[element(layer, line, even)] = e + o;
     target[element(layer, line, odd)] = e - o;
 }
