@@ -81,6 +81,7 @@ std::array<double, 3> OceanMaps::normal(std::size_t index, double choppiness) co
                                   along_z[2] * along_x[0] - along_z[0] * along_x[2],
                                   along_z[0] * along_x[1] - along_z[1] * along_x[0]};
     const double length = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    if (length < 1e-12) return {0.0, 1.0, 0.0};  // folded edge-on: no normal (ocean_maps.glsl's guess)
     return {c[0] / length, c[1] / length, c[2] / length};
 }
 

@@ -17,20 +17,36 @@ double dispersion_derivative(double k, double depth) {
     return kGravity * (std::tanh(kh) + kh * sech * sech) / (2.0 * omega);
 }
 
+double fully_developed_fetch(double wind_speed) {
+    return kFullyDevelopedFetch * wind_speed * wind_speed / kGravity;
+}
+
+double developing_fetch(double wind_speed, double fetch) {
+    return std::min(fetch, fully_developed_fetch(wind_speed));
+}
+
 double jonswap_alpha(double wind_speed, double fetch) {
-    return 0.076 * std::pow(wind_speed * wind_speed / (fetch * kGravity), 0.22);
+    const double f = developing_fetch(wind_speed, fetch);
+    return 0.076 * std::pow(wind_speed * wind_speed / (f * kGravity), 0.22);
 }
 
 double jonswap_peak_omega(double wind_speed, double fetch) {
-    return 22.0 * std::cbrt(kGravity * kGravity / (wind_speed * fetch));
+    return 22.0 * std::cbrt(kGravity * kGravity / (wind_speed * developing_fetch(wind_speed, fetch)));
 }
 
 double jonswap(double omega, double wind_speed, double fetch, double gamma) {
     if (omega <= 0 || wind_speed <= 0 || fetch <= 0) return 0;
-    return jonswap_with_alpha(omega, jonswap_alpha(wind_speed, fetch), jonswap_peak_omega(wind_speed, fetch), gamma);
+    const JonswapShape shape = jonswap_shape_for(wind_speed, fetch, gamma, JonswapEnergy::Fitted);
+    return jonswap_with_alpha(omega, shape.alpha, jonswap_peak_omega(wind_speed, fetch), shape.gamma);
 }
 
 double pierson_moskowitz_peak_omega(double wind_speed) { return wind_speed > 0 ? 0.855 * kGravity / wind_speed : 0; }
+
+double pierson_moskowitz_variance(double wind_speed) {
+    if (wind_speed <= 0) return 0;
+    return kPiersonMoskowitzAlpha * kGravity * kGravity /
+           (5 * std::pow(pierson_moskowitz_peak_omega(wind_speed), 4));
+}
 
 double pierson_moskowitz(double omega, double wind_speed) {
     if (wind_speed <= 0) return 0;
@@ -61,7 +77,7 @@ double jonswap_variance_per_alpha(double peak_omega, double gamma) {
 double growth_law_variance(double wind_speed, double fetch) {
     if (wind_speed <= 0 || fetch <= 0) return 0;
     const double u2 = wind_speed * wind_speed;
-    return 1.6e-7 * (kGravity * fetch / u2) * u2 * u2 / (kGravity * kGravity);
+    return 1.6e-7 * (kGravity * developing_fetch(wind_speed, fetch) / u2) * u2 * u2 / (kGravity * kGravity);
 }
 
 double cem_significant_height(double wind_speed, double fetch) {
@@ -70,18 +86,63 @@ double cem_significant_height(double wind_speed, double fetch) {
     return 4.13e-2 * std::sqrt(kGravity * fetch / friction2) * friction2 / kGravity;
 }
 
-double jonswap_alpha_for(double wind_speed, double fetch, double gamma, JonswapEnergy energy) {
-    if (wind_speed <= 0 || fetch <= 0) return 0;
-    if (energy == JonswapEnergy::Fitted) return jonswap_alpha(wind_speed, fetch);
-    // The integral takes a few milliseconds and the spectrum asks for it once per mode: keep the
-    // last answer (per thread, so tests and programs running spectra in parallel stay correct).
-    thread_local double last_wind = -1, last_fetch = -1, last_gamma = -1, last_alpha = 0;
-    if (wind_speed != last_wind || fetch != last_fetch || gamma != last_gamma) {
-        last_alpha = growth_law_variance(wind_speed, fetch) /
-                     jonswap_variance_per_alpha(jonswap_peak_omega(wind_speed, fetch), gamma);
-        last_wind = wind_speed, last_fetch = fetch, last_gamma = gamma;
+namespace {
+
+// The variance of JONSWAP's shape per unit alpha at omega_p = 1 rad/s; at any other peak it is
+// this times omega_p^-4 (S in u = omega / omega_p), so one value per gamma serves every wind and
+// fetch. Pierson-Moskowitz's part is g^2 / 5 (substitute u^-4); gamma's bump adds
+// g^2 u^-5 exp(-5/4 u^-4) (gamma^r - 1), which lives within 0.3 < u < 2 (r < e^-50 beyond), where
+// the midpoint rule sums it (4000 steps of 4e-4 against sigma >= 0.07: 1e-6 of the bump). Cheap
+// enough to search gamma with.
+double unit_variance(double gamma) {
+    const int steps = 4000;
+    const double u0 = 0.3, u1 = 2.0, du = (u1 - u0) / steps;
+    double bump = 0;
+    for (int i = 0; i < steps; ++i) {
+        const double u = u0 + (i + 0.5) * du;
+        bump += jonswap_with_alpha(u, 1.0, 1.0, gamma) - jonswap_with_alpha(u, 1.0, 1.0, 1.0);
     }
-    return last_alpha;
+    return kGravity * kGravity / 5 + bump * du;
+}
+
+JonswapShape shape_without_cache(double wind_speed, double fetch, double gamma, JonswapEnergy energy) {
+    const double peak4 = std::pow(jonswap_peak_omega(wind_speed, fetch), 4), per_alpha = unit_variance(gamma);
+    const double alpha = energy == JonswapEnergy::Fitted
+                             ? jonswap_alpha(wind_speed, fetch)
+                             : growth_law_variance(wind_speed, fetch) * peak4 / per_alpha;
+    // alpha * unit_variance(gamma) / omega_p^4 is the variance: it may not pass PM's.
+    const double most = pierson_moskowitz_variance(wind_speed) * peak4;
+    if (alpha * per_alpha <= most) return {alpha, gamma};
+    // Too much energy. The peak's enhancement goes first: it is a young sea's overshoot, which the
+    // fully developed sea (gamma 1) has lost. Bisection on gamma in [1, gamma]: the variance grows
+    // with gamma.
+    if (alpha * unit_variance(1.0) <= most) {
+        double lo = 1.0, hi = gamma;
+        for (int i = 0; i < 24; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (alpha * unit_variance(mid) <= most ? lo : hi) = mid;
+        }
+        return {alpha, lo};
+    }
+    // Then alpha, to PM's variance with gamma 1: at the fully developed fetch, where omega_p is
+    // PM's, that is PM's own alpha, 0.0081 (unit_variance(1) = g^2 / 5).
+    return {most / unit_variance(1.0), 1.0};
+}
+
+}  // namespace
+
+JonswapShape jonswap_shape_for(double wind_speed, double fetch, double gamma, JonswapEnergy energy) {
+    if (wind_speed <= 0 || fetch <= 0) return {0.0, gamma};
+    // A few milliseconds (more where gamma is searched), and the spectrum asks once per mode:
+    // keep the last answer (per thread, so spectra made in parallel stay correct).
+    thread_local double last_wind = -1, last_fetch = -1, last_gamma = -1;
+    thread_local JonswapEnergy last_energy = JonswapEnergy::Fitted;
+    thread_local JonswapShape last;
+    if (wind_speed != last_wind || fetch != last_fetch || gamma != last_gamma || energy != last_energy) {
+        last = shape_without_cache(wind_speed, fetch, gamma, energy);
+        last_wind = wind_speed, last_fetch = fetch, last_gamma = gamma, last_energy = energy;
+    }
+    return last;
 }
 
 double phillips_k(double k, double wind_speed) {
@@ -133,9 +194,10 @@ double omnidirectional_k(const SpectrumParams& p, double k) {
     double density = 0;
     if (p.model == SpectrumModel::Jonswap) {
         if (p.wind_speed <= 0 || p.fetch <= 0) return 0;
-        const double alpha = jonswap_alpha_for(p.wind_speed, p.fetch, p.gamma, p.energy);
-        density = jonswap_with_alpha(omega, alpha, jonswap_peak_omega(p.wind_speed, p.fetch), p.gamma) *
-                  dispersion_derivative(k, p.depth);
+        const JonswapShape shape = jonswap_shape_for(p.wind_speed, p.fetch, p.gamma, p.energy);
+        density =
+            jonswap_with_alpha(omega, shape.alpha, jonswap_peak_omega(p.wind_speed, p.fetch), shape.gamma) *
+            dispersion_derivative(k, p.depth);
     } else {
         density = phillips_k(k, p.wind_speed);
     }

@@ -58,12 +58,22 @@ struct SpectrumParams {
 double dispersion(double k, double depth);
 double dispersion_derivative(double k, double depth);  // d omega / dk
 
-// JONSWAP's fetch-limited parameters.
+// The fully developed sea caps the fetch. JONSWAP's peak, written with the dimensionless fetch
+// F~ = g F / U^2, is 22 (g^2 / (U F))^(1/3) = 22 (g / U) F~^(-1/3): it falls as the fetch grows,
+// and reaches Pierson-Moskowitz's 0.855 g / U (below) where F~^(1/3) = 22 / 0.855, at
+//     F~_fd = (22 / 0.855)^3 = 1.7036e4        (174 km at 10 m/s, 841 km at 22 m/s).
+// Past that the wind has given the sea all it can and it grows no more (the cap Horvath 2015
+// puts on JONSWAP's fetch): the fetch the spectrum uses is min(F, F~_fd U^2 / g).
+constexpr double kFullyDevelopedFetch = (22 / 0.855) * (22 / 0.855) * (22 / 0.855);  // g F / U^2
+double fully_developed_fetch(double wind_speed);           // metres: kFullyDevelopedFetch U^2 / g
+double developing_fetch(double wind_speed, double fetch);  // min(fetch, fully_developed_fetch)
+// JONSWAP's fetch-limited parameters, at the developing fetch F = developing_fetch(U, fetch).
 double jonswap_alpha(double wind_speed, double fetch);        // 0.076 (U^2 / (F g))^0.22
 double jonswap_peak_omega(double wind_speed, double fetch);   // 22 (g^2 / (U F))^(1/3)
 // S(omega), m^2 s / rad, with a given alpha (the fit's, or the growth law's). Zero for omega <= 0
 // or a calm sea. With gamma = 1 it is the Pierson-Moskowitz shape, whose integral is
-// alpha g^2 / (5 omega_p^4).
+// alpha g^2 / (5 omega_p^4). jonswap() is the spectrum as fitted, capped as the sea uses it
+// (alpha and gamma from jonswap_shape_for with JonswapEnergy::Fitted).
 double jonswap(double omega, double wind_speed, double fetch, double gamma);
 double jonswap_with_alpha(double omega, double alpha, double peak_omega, double gamma);
 // Pierson-Moskowitz (1964): the fully developed sea, the limit of unlimited fetch and duration,
@@ -73,13 +83,31 @@ double jonswap_with_alpha(double omega, double alpha, double peak_omega, double 
 constexpr double kPiersonMoskowitzAlpha = 0.0081;
 double pierson_moskowitz_peak_omega(double wind_speed);  // 0.855 g / U
 double pierson_moskowitz(double omega, double wind_speed);
+// Its variance in closed form, alpha g^2 / (5 omega_p^4) = 3.03e-3 U^4 / g^2 (m^2): the most any
+// wind sea of that wind holds. Hs = 4 sqrt of it = 0.2202 U^2 / g, the textbooks' 0.21 U19.5^2 / g
+// with the wind at 19.5 m (U19.5 = 1.026 U10 on a log profile: Pierson and Moskowitz's 0.877 g /
+// U19.5 is this 0.855 g / U10).
+double pierson_moskowitz_variance(double wind_speed);
 // The integral of S over omega for alpha = 1 (numerical: gamma's bump has no closed form).
 double jonswap_variance_per_alpha(double peak_omega, double gamma);
-// The alpha the spectrum uses under `energy`.
-double jonswap_alpha_for(double wind_speed, double fetch, double gamma, JonswapEnergy energy);
+// The alpha and gamma the wind sea uses under `energy`, at the developing fetch, holding at most
+// Pierson-Moskowitz's variance. The fetch cap alone does not keep JONSWAP as fitted below it: its
+// alpha and gamma's bump (x 1.52 at gamma 3.3) pass PM's variance already at F~ = 1.07e4 and
+// hold 1.68 times it at F~_fd (alpha = 0.076 F~_fd^-0.22 = 0.0089; README, "Heights against
+// observations"). Where the energy would pass PM's, gamma is lowered towards 1 (the peak's
+// enhancement is a young sea's overshoot, which the fully developed sea has lost), then alpha;
+// at F~_fd the fitted sea is PM's spectrum itself (alpha 0.0081, gamma 1). Lowering alpha alone
+// would drop the short waves' level to 0.0053, below PM's 0.0081, and with it the slopes step06's
+// glitter is held to. Under the growth law the energy stays below PM's (0.90 of it at F~_fd).
+struct JonswapShape {
+    double alpha = 0;
+    double gamma = 1;
+};
+JonswapShape jonswap_shape_for(double wind_speed, double fetch, double gamma, JonswapEnergy energy);
 
 // Observed fetch-limited growth, for comparing the spectrum's heights with the sea's:
-// JONSWAP's growth law (Hasselmann et al. 1973): E g^2 / U^4 = 1.6e-7 g F / U^2, Hs = 4 sqrt(E);
+// JONSWAP's growth law (Hasselmann et al. 1973): E g^2 / U^4 = 1.6e-7 g F / U^2, Hs = 4 sqrt(E),
+// at the developing fetch (a fully developed sea grows no more);
 double growth_law_variance(double wind_speed, double fetch);
 // the Coastal Engineering Manual (II-2, eq. II-2-36, deep water): g Hm0 / u*^2 = 4.13e-2
 // (g F / u*^2)^(1/2) with u*^2 = C_D U^2, C_D = 0.001 (1.1 + 0.035 U). Metres.

@@ -93,18 +93,23 @@ glm::dmat3 FloatingBody::world_inertia(bool inverse) const {
 
 void FloatingBody::step(const Surface& before, const Surface& now, double dt, double sea_interval) {
     if (dt <= 0) return;
-    // The sea under each cell, once a frame: the queries are the costly part (sea_query.hpp);
-    // the substeps move on the surface's tangent plane, which the cells hardly leave in a frame.
-    water_.resize(cells_.size());
-    for (std::size_t i = 0; i < cells_.size(); ++i) {
-        const glm::dvec3 p = to_world(cells_[i].offset);
+    // The sea under each cell (a sphere: under its centre), once a frame: the queries are the
+    // costly part (sea_query.hpp); the substeps move on the surface's tangent plane, which the
+    // body hardly leaves in a frame.
+    const bool sphere = settings_.shape.kind == ShapeKind::Sphere;
+    water_.resize(sphere ? 1 : cells_.size());
+    for (std::size_t i = 0; i < water_.size(); ++i) {
+        const glm::dvec3 p = to_world(sphere ? shape_centre() : cells_[i].offset);
         WaterPatch& w = water_[i];
         w.at = {p.x, p.z};
         const SeaPoint at_now = query(now, w.at), at_before = query(before, w.at);
         w.height_now = at_now.height;
         w.height_before = at_before.height;
         w.gradient = glm::dvec2(-at_now.normal.x, -at_now.normal.z) / std::max(at_now.normal.y, 0.05);
-        w.velocity = water_velocity(before, now, sea_interval > 0 ? sea_interval : dt, at_now.rest);
+        // The water beside the point moves on orbits that shrink with its depth under the surface
+        // above it (0 above the water): a sunk body no longer feels the surface's motion.
+        const double depth = std::max(0.0, at_now.height - p.y);
+        w.velocity = water_velocity(before, now, sea_interval > 0 ? sea_interval : dt, at_now.rest, depth);
     }
     const int substeps = std::max(1, int(std::ceil(dt / kMaxSubstep - 1e-9)));
     const double h = dt / substeps;
@@ -112,11 +117,28 @@ void FloatingBody::step(const Surface& before, const Surface& now, double dt, do
     extra_force_ = extra_torque_ = glm::dvec3(0.0);
 }
 
-void FloatingBody::substep(double h, double share) {
-    const glm::dmat3 r = glm::mat3_cast(orientation_);
-    glm::dvec3 force(0.0, -mass_ * ocean::kGravity, 0.0), torque(0.0);
-    force += extra_force_;
-    torque += extra_torque_;
+Wrench FloatingBody::water_forces(const glm::dmat3& r, double share) {
+    Wrench total;
+    // The drag on a wet volume moving at `moving` against the water's own motion, at arm from the
+    // centre of mass.
+    const auto drag = [&](double volume, glm::dvec3 arm, glm::dvec3 water_velocity) {
+        const glm::dvec3 moving = velocity_ + glm::cross(angular_velocity_, arm);
+        const glm::dvec3 force = -kWaterDensity * volume * settings_.linear_drag * (moving - water_velocity);
+        total.force += force;
+        total.torque += glm::cross(arm, force);
+    };
+    if (settings_.shape.kind == ShapeKind::Sphere) {
+        // The exact cap under the water line at the sphere's centre, through the centre.
+        const glm::dvec3 arm = r * shape_centre(), centre = position_ + arm;
+        const double radius = 0.5 * settings_.shape.size.x;
+        const double water_line = water_[0].height({centre.x, centre.z}, share);
+        const glm::dvec3 lift = sphere_buoyancy(radius, centre.y, water_line);
+        total.force += lift;
+        total.torque += glm::cross(arm, lift);  // zero but for ballast
+        submerged_volume_ = spherical_cap_volume(radius, water_line - (centre.y - radius));
+        if (submerged_volume_ > 0) drag(submerged_volume_, arm, water_[0].velocity);
+        return total;
+    }
     // The water line over each cell's centre, on this substep's tangent planes.
     water_lines_.resize(cells_.size());
     for (std::size_t i = 0; i < cells_.size(); ++i) {
@@ -124,26 +146,32 @@ void FloatingBody::substep(double h, double share) {
         water_lines_[i] = water_[i].height({centre.x, centre.z}, share);
     }
     // Archimedes (hull_forces.cpp), then the drag on each wet cell against the water's own motion.
-    const Wrench lift = buoyancy(cells_, r, position_, water_lines_);
-    force += lift.force;
-    torque += lift.torque;
+    total = buoyancy(cells_, r, position_, water_lines_);
     submerged_volume_ = 0;
     for (std::size_t i = 0; i < cells_.size(); ++i) {
         const glm::dvec3 arm = r * cells_[i].offset;
         const double wet = wet_share(water_lines_[i], position_.y + arm.y, vertical_half_extent(r, cells_[i]));
         if (wet <= 0) continue;
-        const double volume = wet * cells_[i].volume;
-        submerged_volume_ += volume;
-        const glm::dvec3 cell_velocity = velocity_ + glm::cross(angular_velocity_, arm);
-        const glm::dvec3 drag = -kWaterDensity * volume * settings_.linear_drag * (cell_velocity - water_[i].velocity);
-        force += drag;
-        torque += glm::cross(arm, drag);
+        submerged_volume_ += wet * cells_[i].volume;
+        drag(wet * cells_[i].volume, arm, water_[i].velocity);
     }
+    return total;
+}
+
+void FloatingBody::substep(double h, double share) {
+    const glm::dmat3 r = glm::mat3_cast(orientation_);
+    glm::dvec3 force(0.0, -mass_ * ocean::kGravity, 0.0), torque(0.0);
+    force += extra_force_;
+    torque += extra_torque_;
+    const Wrench water = water_forces(r, share);
+    force += water.force;
+    torque += water.torque;
     const glm::dmat3 inverse_inertia = world_inertia(true), inertia = world_inertia();
     const double submerged_share = submerged_volume_ / volume_;
     torque -= settings_.angular_drag * submerged_share * (inertia * angular_velocity_);
-    // Semi-implicit Euler: velocities first, then positions with the new velocities (symplectic:
-    // an undamped oscillator keeps its energy instead of gaining it, as explicit Euler's would).
+    // Semi-implicit Euler: velocities first, then positions with the new velocities. Symplectic:
+    // it conserves a nearby energy exactly, so an undamped oscillator's energy stays within a
+    // band of about h omega / 2 of its start instead of growing, as explicit Euler's would.
     velocity_ += h * force / mass_;
     position_ += h * velocity_;
     const glm::dvec3 gyroscopic = glm::cross(angular_velocity_, inertia * angular_velocity_);
@@ -166,6 +194,14 @@ double FloatingBody::energy_in_still_water() const {
     const glm::dmat3 inertia = world_inertia();
     double energy = 0.5 * mass_ * glm::dot(velocity_, velocity_) +
                     0.5 * glm::dot(angular_velocity_, inertia * angular_velocity_) + mass_ * ocean::kGravity * position_.y;
+    if (settings_.shape.kind == ShapeKind::Sphere) {
+        // The integral of the cap's volume V(s) = pi (r s^2 - s^3 / 3) over the draft s from 0 to d,
+        // pi (r d^3 / 3 - d^4 / 12); once under (d = 2 r), the whole volume for each metre deeper.
+        const double radius = 0.5 * settings_.shape.size.x, y = (position_ + r * shape_centre()).y;
+        const double d = std::clamp(radius - y, 0.0, 2 * radius), below = std::max(0.0, -radius - y);
+        const double integral = ocean::kPi * (radius * d * d * d / 3 - d * d * d * d / 12) + volume_ * below;
+        return energy + kWaterDensity * ocean::kGravity * integral;
+    }
     for (const HullCell& cell : cells_) {
         const double y = position_.y + (r * cell.offset).y, e = vertical_half_extent(r, cell);
         // The integral of wet(y') = clamp((e - y') / 2e, 0, 1) from y to e (the water line at 0).

@@ -1,14 +1,18 @@
 // Chapter 7.3-7.4: a rigid body on the sea. Its hull is cut into small cells; each frame the sea
 // is queried under every cell (sea_query.hpp), and each substep adds up, cell by cell,
 //   buoyancy   rho_w g V_submerged, up, at the submerged part's centre   (Archimedes)
-//   drag       -rho_w V_submerged c (v_cell - v_water)                    (linear, against the water's own motion)
+//   drag       -rho_w V_submerged c (v_cell - v_water)                    (linear, against the water's own
+//   motion)
 // and their torques about the centre of mass, then moves the body by semi-implicit Euler.
 //
 // A cell's submerged share is its vertical extent below the water line (the cell treated as a
-// slab, tilted with the body): exact for an upright box, whose cells are layers; for a sphere
-// the cells are small cubes and the share a staircase, which the tests hold to the spherical cap.
-// There is no added mass (the water a body drags along when it heaves): a box's heave period is
-// 2 pi sqrt(d / g) for draft d, where a real one is a little slower.
+// slab, tilted with the body): exact for an upright box, whose cells are layers. A sphere needs
+// no cells: its submerged volume is the spherical cap under the water line at its centre, exactly,
+// and its buoyancy and drag act through its centre (hull_forces.hpp), as on a real uniform sphere.
+// The water's velocity for the drag shrinks with depth (sea_query.hpp's water_velocity).
+// There is no added mass (the water a body must accelerate with it when it heaves): a box's heave
+// period is 2 pi sqrt(d / g) for draft d. For the tested box that water is of the order of the box's
+// own mass, and a real box heaves about a third more slowly (README, section 3).
 #pragma once
 
 #include "step07_buoyancy/hull_forces.hpp"
@@ -42,7 +46,7 @@ struct BodySettings {
     double density = 500;       // kg/m^3: below the water's it floats
     double linear_drag = 0.5;   // 1/s: the drag's rate per kilogram of water displaced
     double angular_drag = 0.5;  // 1/s, scaled by the submerged share
-    int cells_per_side = 8;
+    int cells_per_side = 8;     // the hull's cells (a sphere's forces use its exact cap instead)
     // The centre of mass moved from the volume's centroid (body frame, metres), as ballast moves
     // it: a light hull of uniform density carries its mass high, and a beam sea rolls it over
     // to a list (the tests show it); an engine and a keel put it low.
@@ -93,6 +97,9 @@ public:
 
 private:
     void substep(double h, double share);
+    // Buoyancy and drag this substep (the sea `share` of the way through the frame), with their
+    // torque about the centre of mass; sets submerged_volume_.
+    Wrench water_forces(const glm::dmat3& rotation, double share);
     // The inertia tensor in world axes, R I R^T, or its inverse, R I^-1 R^T.
     glm::dmat3 world_inertia(bool inverse = false) const;
 

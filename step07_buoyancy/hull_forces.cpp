@@ -30,4 +30,14 @@ Wrench buoyancy(const std::vector<HullCell>& cells, const glm::dmat3& rotation, 
     return total;
 }
 
+double spherical_cap_volume(double radius, double draft) {
+    const double d = std::clamp(draft, 0.0, 2 * radius);
+    return ocean::kPi * d * d * (3 * radius - d) / 3;
+}
+
+glm::dvec3 sphere_buoyancy(double radius, double centre_y, double water_line) {
+    const double volume = spherical_cap_volume(radius, water_line - (centre_y - radius));
+    return {0.0, kWaterDensity * ocean::kGravity * volume, 0.0};
+}
+
 }  // namespace step07

@@ -38,4 +38,15 @@ struct Wrench {
 Wrench buoyancy(const std::vector<HullCell>& cells, const glm::dmat3& rotation, glm::dvec3 centre_of_mass,
                 const std::vector<double>& water_lines);
 
+// A sphere needs no cells: the water it displaces is the spherical cap under the water line,
+// exactly. With the water line `draft` above the sphere's lowest point, the cap holds
+//     V = pi d^2 (3 r - d) / 3,   d = draft clamped to [0, 2 r]
+// (0 dry, 4/3 pi r^3 under; the disc slices pi (2 r z - z^2) integrated from 0 to d).
+double spherical_cap_volume(double radius, double draft);
+// Archimedes on a sphere whose centre is at height centre_y, the water at water_line (the sea's
+// height under its centre: a buoy is small against the waves that lift it): rho_w g V up, through
+// the centre. The pressure pushes along the sphere's normals, which all pass through its centre,
+// so a uniform sphere feels no buoyant torque about it, whatever its orientation.
+glm::dvec3 sphere_buoyancy(double radius, double centre_y, double water_line);
+
 }  // namespace step07

@@ -131,18 +131,24 @@ private:
     // The maps of this frame (FFTW) or the latest read back from the GPU (a frame late).
     std::optional<TimedSea> newest_sea() {
         const std::vector<double> tiles = sea_.tile_sizes();
+        // Each cascade's orbits shrink with depth by its band's wavenumber (sea_maps.hpp).
+        const std::vector<double> wavenumbers = step07::band_wavenumbers(sea_.spectrum());
         if (const step05::CpuSimulation* cpu = sea_.simulation().maps_on_cpu()) {
             readback_.forget();  // auto's trial frames switch backends: no older GPU maps after these
             const auto& level = cpu->levels()[0];
             latency_frames_ = 0;
-            return TimedSea{step07::sea_from_layers(level.displacement, level.slopes, level.size, tiles), time()};
+            return TimedSea{
+                step07::sea_from_layers(level.displacement, level.slopes, level.size, tiles, wavenumbers),
+                time()};
         }
         // Last frame's copy first (exactly a frame late), then this frame's is queued.
         std::optional<step07::ArrivedMaps> arrived = readback_.take();
         readback_.request(sea_.simulation(), time());
         if (!arrived) return std::nullopt;
         latency_frames_ = 1;
-        return TimedSea{step07::sea_from_layers(arrived->displacement, arrived->slopes, arrived->n, tiles), arrived->time};
+        return TimedSea{
+            step07::sea_from_layers(arrived->displacement, arrived->slopes, arrived->n, tiles, wavenumbers),
+            arrived->time};
     }
 
     // The three bodies, in front of the camera (anywhere on the ocean: positions in double).

@@ -1,6 +1,36 @@
 #include "step07_buoyancy/sea_maps.hpp"
 
+#include <algorithm>
+
+#include "step06_foam_sky/cascades.hpp"
+
 namespace step07 {
+
+double wavenumber_of(double omega, double depth) {
+    if (omega <= 0) return 0;
+    // dispersion(k) grows with k and is at most sqrt(g k): k >= omega^2 / g. Bracket, then bisect.
+    double lo = 0, hi = omega * omega / step05::kGravity;
+    while (step05::dispersion(hi, depth) < omega) hi *= 2;
+    for (int i = 0; i < 100; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (step05::dispersion(mid, depth) < omega ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+std::vector<double> band_wavenumbers(const step05::SpectrumParams& shared) {
+    // The longest peak of the sea: the wind sea's, or the swell's if there is one.
+    double peak = shared.wind_speed > 0 ? wavenumber_of(step05::peak_omega_of(shared), shared.depth) : 0;
+    if (shared.swell_height > 0) {
+        const double swell = wavenumber_of(2 * step05::kPi / shared.swell_period, shared.depth);
+        peak = peak > 0 ? std::min(peak, swell) : swell;
+    }
+    std::vector<double> out;
+    // Clamped into each band (low first: a band the cut-offs emptied has low > high).
+    for (const auto& band : step06::cascade_spectra(shared))
+        out.push_back(std::max(band.low_cutoff, std::min(peak, band.high_cutoff)));
+    return out;
+}
 
 CascadeMaps cascade_maps(const step05::OceanMaps& maps, double choppiness) {
     using step05::Field;
@@ -24,14 +54,17 @@ CascadeMaps cascade_maps(const step05::OceanMaps& maps, double choppiness) {
     return out;
 }
 
-MapSea reference_sea(const std::vector<step05::InitialSpectrum>& cascades, double time, double choppiness) {
+MapSea reference_sea(const std::vector<step05::InitialSpectrum>& cascades, double time, double choppiness,
+                     const std::vector<double>& wavenumbers) {
     std::vector<CascadeMaps> maps;
     for (const auto& spectrum : cascades) maps.push_back(cascade_maps(step05::simulate_cpu(spectrum, time), choppiness));
+    for (std::size_t c = 0; c < maps.size() && c < wavenumbers.size(); ++c)
+        maps[c].wavenumber = wavenumbers[c];
     return MapSea(std::move(maps));
 }
 
 MapSea sea_from_layers(const std::vector<float>& displacement, const std::vector<float>& slopes, int n,
-                       const std::vector<double>& tiles) {
+                       const std::vector<double>& tiles, const std::vector<double>& wavenumbers) {
     std::vector<CascadeMaps> maps;
     const std::size_t layer = std::size_t(n) * std::size_t(n) * 4;
     for (std::size_t c = 0; c < tiles.size(); ++c) {
@@ -40,6 +73,7 @@ MapSea sea_from_layers(const std::vector<float>& displacement, const std::vector
         m.tile = tiles[c];
         m.displacement.assign(displacement.begin() + long(c * layer), displacement.begin() + long((c + 1) * layer));
         m.slopes.assign(slopes.begin() + long(c * layer), slopes.begin() + long((c + 1) * layer));
+        if (c < wavenumbers.size()) m.wavenumber = wavenumbers[c];
         maps.push_back(std::move(m));
     }
     return MapSea(std::move(maps));

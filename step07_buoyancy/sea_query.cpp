@@ -63,8 +63,9 @@ std::vector<SeaPoint> query_many(const Surface& sea, const std::vector<glm::dvec
     return out;
 }
 
-glm::dvec3 water_velocity(const Surface& before, const Surface& now, double dt, glm::dvec2 rest) {
-    return (now.at(rest).displacement - before.at(rest).displacement) / dt;
+glm::dvec3 water_velocity(const Surface& before, const Surface& now, double dt, glm::dvec2 rest,
+                          double depth) {
+    return (now.displacement_below(rest, depth) - before.displacement_below(rest, depth)) / dt;
 }
 
 }  // namespace step07

@@ -51,8 +51,10 @@ std::vector<SeaPoint> query_many(const Surface& sea, const std::vector<glm::dvec
 // choppy_normal), P(x) = x + D(x).
 glm::dvec3 surface_normal(const SurfaceAt& s);
 
-// The water's velocity at the surface point resting at `rest`: how far that point moved between
-// two states of the sea `dt` seconds apart. For a Gerstner wave this is the orbital velocity.
-glm::dvec3 water_velocity(const Surface& before, const Surface& now, double dt, glm::dvec2 rest);
+// The water's velocity `depth` metres (>= 0) under the surface point resting at `rest`: how far the
+// water there moved between two states of the sea `dt` seconds apart (Surface::displacement_below).
+// For a Gerstner wave this is the orbital velocity, A omega e^(-k depth).
+glm::dvec3 water_velocity(const Surface& before, const Surface& now, double dt, glm::dvec2 rest,
+                          double depth = 0);
 
 }  // namespace step07

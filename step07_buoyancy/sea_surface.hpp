@@ -24,12 +24,18 @@ class Surface {
 public:
     virtual ~Surface() = default;
     virtual SurfaceAt at(glm::dvec2 rest) const = 0;
+    // The displacement of the water resting `depth` metres (>= 0) under the surface point that
+    // rests at `rest`. A linear wave of wavenumber k moves the water below it on orbits that
+    // shrink as e^(-k depth) (Airy; exactly so for a Gerstner wave's particles), so each wave's
+    // share of at(rest).displacement is scaled by e^(-k depth) for its own k. Depth 0: the surface's.
+    virtual glm::dvec3 displacement_below(glm::dvec2 rest, double depth) const = 0;
 };
 
 // Still water: nothing moves (the Archimedes and heave tests).
 class FlatSea : public Surface {
 public:
     SurfaceAt at(glm::dvec2) const override { return {}; }
+    glm::dvec3 displacement_below(glm::dvec2, double) const override { return glm::dvec3(0.0); }
 };
 
 // One Gerstner wave (step05's sign: crests travel along `direction`): theta = k.x - omega t + phase,
@@ -48,6 +54,8 @@ class GerstnerSea : public Surface {
 public:
     GerstnerSea(std::vector<GerstnerWave> waves, double time) : waves_(std::move(waves)), time_(time) {}
     SurfaceAt at(glm::dvec2 rest) const override;
+    glm::dvec3 displacement_below(glm::dvec2 rest,
+                                  double depth) const override;  // each wave by its own k: exact
 
 private:
     std::vector<GerstnerWave> waves_;
@@ -61,6 +69,9 @@ struct CascadeMaps {
     int n = 0;
     double tile = 0;
     std::vector<float> displacement, slopes;  // n * n * 4 each, row (z) major
+    // rad/m: the one wavenumber by which this cascade's orbits shrink with depth, e^(-k depth)
+    // (sea_maps.hpp's band_wavenumbers); 0: they do not shrink (the surface's motion at every depth).
+    double wavenumber = 0;
 };
 
 // The sum of the cascades, each read bilinearly and periodically: what the renderer's vertices
@@ -69,6 +80,9 @@ class MapSea : public Surface {
 public:
     explicit MapSea(std::vector<CascadeMaps> cascades) : cascades_(std::move(cascades)) {}
     SurfaceAt at(glm::dvec2 rest) const override;
+    // The maps hold the sum of a band's waves, not each wave: a cascade's displacement is scaled
+    // as a whole, by e^(-wavenumber depth) with its band's representative wavenumber.
+    glm::dvec3 displacement_below(glm::dvec2 rest, double depth) const override;
     const std::vector<CascadeMaps>& cascades() const { return cascades_; }
 
 private:

@@ -16,7 +16,11 @@ vec2 map_uv(vec2 p, float patch_size) {
 vec3 choppy_normal(vec4 displacement, vec4 slopes) {
     vec3 along_x = vec3(1.0 + slopes.z, slopes.x, displacement.w);
     vec3 along_z = vec3(displacement.w, slopes.y, 1.0 + slopes.w);
-    return normalize(cross(along_z, along_x));
+    vec3 n = cross(along_z, along_x);
+    // Where the surface folds edge-on the tangents are parallel and n vanishes: normalize(0) is
+    // NaN, a black pixel. Up is as good a guess as any there.
+    float length2 = dot(n, n);
+    return length2 > 1e-24 ? n * inversesqrt(length2) : vec3(0.0, 1.0, 0.0);
 }
 
 // J = (1 + l dDx/dx)(1 + l dDz/dz) - (l dDx/dz)^2: below 0 the surface folds over itself.

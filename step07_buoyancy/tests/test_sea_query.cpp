@@ -156,4 +156,51 @@ TEST(SeaQuery, MapsAnswerAsTheWaveTheyHold) {
     }
 }
 
+TEST(SeaQuery, OrbitsShrinkWithDepthAsEToTheKz) {
+    // Airy's (and Gerstner's) closed form: the water resting at z = -depth under the mean surface
+    // circles with radius A e^(kz), so its velocity is A omega e^(kz) (k^ cos theta, sin theta)
+    // with theta = k.x - omega t. One mode of 20 m, kA = 0.3, along (0.6, 0.8); at depths 0,
+    // lambda/8, lambda/4 and lambda/2 that is 1, 0.456, 0.208 and 0.043 of the surface's A omega.
+    GerstnerWave w = wave_of_steepness(0.3);
+    w.direction = {0.6, 0.8};
+    const double k = w.wavenumber(), a_omega = w.amplitude * w.omega();
+    const auto expected = [&](glm::dvec2 x, double t, double depth) {
+        const double theta = glm::dot(k * w.direction, x) - w.omega() * t;
+        const double speed = a_omega * std::exp(-k * depth);
+        return glm::dvec3(w.direction.x * std::cos(theta), std::sin(theta), w.direction.y * std::cos(theta)) *
+               speed;
+    };
+    // The same mode on a cascade's maps (a 100 m tile holds it: k = 2 pi (3, 4) / 100), which
+    // shrink with the band's wavenumber, here the mode's own: the bilinear filter's error only.
+    const auto maps_at = [&](double t) {
+        step07::CascadeMaps m = maps_of(GerstnerSea({w}, t), 100, 512);
+        m.wavenumber = k;
+        return step07::MapSea({m});
+    };
+    // Difference quotients over dt, held to the closed form at the middle of dt: (omega dt)^2 / 24
+    // off, and the maps' floats (1e-7 m) over dt.
+    const double dt = 1e-5, dt_maps = 1e-3;
+    double worst = 0, worst_maps = 0;
+    for (double t : {0.0, 1.3}) {
+        const step07::MapSea maps_before = maps_at(t), maps_after = maps_at(t + dt_maps);
+        for (double depth : {0.0, w.wavelength / 8, w.wavelength / 4, w.wavelength / 2})
+            for (const glm::dvec2 x : {glm::dvec2(1.7, 0.0), glm::dvec2(6.1, -3.4)}) {
+                // GerstnerSea, each wave by its own k.
+                const glm::dvec3 v =
+                    step07::water_velocity(GerstnerSea({w}, t), GerstnerSea({w}, t + dt), dt, x, depth);
+                worst = std::max(worst, glm::length(v - expected(x, t + dt / 2, depth)) / a_omega);
+                EXPECT_LT(glm::length(v - expected(x, t + dt / 2, depth)), 1e-6 * a_omega)
+                    << "depth " << depth << ", t " << t;
+                // The maps: within 0.5 % of the surface's speed (64 texels a wavelength).
+                const glm::dvec3 m = step07::water_velocity(maps_before, maps_after, dt_maps, x, depth);
+                worst_maps =
+                    std::max(worst_maps, glm::length(m - expected(x, t + dt_maps / 2, depth)) / a_omega);
+                EXPECT_LT(glm::length(m - expected(x, t + dt_maps / 2, depth)), 5e-3 * a_omega)
+                    << "maps, depth " << depth << ", t " << t;
+            }
+    }
+    std::cout << "velocity at depth against A omega e^(kz): off by " << worst << " (Gerstner), " << worst_maps
+              << " (maps) of A omega\n";
+}
+
 }  // namespace
