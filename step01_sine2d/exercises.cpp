@@ -1,6 +1,7 @@
 // step01_sine2d's exercises (./ocean exercise step01_sine2d N): for each, the file and function
-// it empties, the stub, the task, the hint, and the check that holds the learner's function to
-// the chapter's CPU reference. tools/exercise gathers every chapter's (add_step's EXERCISES).
+// it empties, the stub, the task, the hint, the formula (--hint), the flags the step runs with, and
+// the check that holds the learner's function to the chapter's CPU reference. tools/exercise
+// gathers every chapter's (add_step's EXERCISES).
 #include "tools/exercise.hpp"
 
 #include "tools/exercise_inputs.hpp"
@@ -28,11 +29,15 @@ std::vector<Exercise> chapter() {
     return {
         {"step01_sine2d", 1, "One sine wave", "sine_sum.glsl", "float wave_height(int i, float x) {",
          "    // TODO (exercise 1): the height of wave i at x.\n    return 0.0;\n",
-         "Write wave_height: wave i arrives as u_waves[i] = (w, a, phase, 0), w = 2 pi / wavelength already, and\n"
-         "its height at x is a sin(x w + phase). Without it the plot is a flat line.",
-         "u_waves[i].x is w (radians per metre), .y the amplitude a, .z the phase (-t phi, reduced on the CPU): "
-         "a * sin(x * w + phase). The phase is added, not multiplied.",
-         "", {},
+         "Write wave_height: the height of wave i at x. Wave i arrives as u_waves[i] = (w, a, phase, 0): its\n"
+         "angular wavenumber w = 2 pi / wavelength (radians per metre), its amplitude a (metres) and its phase\n"
+         "-t phi (reduced on the CPU). A sine repeats every 2 pi: build its argument so that it grows by 2 pi\n"
+         "over one wavelength and is shifted by the phase, then scale the sine so that the crest stands a above\n"
+         "rest. Without it the plot is a flat line.",
+         "Look at the argument of the sine: w multiplies x, the phase is added to it (not multiplied), and the "
+         "amplitude scales the sine's value, not its argument.",
+         "wave_height = a sin(x w + phase) = u_waves[i].y * sin(x * u_waves[i].x + u_waves[i].z)",
+         {},
          [](const fs::path& work) {
              return check_values(
                  work, "sine_sum.glsl", "sum_of_sines(a.x)",
@@ -41,11 +46,14 @@ std::vector<Exercise> chapter() {
          }},
         {"step01_sine2d", 2, "The slope of a sine", "sine_sum.glsl", "float wave_slope(int i, float x) {",
          "    // TODO (exercise 2): d/dx of wave i's height at x.\n    return 0.0;\n",
-         "Write wave_slope, the derivative of a sin(x w + phase) with respect to x. The plot uses it to draw\n"
-         "its line equally thick on steep slopes: without it the line thins where the wave is steep.",
-         "The chain rule brings w out of the sine, and the amplitude stays: a w cos(x w + phase). The notes' 2.2 "
-         "writes cos(...) alone, without w a: that is the slope of a wave of one radian per metre and amplitude 1.",
-         "", {},
+         "Write wave_slope: d/dx of wave i's height, a sin(x w + phase) (exercise 1), the steepness of the\n"
+         "wave at x. Differentiate it with the chain rule: what does the derivative of the inside, x w + phase,\n"
+         "bring out, and what happens to the amplitude? The plot uses the slope to draw its line equally thick\n"
+         "on steep slopes: without it the line thins where the wave is steep.",
+         "The chain rule brings out the derivative of x w + phase, and the amplitude stays. The notes' 2.2 writes "
+         "cos(...) alone: the slope of a wave of one radian per metre and amplitude 1.",
+         "wave_slope = a w cos(x w + phase) = u_waves[i].y * u_waves[i].x * cos(x * u_waves[i].x + u_waves[i].z)",
+         {},
          [](const fs::path& work) {
              return check_values(
                  work, "sine_sum.glsl", "sum_of_sines_slope(a.x)",

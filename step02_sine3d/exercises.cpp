@@ -1,6 +1,7 @@
 // step02_sine3d's exercises (./ocean exercise step02_sine3d N): for each, the file and function
-// it empties, the stub, the task, the hint, and the check that holds the learner's function to
-// the chapter's CPU reference. tools/exercise gathers every chapter's (add_step's EXERCISES).
+// it empties, the stub, the task, the hint, the formula (--hint), the flags the step runs with, and
+// the check that holds the learner's function to the chapter's CPU reference. tools/exercise
+// gathers every chapter's (add_step's EXERCISES).
 #include "tools/exercise.hpp"
 
 #include "tools/exercise_inputs.hpp"
@@ -18,11 +19,15 @@ std::vector<Exercise> chapter() {
     return {
         {"step02_sine3d", 1, "Waves with a direction", "waves.glsl", "float wave_height(vec2 xz) {",
          "    // TODO (exercise 1): the sum of the directional waves at xz.\n    return 0.0;\n",
-         "Write wave_height: the sum over the u_wave_count waves of a sin(dot(d, xz) w + phase), with\n"
-         "u_waves[i] = (d.x, d.z, w, a) and the phase in u_wave_phases[i]. Without it the sea is flat.",
-         "dot(d, xz) is how far along the wave's direction the point lies: crests are lines across d. "
-         "u_waves[i].xy is d, .z is w, .w is a; the phase is its own uniform array, u_wave_phases[i].",
-         "", {},
+         "Write wave_height: the sum of the u_wave_count waves at xz. A directional wave travels along its\n"
+         "unit direction d, and its crests are straight lines across d: its height depends on xz only through\n"
+         "how far along d the point lies. Turn step01's wave a sin(x w + phase) into one along d, and sum them.\n"
+         "u_waves[i] = (d.x, d.z, w, a); the phase is its own array, u_wave_phases[i]. Without it the sea is flat.",
+         "How far along d the point xz lies is a projection: one product of two vectors. The phase is "
+         "u_wave_phases[i], not a component of u_waves[i].",
+         "wave_height(xz) = sum over i of a sin(dot(d, xz) w + phase) = "
+         "sum of u_waves[i].w * sin(dot(u_waves[i].xy, xz) * u_waves[i].z + u_wave_phases[i])",
+         {},
          [](const fs::path& work) {
              return check_values(
                  work, "waves.glsl", "wave_height(a.xy)",
@@ -33,12 +38,15 @@ std::vector<Exercise> chapter() {
         {"step02_sine3d", 2, "A facet's normal", "facet.glsl", "vec3 facet_normal(vec3 along_x, vec3 along_y) {",
          "    // TODO (exercise 2): the unit normal of the facet spanned by the two edges, facing up.\n"
          "    return vec3(0.0, 1.0, 0.0);\n",
-         "Write facet_normal: the cross product of the two edges is perpendicular to both; normalise it, and\n"
-         "turn it up (y >= 0) whichever way round the edges come. The starter's normal is straight up: every\n"
-         "facet is shaded alike and the waves' shape is hard to read (step02 draws with facet_shading on).",
-         "normalize(cross(along_x, along_y)), then negate it when its y is negative: the order of the edges "
-         "(and the screen's orientation) decides which side the cross product points to.",
-         "", {},
+         "Write facet_normal: the unit normal of the flat facet whose edges are along_x and along_y (the\n"
+         "world position's screen-space derivatives, dFdx and dFdy). A normal is perpendicular to both edges:\n"
+         "which product of two vectors gives such a vector? Make it unit length, and make it face up (y >= 0)\n"
+         "whichever way round the edges come. The starter's normal is straight up: every facet is shaded alike\n"
+         "and the waves' shape is hard to read (step02 draws with facet_shading on).",
+         "The order of the two edges (and the screen's orientation) decides which side a cross product points "
+         "to: turn the normal over when its y is negative.",
+         "n = normalize(cross(along_x, along_y)); return n.y < 0.0 ? -n : n",
+         {},
          [](const fs::path& work) {
              return check_vector(
                  work, "facet.glsl", "facet_normal(a.xyz, b.xyz)",

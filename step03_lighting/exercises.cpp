@@ -1,6 +1,7 @@
 // step03_lighting's exercises (./ocean exercise step03_lighting N): for each, the file and function
-// it empties, the stub, the task, the hint, and the check that holds the learner's function to
-// the chapter's CPU reference. tools/exercise gathers every chapter's (add_step's EXERCISES).
+// it empties, the stub, the task, the hint, the formula (--hint), the flags the step runs with, and
+// the check that holds the learner's function to the chapter's CPU reference. tools/exercise
+// gathers every chapter's (add_step's EXERCISES).
 #include "tools/exercise.hpp"
 
 #include "tools/exercise_inputs.hpp"
@@ -49,12 +50,18 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 1): ambient, Lambert diffuse and Blinn-Phong specular.\n"
          "    LightTerms t;\n    t.ambient = u_ambient_color;\n    t.diffuse = vec3(0.0);\n    t.specular = vec3(0.0);\n"
          "    return t;\n",
-         "Write light_terms: diffuse = water * sun * max(N.L, 0) (Lambert); specular = sun * max(N.H, 0)^shininess "
-         "with the halfway vector H = normalize(V + L), and no specular when the sun is behind the surface "
-         "(N.L <= 0). Without them the sea is flat ambient colour.",
-         "H is normalize(to_eye + to_sun), the direction halfway between eye and sun, not the reflection of either; "
-         "the specular needs N.L > 0 (a sun below the surface makes no glint) even where N.H is large.",
-         "", {},
+         "Write light_terms' diffuse and specular (the ambient is given). Diffuse, Lambert's law: a surface\n"
+         "receives sunlight in proportion to how squarely it faces the sun (u_to_sun, L), and none when it faces\n"
+         "away; the water's colour tints what the sun's colour brings. Specular, Blinn-Phong: a glint where the\n"
+         "normal lies close to the direction halfway between the eye (to_eye) and the sun, narrowed by the\n"
+         "exponent u_shininess; a sun behind the surface makes no glint. Without them the sea is a flat,\n"
+         "fogged grey-blue shape, ambient colour alone.",
+         "The halfway direction is the normalised sum of the two unit vectors, not the reflection of either; "
+         "the specular must be 0 wherever N.L <= 0, even where N.H is large.",
+         "n_dot_l = dot(normal, u_to_sun); H = normalize(to_eye + u_to_sun); "
+         "diffuse = u_water_color * u_sun_color * max(n_dot_l, 0); "
+         "specular = u_sun_color * (n_dot_l > 0 ? pow(max(dot(normal, H), 0), u_shininess) : 0)",
+         {},
          [](const fs::path& work) {
              const Verdict diffuse = check_step03_term(work, "diffuse.y", [](const step03::LightTerms& t) { return t.diffuse.g; });
              if (!diffuse.pass) return diffuse;
@@ -63,11 +70,16 @@ std::vector<Exercise> chapter() {
         {"step03_lighting", 2, "The slope of the waves", "wave_gradient.glsl", "vec3 wave_height_gradient(vec2 xz) {",
          "    // TODO (exercise 2): (h, dh/dx, dh/dz). For now the height alone: a sea lit as if flat.\n"
          "    return vec3(wave_height(xz), 0.0, 0.0);\n",
-         "Write wave_height_gradient: in one loop over the waves, the height a sin(angle) and its two partial\n"
-         "derivatives, with angle = dot(d, xz) w + phase. The normal (and so all the light) comes from them.",
-         "The derivative of a sin(dot(d, xz) w + phase) along x is a w cos(angle) d.x (the chain rule brings out w "
-         "and the direction); the notes' 2.2 forgets the w a. u_waves[i] = (d.x, d.z, w, a).",
-         "", {},
+         "Write wave_height_gradient: (h, dh/dx, dh/dz) in one loop over the waves: the height as step02\n"
+         "sums it, a sin(angle) with angle = dot(d, xz) w + phase, and its two partial derivatives. Differentiate\n"
+         "one wave along x, then along z, with the chain rule: how fast does angle change when x moves?\n"
+         "u_waves[i] = (d.x, d.z, w, a), the phase in u_wave_phases[i]. The normal, and so all the light, comes\n"
+         "from the derivatives: the starter's are zero, a sea lit as if it were flat.",
+         "d(angle)/dx brings out w and the direction's x component, and the amplitude stays. The notes' 2.2 "
+         "forgets the w a.",
+         "angle = dot(d, xz) w + phase; h += a sin(angle); (dh/dx, dh/dz) += a w cos(angle) (d.x, d.z), i.e. "
+         "result.yz += u_waves[i].z * u_waves[i].w * cos(angle) * u_waves[i].xy",
+         {},
          [](const fs::path& work) {
              return check_vector(
                  work, "wave_gradient.glsl", "wave_height_gradient(a.xy)",

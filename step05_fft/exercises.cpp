@@ -152,7 +152,7 @@ std::vector<Exercise> chapter() {
          "cross product decides up or down: check it on a flat sea.",
          "dP/dx = (1 + l dDx/dx, dh/dx, l dDx/dz), dP/dz = (l dDx/dz, dh/dz, 1 + l dDz/dz), "
          "N = normalize(cross(dP/dz, dP/dx))",
-         {"--set", "choppiness=2.5", "--camera", "low"},
+         {"--set", "choppiness=2.5", "--set", "wind_speed=20"},
          [](const fs::path& work) {
              return check_vector(
                  work, "ocean_maps.glsl", std::string("choppy_normal(") + kStep05Sample + ")",

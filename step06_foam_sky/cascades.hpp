@@ -8,6 +8,7 @@
 #pragma once
 
 #include "common/shader.hpp"
+#include "step06_foam_sky/cascade_bands.hpp"
 #include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
 
@@ -19,7 +20,7 @@
 
 namespace step06 {
 
-constexpr int kCascades = 4;
+// kCascades, kWavesPerTileAtBoundary, Band and cascade_bands (the band split): cascade_bands.hpp.
 // step06's sea, where it differs from step05's (the tests use the same): a near gale (14 m/s,
 // Beaufort 7) over cascade 0's 500 m tile, choppy. Set before OceanParams::declare, so these are the defaults.
 inline void use_default_sea(step05::OceanParams& params) {
@@ -27,14 +28,9 @@ inline void use_default_sea(step05::OceanParams& params) {
     params.spectrum.wind_speed = 14;
     params.choppiness = 1.3f;
 }
-constexpr double kWavesPerTileAtBoundary = 6;
 // Mip levels of a 512 x 512 map (the largest resolution): the length of each cascade's row of
 // u_unresolved_slope_variance (MIP_LEVELS in cascades_visible.glsl).
 constexpr std::size_t kMaxMipLevels = 10;
-
-struct Band {
-    double low, high;  // rad/m, low <= |k| < high
-};
 
 // Tile sides from the largest, divided by 3.7, 3.3 and 3.55: no tile, nor any product of the
 // ratios, is close to a whole multiple of another, so the repeats never line up.
@@ -56,16 +52,6 @@ inline double largest_tile(const step05::SpectrumParams& shared) {
 }
 inline std::array<double, kCascades> cascade_patch_sizes(const step05::SpectrumParams& shared) {
     return cascade_patch_sizes(largest_tile(shared));
-}
-
-inline std::array<Band, kCascades> cascade_bands(const std::array<double, kCascades>& patch_sizes, int resolution) {
-    std::array<Band, kCascades> bands{};
-    for (int c = 0; c < kCascades; ++c) {
-        bands[c].low = c == 0 ? 0.0 : 2 * step05::kPi * kWavesPerTileAtBoundary / patch_sizes[std::size_t(c)];
-        if (c > 0) bands[std::size_t(c - 1)].high = bands[std::size_t(c)].low;
-    }
-    bands[kCascades - 1].high = step05::kPi * resolution / patch_sizes[kCascades - 1];
-    return bands;
 }
 
 // The spectrum parameters of each cascade: the shared ones, with its tile, band and seed.

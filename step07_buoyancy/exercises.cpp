@@ -53,15 +53,21 @@ std::vector<Exercise> chapter() {
          "vec2 newton_step(vec2 x, vec2 p, vec4 displacement, vec4 slopes) {",
          "    // TODO (exercise 1): move x towards the rest position drawn above p.\n"
          "    return x;\n",
-         "Write newton_step: the water resting at x is drawn at x + (l Dx, l Dz) = x + displacement.xz. Find\n"
-         "the x drawn above p: with miss = x + displacement.xz - p and J = [1 + l dDx/dx, l dDx/dz; l dDz/dx,\n"
-         "1 + l dDz/dz] (slopes.z, displacement.w, slopes.w; J is symmetric), return x - J^-1 miss. Where\n"
-         "det J <= 0.05 the surface folds: return the fixed point p - displacement.xz instead. Without it,\n"
-         "with queries=2000 and query_device=gpu, the yellow dots float above the troughs and sink into the\n"
-         "crests: they are the heights at p, not above p.",
-         "The inverse of [a b; b d] is [d -b; -b a] / (a d - b b). Check the sign: the step must reduce the "
-         "miss, so x - J^-1 miss, not plus. displacement.w is l dDx/dz, the off-diagonal term.",
-         "", {},
+         "Write newton_step (section 2): the water resting at x is drawn at x + displacement.xz (x + l D(x)).\n"
+         "The water drawn above the world point p rests at a root of F(x) = x + l D(x) - p. Newton's method\n"
+         "replaces F near x by its tangent, F(x + dx) ~ F(x) + J dx, with J the 2 x 2 matrix of F's\n"
+         "derivatives, and takes the dx that zeroes it. Build J from what the maps hold (slopes.z = l dDx/dx,\n"
+         "slopes.w = l dDz/dz, displacement.w = l dDx/dz = l dDz/dx), solve the 2 x 2 system, and return the\n"
+         "new x. Where det J <= 0.05 the surface folds and the step means nothing: return the fixed point\n"
+         "p - displacement.xz instead. The step runs with 2000 queries on the GPU (queries=2000,\n"
+         "query_device=gpu): with the starter the yellow dots are the heights at p, not above p, and float\n"
+         "above the troughs and sink into the crests.",
+         "The step must shrink the miss x + displacement.xz - p: subtract J^-1 miss, do not add it. J's diagonal "
+         "starts at 1 (the x of x + l D), and displacement.w is the off-diagonal term on both sides.",
+         "miss = x + displacement.xz - p; J = [a b; b d], a = 1 + slopes.z, b = displacement.w, d = 1 + slopes.w; "
+         "det = a d - b^2; if det <= 0.05 return p - displacement.xz; "
+         "else return x - vec2(d miss.x - b miss.y, -b miss.x + a miss.y) / det",
+         {"--set", "queries=2000", "--set", "query_device=gpu"},
          [](const fs::path& work) {
              return check_vector(
                  work, "sea_query.glsl", std::string("vec3(newton_step(a.xy, a.zw, ") + kSurface + "), 0.0)",
@@ -77,17 +83,23 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 2): the water's push on every cell, and its torque about the centre of mass.\n"
          "    (void)cells, (void)rotation, (void)centre_of_mass, (void)water_lines;\n"
          "    return {};\n",
-         "Write buoyancy (C++, in hull_forces.cpp): for each cell, its centre is centre_of_mass + rotation *\n"
-         "offset; the share under water is wet_share(water_lines[i], that centre's y, vertical_half_extent(...));\n"
-         "it is pushed up by kWaterDensity * ocean::kGravity * share * volume, at the middle of its submerged\n"
-         "part (half the wet height above the cell's bottom, on the vertical through its centre). Sum the\n"
-         "forces, and the torques (arm x force, the arm from the centre of mass). Without it nothing floats:\n"
-         "every body sinks. ./ocean check compiles your file with a small program and compares 200 hulls.",
-         "The torque's arm is where the force acts, from the centre of mass: rotation * offset, moved down to "
-         "the middle of the wet part (y - half + share * half, not the cell's centre). The force is vertical, "
-         "so its torque has no y component. Check a dry cell (share 0) gives nothing and a drowned one "
-         "rho_w g V.",
-         "", {},
+         "Write buoyancy (C++, in hull_forces.cpp; section 3): the water's push on a hull made of cells, and\n"
+         "its torque about the centre of mass. Archimedes: a cell is pushed up by the weight of the water it\n"
+         "displaces, the share of it under water (wet_share, from its centre's height, water_lines[i] and\n"
+         "vertical_half_extent) times its volume. The push acts at the middle of the displaced water: find\n"
+         "where each cell's wet part lies (the cell's centre is centre_of_mass + rotation * offset, and the\n"
+         "wet part starts at its bottom), then sum the forces and their torques about the centre of mass.\n"
+         "Without it nothing floats: every body sinks. ./ocean check compiles your file with a small program\n"
+         "and compares 200 hulls.",
+         "The torque's arm runs from the centre of mass to the middle of the wet part, not to the cell's centre: "
+         "on a heeled hull that difference is what rights it. A dry cell gives nothing, a drowned one "
+         "rho_w g V; the force is vertical, so its torque has no y component.",
+         "for each cell i: arm = rotation * offset, half = vertical_half_extent(rotation, cell), "
+         "wet = wet_share(water_lines[i], centre_of_mass.y + arm.y, half); "
+         "force = (0, kWaterDensity * ocean::kGravity * wet * volume, 0), acting at "
+         "at = arm + (0, -half + wet * half, 0) (the wet part's middle); total.force += force; "
+         "total.torque += cross(at, force)",
+         {},
          [](const fs::path& work) {
              return check_cpp(work, "hull_forces.cpp", kBuoyancyDriver, 200, buoyancy_reference, 1e-9);
          }},

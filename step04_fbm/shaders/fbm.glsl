@@ -34,6 +34,16 @@ vec3 wave_shape(float theta) {
 #endif
 }
 
+// The chain rule through the warp, for one wave (fbm.hpp's cascade_height_gradient is the CPU
+// reference): the wave (d, w, a) is read at the warped point q, where shape = (W, W', W'') and its
+// gradient is slope. Adds its gradient at the rest position p to total.yz, carried back by the
+// Jacobian jacobian = dq/dp of the point it reads; then moves the Jacobian past this wave's push,
+// q -= u_warp a slope (the caller's next line).
+void warp_chain_rule(vec2 d, float w, float a, vec3 shape, vec2 slope, inout vec3 total, inout mat2 jacobian) {
+    total.yz += transpose(jacobian) * slope;
+    jacobian = (mat2(1.0) - u_warp * a * a * w * w * shape.z * outerProduct(d, d)) * jacobian;
+}
+
 // (h, dh/dx, dh/dz) at rest position p.
 vec3 fbm_height_gradient(vec2 p) {
     vec3 total = vec3(0.0);
@@ -48,8 +58,7 @@ vec3 fbm_height_gradient(vec2 p) {
             vec3 shape = wave_shape(dot(d, q) * w + wave.phase.x);
             vec2 slope = a * w * shape.y * d;  // gradient of this wave at q
             total.x += a * shape.x;
-            total.yz += transpose(jacobian) * slope;
-            jacobian = (mat2(1.0) - u_warp * a * a * w * w * shape.z * outerProduct(d, d)) * jacobian;
+            warp_chain_rule(d, w, a, shape, slope, total, jacobian);
             q -= u_warp * a * slope;
         }
     }

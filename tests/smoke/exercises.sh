@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # exercises.sh EXERCISE_EXE REPO: every exercise's starter fails its check, and the chapter's own
-# code (the solution: the step's shader, copied over the learner's file) passes it. The checks
+# code (the solution: the step's shader, copied over the learner's file) passes it; every exercise
+# has its formula, the second hint (`exercise hint STEP N`: a non-empty line after the title). The checks
 # also refuse known slips: the notes' Fresnel without F0, their slope without w a, their e^{+i omega t}
 # and -i choppiness, a normal pointing into the water, GGX without 1/pi, and a spectrum centred the
 # wrong way.
@@ -24,6 +25,9 @@ while read -r step number rest; do
   [ -f "$solution" ] || solution="$repo/$step/$file"  # a C++ exercise: a file of the step's folder
   cp "$solution" "$dir/$file"
   "$exe" check "$step" "$number" "$dir" > "$dir.log" 2>&1 || { echo "FAIL: the solution of $step $number fails"; cat "$dir.log"; status=1; }
+  # The second hint: the title, then the formula (a non-empty line).
+  formula=$("$exe" hint "$step" "$number" | sed -n '2p')
+  [ -n "${formula// /}" ] || { echo "FAIL: $step $number has no formula (exercise hint $step $number)"; status=1; }
   echo "$step $number: the starter fails, the solution passes"
 done < <("$exe" list)
 # refuses NAME STEP N FILE STUB_LINE BODY WHAT: exercise N of STEP with its stub line replaced by
@@ -67,5 +71,17 @@ refuses unsigned-frequency step05_fft 3 mode.glsl '    return (6.2831853 / patch
 # The notes' h0 = xi sqrt(Phi dk^2 / 2): forgets that conj(h0(-k)) doubles every mode's energy.
 refuses notes-h0 step05_fft 8 mode_amplitude.cpp '    return {0.0, 0.0};' \
   '    return std::complex<double>(xi_real, xi_imaginary) * std::sqrt(energy / 2);' 'got 1.99'
+# The warp's Jacobian moved past the wave before its gradient is carried back (the Jacobian of the
+# next wave's point, not this one's), and the Jacobian without its transpose.
+refuses warp-jacobian-too-late step04_fbm 3 fbm.glsl '    total.yz += slope;' \
+  '    jacobian = (mat2(1.0) - u_warp * a * a * w * w * shape.z * outerProduct(d, d)) * jacobian;\n    total.yz += transpose(jacobian) * slope;' \
+  'fbm_height_gradient(a.xy).y'
+refuses warp-jacobian-untransposed step04_fbm 3 fbm.glsl '    total.yz += slope;' \
+  '    total.yz += jacobian * slope;\n    jacobian = (mat2(1.0) - u_warp * a * a * w * w * shape.z * outerProduct(d, d)) * jacobian;' \
+  'fbm_height_gradient(a.xy).y'
+# Bands that overlap: each cascade from its own boundary up to all its grid resolves.
+refuses overlapping-bands step06_foam_sky 7 cascade_bands.cpp \
+  '    for (int c = 0; c < kCascades; ++c) bands\[std::size_t(c)\] = {0.0, ocean::kPi \* resolution / patch_sizes\[std::size_t(c)\]};' \
+  '    for (int c = 0; c < kCascades; ++c) bands[std::size_t(c)] = {c == 0 ? 0.0 : 2 * ocean::kPi * kWavesPerTileAtBoundary / patch_sizes[std::size_t(c)], ocean::kPi * resolution / patch_sizes[std::size_t(c)]};'
 [ "$count" -gt 0 ] || { echo "FAIL: no exercises listed"; status=1; }
 exit $status
