@@ -108,7 +108,7 @@ inline step03::HeightGradient cascade_height_gradient(const std::vector<FbmWave>
         const double fx = slope * wave.dx, fz = slope * wave.dz;          // grad_q f
         g.dh_dx += j00 * fx + j10 * fz;                                   // J^T grad_q f
         g.dh_dz += j01 * fx + j11 * fz;
-        // J <- (I - k d d^T) J with k = s a^2 w^2 W''
+        // J <- (I - kappa d d^T) J with kappa = beta a^2 w^2 W''
         const double k = warp * wave.amplitude * wave.amplitude * wave.wavenumber * wave.wavenumber * v.second;
         const double r0 = wave.dx * j00 + wave.dz * j10, r1 = wave.dx * j01 + wave.dz * j11;  // d^T J
         j00 -= k * wave.dx * r0;

@@ -604,7 +604,7 @@ void directional_wave(const fs::path& dir) {
              << "set size ratio -1\nset xrange [-20:20]\nset yrange [20:-20]\nunset key\nunset grid\nset clip two\n"
              << "set palette defined (-1 '#0b2e59', 0 '#6fa8dc', 1 '#ffffff')\nset cblabel \"height (m)\"\nset cbrange [-1:1]\n"
              << "set style textbox opaque noborder\n"
-             << "set label 1 \"d = (cos θ, sin θ), θ = 30°\\ncrests travel along +d\" at " << 8.6 * d.x + 0.6 << ", "
+             << "set label 1 \"d = (cos α, sin α), α = 30°\\ncrests travel along +d\" at " << 8.6 * d.x + 0.6 << ", "
              << 8.6 * d.z + 0.4 << " left front boxed tc rgb '#a33b8f'\n"
              << "set label 2 \"λ = 2π/w = " << std::lround(lambda) << " m\" at "
              << (s0 + 0.5 * lambda) * d.x + (side - 1.2) * -d.z << ", " << (s0 + 0.5 * lambda) * d.z + (side - 1.2) * d.x
@@ -754,7 +754,7 @@ void fbm_spectrum(const fs::path& dir) {
              << "plot 'fbm_spectrum.dat' index 0 using 1:2 with points pt 7 ps 1.3 lc rgb '#1f5fa8' title \"cascade 0: 20 waves from 40 m, a_0 = 1.2 m\", \\\n"
              << "     '' index 1 using 1:2 with points pt 5 ps 1.1 lc rgb '#d9822b' title \"cascade 1: × 0.37 in wavelength and amplitude\", \\\n"
              << "     " << a0 << " * (x / " << w0 << ")**(" << slope
-             << ") with lines ls 5 title \"a_0 (w / w_0)^p, p = log 0.82 / log 1.18 = −" << std::round(-slope * 100) / 100 << "\", \\\n"
+             << ") with lines ls 5 title \"a_0 (w / w_0)^σ, σ = log 0.82 / log 1.18 = −" << std::round(-slope * 100) / 100 << "\", \\\n"
              << "     '' index 2 using 1:2 with lines ls 3 title \"step05: JONSWAP, 14 m/s over 100 km, as waves 1.18 apart\", \\\n"
              << "     " << tail << " / x with lines ls 5 lc rgb '#3a9a5b' title \"slope −1: its tail, F(k) ∝ k^{−3}\"\n";
 }

@@ -23,7 +23,7 @@ run step03_lighting per_vertex.png --set lighting=per_vertex --set x_quads=24 --
 run step03_lighting per_pixel.png --set lighting=per_pixel --set x_quads=24 --set z_quads=24
 run step04_fbm screenshot.png
 run step04_fbm warp_off.png --set warp=0 --camera low
-run step04_fbm warp_on.png --set warp=6 --camera low
+run step04_fbm warp_on.png --set warp=8 --camera low
 run step04_fbm sine.png --set shape=sine --set warp=0 --camera low
 run step05_fft screenshot.png
 run step05_fft height.png --size 480x300 --set view=height

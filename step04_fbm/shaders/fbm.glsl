@@ -19,7 +19,7 @@ layout(std140, binding = 0) uniform FbmWaves {
 };
 uniform int u_cascade_count;
 uniform int u_waves_per_cascade;
-uniform float u_warp;  // s: the point moves by s a grad f of each wave before (dimensionless)
+uniform float u_warp;  // beta: the point moves by beta a grad f of each wave before (dimensionless)
 
 // (W, W', W'') at theta.
 vec3 wave_shape(float theta) {
