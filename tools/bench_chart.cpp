@@ -1,6 +1,7 @@
 // bench_chart BENCH.csv OUT.png: one horizontal bar per step, stacked by pass (wall ms a frame),
 // with the frames per second at its end. ./ocean bench calls it.
-// CSV columns: step,size,fps,total_ms,passes,dft_ms,gpu_fft_ms,fftw_ms; passes is "name=ms;...".
+// CSV columns: step,size,fps,total_ms,passes, then the steps' extra figures (dft_ms, gpu_fft_ms, ...);
+// passes is "name=ms;...". Only the first five are drawn.
 #include "common/text.hpp"
 #include "tools/canvas.hpp"
 
