@@ -43,11 +43,19 @@ inline std::array<double, kCascades> cascade_patch_sizes(double largest) {
 // modes, not one or two (a storm's 410 m peak in a 500 m tile repeats as a regular swell). The
 // tile is patch_size, or longer when the peak needs it; the other tiles and the bands follow.
 constexpr double kPeakWavelengthsPerTile = 5;
-// A swell's peak counts as much as the wind sea's.
+// The sea's longest peak, as an angular frequency (0 for a calm sea without swell): the wind sea's,
+// or the swell's where that is longer. A swell's peak counts as much as the wind sea's.
+inline double longest_peak_omega(const step05::SpectrumParams& shared) {
+    double omega = step05::peak_omega_of(shared);  // 0 without wind
+    if (shared.swell_height > 0) {
+        const double swell = 2 * step05::kPi / shared.swell_period;
+        omega = omega > 0 ? std::min(omega, swell) : swell;
+    }
+    return omega;
+}
 inline double largest_tile(const step05::SpectrumParams& shared) {
-    const auto wavelength = [](double omega) { return omega > 0 ? 2 * step05::kPi * step05::kGravity / (omega * omega) : 0; };
-    double peak_wavelength = wavelength(step05::peak_omega_of(shared));
-    if (shared.swell_height > 0) peak_wavelength = std::max(peak_wavelength, wavelength(2 * step05::kPi / shared.swell_period));
+    const double omega = longest_peak_omega(shared);
+    const double peak_wavelength = omega > 0 ? 2 * step05::kPi * step05::kGravity / (omega * omega) : 0;
     return std::max(shared.patch_size, kPeakWavelengthsPerTile * peak_wavelength);
 }
 inline std::array<double, kCascades> cascade_patch_sizes(const step05::SpectrumParams& shared) {

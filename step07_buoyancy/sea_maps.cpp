@@ -19,12 +19,8 @@ double wavenumber_of(double omega, double depth) {
 }
 
 std::vector<double> band_wavenumbers(const step05::SpectrumParams& shared) {
-    // The longest peak of the sea: the wind sea's, or the swell's if there is one.
-    double peak = shared.wind_speed > 0 ? wavenumber_of(step05::peak_omega_of(shared), shared.depth) : 0;
-    if (shared.swell_height > 0) {
-        const double swell = wavenumber_of(2 * step05::kPi / shared.swell_period, shared.depth);
-        peak = peak > 0 ? std::min(peak, swell) : swell;
-    }
+    // The sea's longest peak (wavenumber_of(0) is 0: a calm sea's orbits do not decay).
+    const double peak = wavenumber_of(step06::longest_peak_omega(shared), shared.depth);
     std::vector<double> out;
     // Clamped into each band (low first: a band the cut-offs emptied has low > high).
     for (const auto& band : step06::cascade_spectra(shared))

@@ -1,6 +1,7 @@
 #include "step07_buoyancy/sea_surface.hpp"
 
 #include "common/constants.hpp"
+#include "step05_fft/gerstner.hpp"
 
 #include <cmath>
 
@@ -9,18 +10,30 @@ namespace step07 {
 double GerstnerWave::wavenumber() const { return ocean::kTwoPi / wavelength; }
 double GerstnerWave::omega() const { return std::sqrt(ocean::kGravity * wavenumber()); }
 
+namespace {
+
+// Wave w as step05's closed form (gerstner.hpp) with steepness 1, its orbits' radius `amplitude`,
+// sampled at `rest`: theta = k d.rest - (omega t - phase).
+step05::MapSample sample_wave(const GerstnerWave& w, double amplitude, glm::dvec2 rest, double time) {
+    step05::GerstnerWave wave;
+    wave.direction_x = w.direction.x;
+    wave.direction_z = w.direction.y;
+    wave.wavenumber = w.wavenumber();
+    wave.amplitude = amplitude;
+    wave.steepness = 1;
+    return step05::gerstner_sample(wave, rest.x, rest.y, w.omega() * time - w.phase);
+}
+
+}  // namespace
+
 SurfaceAt GerstnerSea::at(glm::dvec2 rest) const {
     SurfaceAt s;
     for (const GerstnerWave& w : waves_) {
-        const double k = w.wavenumber();
-        const glm::dvec2 kv = k * w.direction;
-        const double theta = glm::dot(kv, rest) - w.omega() * time_ + w.phase;
-        const double c = std::cos(theta), sn = std::sin(theta);
-        // (Dx, h, Dz) = (-dx A sin, A cos, -dz A sin); d/dx of theta is kx, of z kz.
-        s.displacement += glm::dvec3(-w.direction.x * w.amplitude * sn, w.amplitude * c, -w.direction.y * w.amplitude * sn);
-        const glm::dvec3 d_dtheta(-w.direction.x * w.amplitude * c, -w.amplitude * sn, -w.direction.y * w.amplitude * c);
-        s.d_dx += kv.x * d_dtheta;
-        s.d_dz += kv.y * d_dtheta;
+        const step05::MapSample m = sample_wave(w, w.amplitude, rest, time_);
+        // The maps' form: displacement (Dx, h, Dz, dDx/dz), slopes (dh/dx, dh/dz, dDx/dx, dDz/dz).
+        s.displacement += glm::dvec3(m.displacement[0], m.displacement[1], m.displacement[2]);
+        s.d_dx += glm::dvec3(m.slopes[2], m.slopes[0], m.displacement[3]);
+        s.d_dz += glm::dvec3(m.displacement[3], m.slopes[1], m.slopes[3]);
     }
     return s;
 }
@@ -28,10 +41,9 @@ SurfaceAt GerstnerSea::at(glm::dvec2 rest) const {
 glm::dvec3 GerstnerSea::displacement_below(glm::dvec2 rest, double depth) const {
     glm::dvec3 d(0.0);
     for (const GerstnerWave& w : waves_) {
-        const double theta = glm::dot(w.wavenumber() * w.direction, rest) - w.omega() * time_ + w.phase;
-        const double radius = w.amplitude * std::exp(-w.wavenumber() * depth);  // the orbit at that depth
-        d += glm::dvec3(-w.direction.x * radius * std::sin(theta), radius * std::cos(theta),
-                        -w.direction.y * radius * std::sin(theta));
+        // The orbit at that depth: radius A e^{-k depth}.
+        const step05::MapSample m = sample_wave(w, w.amplitude * std::exp(-w.wavenumber() * depth), rest, time_);
+        d += glm::dvec3(m.displacement[0], m.displacement[1], m.displacement[2]);
     }
     return d;
 }
