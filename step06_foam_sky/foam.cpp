@@ -41,7 +41,8 @@ void FoamSimulation::resize(int n) {
     if (n == n_ && texture_) return;
     n_ = n;
     texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-    // R: the whitecaps' foam; G: the residual foam of the streaks, read with it in one fetch.
+    // R: the active foam a (stage A); G: the foam as a whole f (the residual, stage B, is f - a),
+    // read with it in one fetch.
     glTextureStorage3D(texture_.id(), step05::mip_levels(n), GL_RG32F, n, n, kFoamLevels);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the toroidal addressing
@@ -51,17 +52,14 @@ void FoamSimulation::resize(int n) {
 }
 
 void FoamSimulation::fill(float value) {
-    const float both[2] = {value, value};  // the whitecaps' foam and the residual
+    const float both[2] = {value, value};  // the active foam and the foam as a whole
     glClearTexImage(texture_.id(), 0, GL_RG, GL_FLOAT, both);
     warm_start_ = false;
 }
 
 void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
                             glm::dvec2 forward_xz, double dt, const FoamSettings& s) {
-    // Below Beaufort 7 the residual's step is compiled out (STREAKS 0), not skipped by a uniform:
-    // llvmpipe runs an untaken branch anyway.
-    ocean::ShaderProgram* p =
-        programs_("foam.comp", {"step06_foam_sky/shaders/foam.comp"}, {"STREAKS " + std::to_string(int(streaks()))});
+    ocean::ShaderProgram* p = programs_("foam.comp", {"step06_foam_sky/shaders/foam.comp"}, {});
     if (p == nullptr) throw ocean::Error("foam.comp does not build");
     const bool first = std::exchange(warm_start_, false);
     const bool placed = windows_[0].n == n_;  // false before the first update: nothing to move from
@@ -83,8 +81,7 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     p->set("u_threshold", float(s.threshold));
     p->set("u_injection", float(s.injection));
     p->set("u_decay_rate", float(s.decay_rate));
-    p->set("u_streak_injection", float(kResidualFraction * streak_share_ * s.injection));
-    p->set("u_streak_decay", float(s.streak_decay));
+    p->set("u_residual_decay", float(s.residual_decay));
     p->set("u_n", n_);
     p->set("u_warm_start", int(first));
     ocean.bind_maps(*p);
@@ -99,11 +96,14 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {
     const FoamPatternSettings settings;
-    const std::vector<std::uint8_t> bytes = to_r8(foam_pattern(settings));
+    // R: the bubble cells' borders; G: the smooth noise (foam_pattern.hpp), interleaved.
+    const std::vector<std::uint8_t> cells = to_r8(foam_pattern(settings)), noise = to_r8(foam_noise(settings));
+    std::vector<std::uint8_t> bytes(2 * cells.size());
+    for (std::size_t i = 0; i < cells.size(); ++i) bytes[2 * i] = cells[i], bytes[2 * i + 1] = noise[i];
     pattern_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(pattern_.id(), step05::mip_levels(settings.size), GL_R8, settings.size, settings.size);
+    glTextureStorage2D(pattern_.id(), step05::mip_levels(settings.size), GL_RG8, settings.size, settings.size);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(pattern_.id(), 0, 0, 0, settings.size, settings.size, GL_RED, GL_UNSIGNED_BYTE, bytes.data());
+    glTextureSubImage2D(pattern_.id(), 0, 0, 0, settings.size, settings.size, GL_RG, GL_UNSIGNED_BYTE, bytes.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glGenerateTextureMipmap(pattern_.id());
     glTextureParameteri(pattern_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -117,14 +117,24 @@ void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit)
     program.set("u_foam_pattern_size", kPatternSize);
     program.set("u_streak_along", streak_along_);
     program.set("u_streak_across", streak_across_);
+    program.set("u_meander_along", meander_along_);
+    program.set("u_meander_across", meander_across_);
+    program.set("u_break_along", break_along_);
+    program.set("u_break_across", break_across_);
+    program.set("u_streak_meander", float(kStreakMeander));
+    program.set("u_streak_share", float(streak_share_));
     glBindTextureUnit(GLuint(unit), pattern_.id());
 }
 
 void FoamSimulation::set_wind(glm::dvec2 heading, double speed) {
     const glm::vec2 along(heading);
     streak_along_ = along / float(kPatternSize * kStreakLength);
-    streak_across_ = glm::vec2(-along.y, along.x) / float(kPatternSize * kStreakSpacing);
-    // Below Beaufort 7 foam.comp holds the residual at 0 (STREAKS 0), so it starts again from none.
+    const glm::vec2 across(-along.y, along.x);
+    streak_across_ = across / float(kPatternSize * kStreakSpacing);
+    meander_along_ = along / float(kMeanderLength);
+    meander_across_ = across / float(kMeanderWidth);
+    break_along_ = along / float(kBreakLength);
+    break_across_ = across / float(kBreakWidth);
     streak_share_ = foam_streak_share(speed);
 }
 
@@ -148,7 +158,7 @@ std::vector<float> FoamSimulation::read_channel(int level, GLenum channel) const
     return in_world_order(stored, level);
 }
 
-std::vector<float> FoamSimulation::read_residual(int level) const { return read_channel(level, GL_GREEN); }
+std::vector<float> FoamSimulation::read_whole(int level) const { return read_channel(level, GL_GREEN); }
 
 std::vector<float> FoamSimulation::read_level(int level) const { return read_channel(level, GL_RED); }
 

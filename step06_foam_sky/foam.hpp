@@ -1,20 +1,30 @@
-// Chapter 5.3 on the CPU: foam where the surface folds, kept in a texture, fading with time.
+// Chapter 5.3 on the CPU: foam where the surface folds, kept in a texture, fading with time, in
+// the two stages photographs of the sea separate (Monahan and Lu 1990).
 //
 // The Jacobian J of the horizontal displacement tells how the water's surface is squeezed: J = 1
 // at rest, J < 1 where crests sharpen, J < 0 where the surface folds over itself (a breaking
-// wave). At each texel the foam f obeys
-//     df/dt = q - r f,    q = injection * max(0, threshold - J),  r = decay_rate
-// and each frame integrates it exactly over dt, with J held through the frame:
-//     f <- f e^{-r dt} + q (1 - e^{-r dt}) / r      (q dt when r = 0),  clamped to [0, 1]
-// So for a J that holds still, 10 frames of 0.1 s make exactly the foam of 100 frames of 0.01 s:
-// the picture does not depend on the frame rate. (The explicit step f e^{-r dt} + q dt, exact in
-// its decay only, made 7 % more foam at 6 frames a second than at 60.) foam.comp does the same on
-// the GPU, through foam_step.glsl.
+// wave). At each texel two amounts of foam are kept:
+//   - a, the active whitecap (stage A): made where the surface squeezes, bright, short-lived;
+//   - b, the residual foam it leaves (stage B): the whitecap's foam once it stops breaking, a
+//     thinning raft of bubbles that lasts several times longer.
+// Both come from one breaking, remembered by two clocks:
+//     da/dt = q - r_a a,          q = injection * max(0, threshold - J)
+//     df/dt = q - r_b f           (f: the foam as a whole, r_b < r_a)
+// each held at or below 1 (a texel cannot be more than covered), and the residual foam is what
+// the slow clock remembers and the fast one has forgotten: b = f - a, between 0 and 1 - a (with
+// the same q, the slower decay stays above). When a crest stops breaking its active foam is gone
+// in a second or two, and the residual it leaves peaks, then fades as e^{-r_b t}.
+// Each frame integrates both exactly over dt, with J held through the frame (the same step at two
+// rates): the same foam at any frame rate. foam.comp does the same on the GPU, through
+// foam_step.glsl:
+//     a <- a e^{-r_a dt} + q (1 - e^{-r_a dt}) / r_a      (q dt when r_a = 0), at most 1.
 //
 // J is the Jacobian of the rendered surface, the sum of the cascades: a fold made by two
 // cascades together foams, and view=foam agrees with view=jacobian. The cascades' tiles never
 // line up, so the sum has no tile of its own: the foam is kept in world space, in a clipmap of
-// windows that follow the camera (shaders/foam_map.glsl explains the addressing).
+// windows that follow the camera (shaders/foam_map.glsl explains the addressing). It is kept per
+// rest position (the label of the water that the displacement carries around its orbit), so the
+// renderer draws it where that water is: foam moves with the surface it floats on.
 #pragma once
 
 #include "common/gl.hpp"
@@ -33,12 +43,10 @@ namespace step06 {
 struct FoamSettings {
     // J below which foam appears (the bias). One value for every sea: with it the whitecap
     // coverage follows the wind as observed (README, "How much foam"; tests/physics_check whitecaps).
-    double threshold = 0.75;
-    double injection = 8;     // foam per second per unit of (threshold - J)
-    double decay_rate = 0.8;  // 1/s: foam fades as exp(-decay_rate t)
-    // The residual foam a storm leaves in streaks (foam_pattern.hpp's foam_streak_share): fed by the
-    // same breaking, it fades as exp(-streak_decay t).
-    double streak_decay = 0.1;  // 1/s
+    double threshold = 0.72;
+    double injection = 16;    // active foam per second per unit of (threshold - J)
+    double decay_rate = 2;    // 1/s: r_a, the active whitecap stops breaking as exp(-r_a t)
+    double residual_decay = 0.1;  // 1/s: r_b, the foam as a whole (the residual it leaves) fades as exp(-r_b t)
 };
 
 // A new foam texel starts where injection and decay would balance for the current J, so the
@@ -57,24 +65,25 @@ inline double foam_step(double foam, double jacobian, double dt, const FoamSetti
     return std::clamp(foam * std::exp(-x) + grown, 0.0, 1.0);
 }
 
-// The residual foam's step: foam_step's exact solution, fed by `share` of the whitecaps' breaking
-// (foam_streak_share) and fading at streak_decay.
-inline double residual_foam_step(double residual, double jacobian, double dt, const FoamSettings& s, double share) {
-    FoamSettings residual_settings = s;
-    residual_settings.injection = share * s.injection;
-    residual_settings.decay_rate = s.streak_decay;
-    return foam_step(residual, jacobian, dt, residual_settings);
+// The foam as a whole, f: foam_step at the residual's rate r_b.
+inline double whole_foam_step(double whole, double jacobian, double dt, const FoamSettings& s) {
+    FoamSettings slow = s;
+    slow.decay_rate = s.residual_decay;
+    return foam_step(whole, jacobian, dt, slow);
 }
+inline double whole_foam_steady_state(double jacobian, const FoamSettings& s) {
+    FoamSettings slow = s;
+    slow.decay_rate = s.residual_decay;
+    return foam_steady_state(jacobian, slow);
+}
+// The residual foam: what the foam as a whole holds beyond the active part (never below 0, for a
+// residual rate set above the active one).
+inline double residual_foam(double active, double whole) { return std::max(0.0, whole - active); }
 
 // The clipmap: level l is N x N texels over kFoamExtent0 * 4^l metres (64 m, 256 m, 1024 m).
 constexpr int kFoamLevels = 3;  // FOAM_LEVELS in the shaders
 constexpr double kFoamExtent0 = 64;
 constexpr double kFoamLevelRatio = 4;
-// The residual foam of the streaks is kept on every level, beside the whitecaps' foam (the
-// texture's second channel): the renderer reads both in one fetch. Before issue 23 it was kept
-// on the 256 m level only, in a texture of its own, and read with a fetch of its own; the tests
-// still look at that level.
-constexpr int kResidualFoamLevel = 1;
 inline double foam_extent(int level) { return kFoamExtent0 * std::pow(kFoamLevelRatio, level); }
 
 // A level's window (texel_window.hpp): it moves in whole texels.
@@ -89,7 +98,7 @@ glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_x
 // (cascades_visible.glsl) fetches at most two levels; this is the sum over all three it must equal.
 std::array<double, kFoamLevels> foam_level_weights(glm::dvec2 p, const std::array<FoamWindow, kFoamLevels>& windows);
 
-// The GPU side: one rg32f layer per clipmap level (whitecaps' foam, residual foam), updated by
+// The GPU side: one rg32f layer per clipmap level (active foam a, foam as a whole f), updated by
 // foam.comp from the summed surface.
 class FoamSimulation {
 public:
@@ -110,9 +119,9 @@ public:
     // the pattern's coordinates, stretched along the wind).
     void bind_pattern(const ocean::ShaderProgram& program, int unit) const;
     // The wind the streaks lie along: its heading (unit x, z: short_waves.hpp's wind_heading) and
-    // speed (m/s: the share of the breaking that lingers, foam_streak_share).
+    // speed (m/s: the share of the residual foam drawn as streaks, foam_streak_share).
     void set_wind(glm::dvec2 heading, double speed);
-    // Whether there is residual foam to read (Beaufort 7 and up): the shading's STREAKS variant.
+    // Whether the residual foam is combed into streaks (Beaufort 7 and up): the shading's STREAKS variant.
     bool streaks() const { return streak_share_ > 0; }
     static constexpr float kPatternSize = 9.0f;  // metres: about ten 1 m bubble cells a side
     const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
@@ -121,13 +130,13 @@ public:
     int resolution() const { return n_; }
     // Level `level` in the world's order: row j is z cell origin.z + j, column i x cell origin.x + i.
     std::vector<float> read_level(int level) const;
-    // The residual foam of level `level`, in the same order.
-    std::vector<float> read_residual(int level = kResidualFoamLevel) const;
+    // The foam as a whole (f) of level `level`, in the same order.
+    std::vector<float> read_whole(int level = 0) const;
 
 private:
     // A level's texels (toroidal) in the world's order.
     std::vector<float> in_world_order(const std::vector<float>& stored, int level) const;
-    // One channel (GL_RED the whitecaps' foam, GL_GREEN the residual) of a level, in the world's order.
+    // One channel (GL_RED the active foam, GL_GREEN the foam as a whole) of a level, in the world's order.
     std::vector<float> read_channel(int level, GLenum channel) const;
 
     ocean::ProgramFactory programs_;
@@ -135,7 +144,10 @@ private:
     ocean::Texture pattern_;
     int n_ = 0;
     bool warm_start_ = true;
+    // World (x, z) to the pattern's coordinates of the streaks' lines, meander and breaks
+    // (foam_pattern.hpp), along and across the wind.
     glm::vec2 streak_along_{1.0f, 0.0f}, streak_across_{0.0f, 1.0f};
+    glm::vec2 meander_along_{1.0f, 0.0f}, meander_across_{0.0f, 1.0f}, break_along_{1.0f, 0.0f}, break_across_{0.0f, 1.0f};
     double streak_share_ = 0;
     glm::dvec2 origin_{0.0};  // the world origin of the last update (CascadeView::origin)
     std::array<FoamWindow, kFoamLevels> windows_{};

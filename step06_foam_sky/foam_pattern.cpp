@@ -48,6 +48,33 @@ std::vector<float> foam_pattern(const FoamPatternSettings& s) {
     return out;
 }
 
+std::vector<float> foam_noise(const FoamPatternSettings& s) {
+    if (s.size < 4 || s.noise_cells < 2 || 2 * s.noise_cells > s.size) throw std::invalid_argument("foam noise: bad size or cell count");
+    std::uint64_t state = s.seed ^ 0x9e3779b97f4a7c15ull;  // not the cells' sequence
+    std::vector<double> sum(std::size_t(s.size) * s.size, 0.0);
+    for (int octave = 0; octave < 2; ++octave) {
+        const int cells = s.noise_cells << octave;
+        const double weight = octave == 0 ? 1.0 : 0.5;
+        std::vector<double> lattice(std::size_t(cells) * cells);
+        for (double& v : lattice) v = step04::uniform01(state);
+        const auto at = [&](int i, int j) { return lattice[std::size_t(((j % cells) + cells) % cells) * cells + ((i % cells) + cells) % cells]; };
+        for (int y = 0; y < s.size; ++y)
+            for (int x = 0; x < s.size; ++x) {
+                const double u = (x + 0.5) * cells / s.size, v = (y + 0.5) * cells / s.size;
+                const int i = int(std::floor(u)), j = int(std::floor(v));
+                const double fu = u - i, fv = v - j;
+                const double wu = fu * fu * (3 - 2 * fu), wv = fv * fv * (3 - 2 * fv);  // no kinks at the lattice
+                const double value = (1 - wv) * ((1 - wu) * at(i, j) + wu * at(i + 1, j)) + wv * ((1 - wu) * at(i, j + 1) + wu * at(i + 1, j + 1));
+                sum[std::size_t(y) * s.size + x] += weight * value;
+            }
+    }
+    const auto [low, high] = std::minmax_element(sum.begin(), sum.end());
+    const double lo = *low, span = std::max(*high - *low, 1e-12);
+    std::vector<float> out(sum.size());
+    for (std::size_t i = 0; i < sum.size(); ++i) out[i] = float((sum[i] - lo) / span);
+    return out;
+}
+
 std::vector<std::uint8_t> to_r8(const std::vector<float>& pattern) {
     std::vector<std::uint8_t> bytes(pattern.size());
     for (std::size_t i = 0; i < pattern.size(); ++i)

@@ -22,7 +22,11 @@ void Sea::declare(ocean::ParamRegistry& p) {
         .in_group("spectrum");
     p.add_float("foam_threshold", &foam_settings_.threshold, -1, 2, "Jacobian below which foam appears (bias)")
         .in_group("foam");
-    p.add_float("foam_decay", &foam_settings_.decay_rate, 0, 20, "foam fades as exp(-decay t), per second")
+    p.add_float("foam_decay", &foam_settings_.decay_rate, 0, 20,
+                "the active whitecap stops breaking as exp(-decay t), per second")
+        .in_group("foam");
+    p.add_float("foam_residual_decay", &foam_settings_.residual_decay, 0, 20,
+                "the residual foam it leaves fades as exp(-decay t), per second")
         .in_group("foam");
 }
 

@@ -179,55 +179,86 @@ vec2 foam_at(vec2 p, float long_side) {
     return foam;
 }
 
-layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;  // foam_pattern.hpp: 1 on the borders of bubble cells
+// foam_pattern.hpp: r 1 on the borders of bubble cells; g a smooth noise
+layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;
 uniform float u_foam_pattern_size;  // metres one tile of it covers
 // World (x, z) to the pattern's coordinates for the streaks: stretched along the wind.
 uniform vec2 u_streak_along, u_streak_across;
 #ifndef STREAKS
-#define STREAKS 1  // 0: no residual foam to read (below Beaufort 7: FoamSimulation::streaks())
+#define STREAKS 1  // 0: below Beaufort 7, no streaks (FoamSimulation::streaks())
 #endif
+// The streaks' frame (foam_pattern.hpp): metres along and across the wind to the line's pattern,
+// the meander's and the breaks'; the streaks' strength (foam_streak_share).
+uniform vec2 u_meander_along, u_meander_across, u_break_along, u_break_across;
+uniform float u_streak_meander, u_streak_share;
 
-// foam_pattern.hpp's foam_cover: fresh foam (amount 1) covers everything; as it decays the cell
-// middles open first and the borders last, so a fading whitecap turns to lace, with a soft edge.
-const float FOAM_HOLES = 0.25, FOAM_EDGE = 0.2;
-float foam_cover(float amount, float pattern) {
-    return smoothstep(0.0, 1.0, (amount - (1.0 - pattern) * FOAM_HOLES) / FOAM_EDGE);
+// foam_pattern.hpp's net_cover: linear in the amount, the cells' middles open first; and its
+// residual_cover: thin lace, torn unevenly by the smooth noise, never closed.
+const float ACTIVE_HOLES = 0.3, RESIDUAL_HOLES = 0.75, RESIDUAL_THICKNESS = 0.9, RESIDUAL_MOST = 0.65,
+            RESIDUAL_ALBEDO = 0.5;
+float net_cover(float amount, float pattern, float holes) {
+    return clamp((amount - (1.0 - pattern) * holes) / (1.0 - holes), 0.0, 1.0);
+}
+float residual_cover(float amount, float pattern, float noise) {
+    return net_cover(min(RESIDUAL_THICKNESS * (0.25 + 1.25 * noise) * amount, RESIDUAL_MOST), pattern, RESIDUAL_HOLES);
 }
 
-// foam_pattern.hpp's streak_cover: the residual foam, where the stretched pattern makes a line.
-const float STREAK_LINE_FROM = 0.45, STREAK_LINE_TO = 0.85;
-float streak_cover(float residual, float pattern) {
-    return clamp(residual, 0.0, 1.0) * smoothstep(STREAK_LINE_FROM, STREAK_LINE_TO, pattern);
+// foam_pattern.hpp's streak_cover: the residual foam where the line is and is not broken.
+const float STREAK_LINE_FROM = 0.35, STREAK_LINE_TO = 0.75, BREAK_FROM = 0.45, BREAK_TO = 0.6;
+float streak_cover(float residual, float line, float unbroken) {
+    return clamp(residual, 0.0, 1.0) * smoothstep(STREAK_LINE_FROM, STREAK_LINE_TO, line) *
+           smoothstep(BREAK_FROM, BREAK_TO, unbroken);
 }
 
-// The simulated amount laid out by the pattern, read at two scales (so the cells are not all one
-// size and the tile does not show) in world space, where the foam is.
-float total_foam(vec2 p, SurfaceFootprint f) {
+// How much of the pixel each stage of foam covers, and the active foam's brightness there: a
+// breaking crest is churned, bubbles and troughs of foam, not a flat sheet.
+struct FoamCover {
+    float whitecap, residual;  // the active foam's cover, the residual's
+    float turbulence;  // the active foam's albedo, per unit of fresh foam's: 0.8 to 1
+};
+// The simulated amounts laid out by the pattern in world space, where the foam is: the active
+// foam on the pattern read at two scales (so the cells are not all one size and the tile does not
+// show), the residual on the coarser one as lace, or, from Beaufort 7, partly as streaks.
+FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     float long_side = max(length(f.dx), length(f.dy));
-    vec2 amounts = foam_at(p, long_side);
-    float foam = amounts.x;
-    // The residual foam, from Beaufort 7. A compile-time switch, not a uniform: llvmpipe runs
-    // both sides of a branch, so below Beaufort 7 the streaks' untaken code still cost 3 % of
-    // this pass (docs/performance.md). Compiled out, the residual is the constant 0 and the
-    // compiler drops the streaks' code below with it.
-#if STREAKS
-    float residual = amounts.y;
-#else
-    const float residual = 0.0;
-#endif
-    // Most of the sea holds no foam (below 0.002 no pattern gives a cover above 3e-4): on a GPU it
-    // skips the pattern (llvmpipe runs the branch masked: 3 to 4 % of the pass). Its fetches take
-    // the footprint's own derivatives (textureGrad), so a pixel with foam needs no neighbour to
-    // take the branch with it.
-    bool streaks = residual >= 0.02;  // a streak's cover is at most its residual: fainter is not seen
-    if (foam < 0.002 && !streaks) return 0.0;
+    vec2 amounts = foam_at(p, long_side);    // (active foam, foam as a whole)
+    amounts.y = max(amounts.y - amounts.x, 0.0);  // the residual: what the active part is not
+    // Most of the sea holds no foam (below 0.002 no pattern gives a cover above 0.005): on a GPU
+    // it skips the pattern (llvmpipe runs the branch masked). The fetches take the footprint's
+    // own derivatives (textureGrad), so a pixel with foam needs no neighbour to take the branch
+    // with it.
+    if (amounts.x < 0.002 && amounts.y < 0.002) return FoamCover(0.0, 0.0, 1.0);
     vec2 uv = p / u_foam_pattern_size, uv_dx = f.dx / u_foam_pattern_size, uv_dy = f.dy / u_foam_pattern_size;
-    float pattern = 0.6 * textureGrad(u_foam_pattern, uv, uv_dx, uv_dy).r +
-                    0.4 * textureGrad(u_foam_pattern, uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71).r;
-    float whitecaps = foam_cover(foam, pattern);
-    if (!streaks) return whitecaps;
-    // The streaks: the residual foam on the pattern stretched along the wind.
-    mat2 to_streaks = transpose(mat2(u_streak_along, u_streak_across));  // rows: along, across
-    float line = textureGrad(u_foam_pattern, to_streaks * p, to_streaks * f.dx, to_streaks * f.dy).r;
-    return max(whitecaps, streak_cover(residual, line));
+    float coarse = textureGrad(u_foam_pattern, uv, uv_dx, uv_dy).r;
+    float fine = textureGrad(u_foam_pattern, uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71).r;
+    float active_cover = net_cover(amounts.x, 0.6 * coarse + 0.4 * fine, ACTIVE_HOLES);
+    // The residual's lace: both scales of cells, so its holes come in many sizes, on a sea that
+    // has stretched and sheared it (the cells read through a warp of a metre, the smooth noise over
+    // 30 m tiles, so no honeycomb shows). It is thin foam: even where most of it is left (b near
+    // 1) the water shows through its holes (RESIDUAL_THICKNESS, never more than RESIDUAL_MOST
+    // of fresh foam's cover), and they open as it fades,
+    // unevenly: the same noise makes it denser in some places than in others, as a raft of foam
+    // tears.
+    vec2 noise_uv = uv * 0.3 + 0.21;
+    vec2 warp = vec2(textureGrad(u_foam_pattern, noise_uv, uv_dx * 0.3, uv_dy * 0.3).g,
+                     textureGrad(u_foam_pattern, noise_uv.yx + 0.5, uv_dx.yx * 0.3, uv_dy.yx * 0.3).g);
+    vec2 lace_uv = uv + 0.12 * (warp - 0.5);
+    float lace = 0.55 * textureGrad(u_foam_pattern, lace_uv, uv_dx, uv_dy).r +
+                 0.45 * textureGrad(u_foam_pattern, lace_uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71).r;
+    float residual = residual_cover(amounts.y, lace, warp.x);
+#if STREAKS
+    // The streaks: the line's pattern stretched along the wind, its across coordinate shifted by
+    // the meander (the smooth noise), cut where the smooth noise is low. (Rows of each matrix:
+    // along, across.)
+    mat2 to_meander = transpose(mat2(u_meander_along, u_meander_across));
+    mat2 to_breaks = transpose(mat2(u_break_along, u_break_across));
+    mat2 to_lines = transpose(mat2(u_streak_along, u_streak_across));
+    float wander = textureGrad(u_foam_pattern, to_meander * p, to_meander * f.dx, to_meander * f.dy).g;
+    float unbroken = textureGrad(u_foam_pattern, to_breaks * p, to_breaks * f.dx, to_breaks * f.dy).g;
+    vec2 across = normalize(u_streak_across);  // the meander moves the point across the wind
+    vec2 q = p + across * (u_streak_meander * (2.0 * wander - 1.0));
+    float line = textureGrad(u_foam_pattern, to_lines * q, to_lines * f.dx, to_lines * f.dy).r;
+    residual = max(residual, u_streak_share * streak_cover(2.0 * amounts.y, line, unbroken));  // denser than the lace
+#endif
+    return FoamCover(active_cover, residual, 0.8 + 0.2 * fine);
 }

@@ -33,6 +33,14 @@ uniform float u_foam_roughness;
 // Toggles, so every term can be seen alone or left out.
 uniform bool u_show_ambient, u_show_scatter, u_show_specular, u_show_reflection, u_show_foam, u_show_fog;
 
+// Light a thin foam layer lets through towards the viewer: the share sent on (FOAM_FORWARD) times
+// the phase function of bubbles, strongly forward (g = 0.6: the light is turned by tens of degrees,
+// not reversed). cos_angle is between the sunlight's direction of travel and the view ray's.
+const float FOAM_FORWARD = 0.5, FOAM_FORWARD_G = 0.6;
+float henyey_greenstein(float cos_angle, float g) {
+    return (1.0 - g * g) / (4.0 * PI * pow(1.0 + g * g - 2.0 * g * cos_angle, 1.5));
+}
+
 vec4 shade_sea_pixel(ivec2 pixel) {
     vec4 world = texelFetch(u_gbuffer_world, pixel, 0);
     uvec4 packed_rest = texelFetch(u_gbuffer_rest, pixel, 0);
@@ -48,12 +56,18 @@ vec4 shade_sea_pixel(ivec2 pixel) {
     float distance = length(to_eye);
     vec3 v = to_eye / distance;
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));  // a normal facing away: bend it back
-    float foam = u_show_foam ? total_foam(rest_xz, footprint) : 0.0;
+    // The two stages' cover (active whitecap, residual foam), and how much of the pixel foam
+    // covers in all: the residual shows where the active foam leaves room.
+    FoamCover cover = u_show_foam ? foam_cover(rest_xz, footprint) : FoamCover(0.0, 0.0, 1.0);
+    float foam = cover.whitecap + cover.residual * (1.0 - cover.whitecap);
+    // The light foam sends back, per unit of fresh foam's: the breaking core's turbulence varies
+    // it a little, the residual is greyer (foam_pattern.hpp's kResidualAlbedo).
+    float foam_albedo = cover.whitecap * cover.turbulence + RESIDUAL_ALBEDO * cover.residual * (1.0 - cover.whitecap);
 
 #if DEBUG_VIEW == 1
     return vec4(0.5 * n + 0.5, 1.0);
 #elif DEBUG_VIEW == 2
-    return vec4(vec3(foam), 1.0);
+    return vec4(vec3(foam_albedo), 1.0);
 #elif DEBUG_VIEW == 3
     float j = jacobian(displacement, slopes);
     return vec4(j < 0.0 ? vec3(1.0, 0.0, 0.0) : vec3(clamp(j, 0.0, 2.0) * 0.5), 1.0);
@@ -87,17 +101,22 @@ vec4 shade_sea_pixel(ivec2 pixel) {
     if (u_show_scatter) water += (1.0 - fresnel) * scatter_term(n, v, u_to_sun, height, roughness, foam, s, u_sun_radiance);
     if (u_show_reflection) water += fresnel * sky;
     if (u_show_specular) water += specular_term(n, v, u_to_sun, roughness, f0, u_sun_radiance);
-    // Foam is rough and white: it scatters sun and sky back almost diffusely.
-    // Lambertian, f_r = albedo / pi: lit by the sun and by the sky it faces, whose irradiance over
-    // pi is the sky's mean radiance over the hemisphere around n (the cube's coarsest level, read
-    // at n, stands for it). The same sky the water reflects, so foam under a bright overcast is
-    // as white as the water's reflection of it is bright.
+    // Foam is a layer of bubbles, white because the light it receives is: its colour is the
+    // light's, times an albedo. It sends back what it receives almost diffusely (Lambertian,
+    // f_r = albedo / pi): the sky it faces, whose irradiance over pi is the sky's mean radiance over
+    // the hemisphere around n (the cube's coarsest level, read at n, stands for it; the same sky
+    // the water reflects), and the sun. The bubbles face every way, so the layer takes the sun's
+    // light half as the facet does (n.l) and half as a level layer would (l.y). And a thin layer
+    // lets light through, mostly forwards (bubbles scatter forwards, as cloud droplets do): seen
+    // against a low sun, foam glows (Henyey-Greenstein's phase, g = FOAM_FORWARD_G).
     // Only where there is foam (most pixels have none; textureLod needs no neighbours).
     vec3 colour = water;
     if (foam > 0.0) {
         vec3 sky_irradiance_over_pi = textureLod(u_sky, n, u_sky_max_lod).rgb;
-        vec3 foam_light = u_foam_colour * (sky_irradiance_over_pi + u_sun_radiance * max(dot(n, u_to_sun), 0.0) / PI);
-        colour = mix(water, foam_light, foam);
+        float sun_on_layer = 0.5 * max(dot(n, u_to_sun), 0.0) + 0.5 * max(u_to_sun.y, 0.0);
+        float through = FOAM_FORWARD * henyey_greenstein(dot(-v, u_to_sun), FOAM_FORWARD_G);
+        vec3 foam_light = u_foam_colour * (sky_irradiance_over_pi + u_sun_radiance * (sun_on_layer / PI + through));
+        colour = water * (1.0 - foam) + foam_light * foam_albedo;
     }
     if (u_show_fog) colour = apply_fog(colour, u_eye, surface_point, horizon_colour(-v));
     return vec4(colour, 1.0);

@@ -1,5 +1,5 @@
-// step06's CPU math: cascade bands, foam's frame-rate independence, tessellation levels, the
-// bloom and the tonemapper.
+// step06's CPU math: cascade bands, foam's two stages (against a fine integration of their
+// equations, at any frame rate), tessellation levels, the bloom and the tonemapper.
 #include "common/params.hpp"
 #include "step05_fft/ocean_params.hpp"
 #include "step05_fft/spectrum.hpp"
@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -186,7 +187,8 @@ TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
     // Below the clamp (J = 0.7, threshold 0.75, injection 8: 8 * 0.05 / 0.8 = 0.5), the warm start is the
     // balance of injection and decay: stepping from it, or from zero long enough, stays there
     // (q / r is the exact step's fixed point at any dt).
-    const step06::FoamSettings s;
+    step06::FoamSettings s;
+    s.injection = 8;  // not the default's: the numbers above are for 8
     const double j = 0.7;
     const double steady = step06::foam_steady_state(j, s);
     EXPECT_NEAR(steady, 0.5, 1e-12);
@@ -203,6 +205,214 @@ TEST(Step06Foam, SteadyStateIsWhereStepsSettle) {
     step06::FoamSettings no_decay = s;
     no_decay.decay_rate = 0;
     EXPECT_EQ(step06::foam_steady_state(0.7, no_decay), 1.0);
+}
+
+// The two stages of foam.hpp, a the active whitecap and b the residual foam it leaves:
+//     da/dt = q - r_a a  (a at most 1),    db/dt = r_a a - r_b b
+// integrated by RK4 in `steps` steps, with nothing of residual_foam_step's closed form: a is
+// projected (held at 1 once it gets there, the same as min(a, 1)) and b fed by r_a min(a, 1).
+// The kink where a reaches 1 costs RK4 its order for one step only.
+struct TwoStages {
+    double active, residual;
+};
+TwoStages integrate_two_stages(TwoStages x, double jacobian, double dt, const step06::FoamSettings& s, int steps) {
+    const double q = s.injection * std::max(0.0, s.threshold - jacobian), ra = s.decay_rate, rb = s.residual_decay;
+    const double h = dt / steps;
+    const auto da = [&](double a) { return a >= 1 && q >= ra * a ? 0.0 : q - ra * a; };
+    const auto db = [&](double a, double b) { return ra * std::min(a, 1.0) - rb * b; };
+    double a = x.active, b = x.residual;
+    for (int i = 0; i < steps; ++i) {
+        const double ka1 = da(a), kb1 = db(a, b);
+        const double ka2 = da(a + 0.5 * h * ka1), kb2 = db(a + 0.5 * h * ka1, b + 0.5 * h * kb1);
+        const double ka3 = da(a + 0.5 * h * ka2), kb3 = db(a + 0.5 * h * ka2, b + 0.5 * h * kb2);
+        const double ka4 = da(a + h * ka3), kb4 = db(a + h * ka3, b + h * kb3);
+        a = std::min(1.0, a + h / 6 * (ka1 + 2 * ka2 + 2 * ka3 + ka4));
+        b += h / 6 * (kb1 + 2 * kb2 + 2 * kb3 + kb4);
+    }
+    return {a, b};
+}
+
+// One frame of both stages as the GPU does it: b's step needs a at the frame's start.
+TwoStages step_two_stages(TwoStages x, double jacobian, double dt, const step06::FoamSettings& s) {
+    return {step06::foam_step(x.active, jacobian, dt, s),
+            step06::residual_foam_step(x.residual, x.active, jacobian, dt, s)};
+}
+
+// residual_foam_step against the ODE pair integrated finely (RK4 at dt / 20000), over frames that
+// take each branch of its closed form: a reaching 1 in the middle of the frame (its source changes
+// form at t1), a rising or falling without reaching it, a already at 1, no active decay (a grows
+// linearly and b only decays), r_b above, below and equal to r_a (the formula's limit, M(0) = 1),
+// and one long frame of 10 s. Measured: within 4e-10 (the kink's step), the rest within 1e-14.
+TEST(Step06Foam, ResidualStepIsTheTwoStageOdeIntegratedFinely) {
+    struct Frame {
+        const char* name;
+        TwoStages start;
+        double jacobian, dt, ra, rb;
+        bool saturates;  // a reaches 1 inside the frame
+    };
+    const Frame frames[] = {
+        {"a reaches 1 mid-frame", {0.2, 0.3}, 0.2, 0.5, 0.8, 0.25, true},  // q = 4.4: t1 = 0.20 s
+        {"a reaches 1 mid-frame, r_b > r_a", {0.5, 0.1}, 0.3, 0.5, 0.8, 2.0, true},
+        {"a rises, never reaches 1", {0.1, 0.3}, 0.7, 0.5, 0.8, 0.25, false},  // towards q / r_a = 0.5
+        {"a falls towards q / r_a", {0.9, 1.5}, 0.7, 0.5, 0.8, 0.25, false},
+        {"a already at 1", {1.0, 2.0}, 0.0, 0.5, 0.8, 0.25, false},
+        {"r_a = 0, a reaches 1", {0.2, 0.4}, 0.2, 0.5, 0.0, 0.25, true},  // (1 - 0.2) / 4.4 = 0.18 s
+        {"r_a = 0, a grows", {0.0, 0.4}, 0.74, 0.5, 0.0, 0.25, false},
+        {"r_b > r_a", {0.2, 0.4}, 0.6, 0.5, 0.5, 2.0, false},
+        {"r_b < r_a", {0.2, 0.4}, 0.6, 0.5, 2.0, 0.25, false},
+        {"r_b = r_a", {0.2, 0.4}, 0.6, 0.5, 0.8, 0.8, false},
+        {"r_b = r_a, a reaches 1", {0.2, 0.4}, 0.2, 0.5, 0.8, 0.8, true},
+        {"10 s, a reaches 1", {0.0, 0.0}, 0.2, 10, 0.8, 0.25, true},
+        {"10 s, a never does", {0.9, 2.0}, 0.72, 10, 0.8, 0.25, false},
+        {"10 s, no injection", {0.9, 2.0}, 1.0, 10, 0.8, 0.25, false},
+    };
+    double worst = 0;
+    for (const Frame& f : frames) {
+        step06::FoamSettings s;
+        s.injection = 8;  // the q of each frame's comment: 8 (0.75 - J)
+        s.decay_rate = f.ra;
+        s.residual_decay = f.rb;
+        const TwoStages fine = integrate_two_stages(f.start, f.jacobian, f.dt, s, 20000);
+        const TwoStages stepped = step_two_stages(f.start, f.jacobian, f.dt, s);
+        // The frame is what it says: a reaches 1 inside it (and not at its very end), or never.
+        const TwoStages half = integrate_two_stages(f.start, f.jacobian, 0.5 * f.dt, s, 10000);
+        EXPECT_EQ(f.saturates, f.start.active < 1 && half.active == 1.0) << f.name;
+        const double error = std::abs(stepped.residual / fine.residual - 1);
+        worst = std::max(worst, error);
+        std::printf("%-34s b %.10f, RK4 %.10f (%.1e); a %.10f, RK4 %.10f\n", f.name, stepped.residual, fine.residual,
+                    error, stepped.active, fine.active);
+        EXPECT_GT(fine.residual, 0.01) << f.name << ": a relative error needs something to measure";
+        EXPECT_LT(error, 1e-6) << f.name;
+        EXPECT_NEAR(stepped.active / fine.active, 1.0, 1e-6) << f.name;
+    }
+    std::printf("residual_foam_step against RK4 at dt / 20000: worst relative error %.1e\n", worst);
+}
+
+// Both stages the same at 6 and at 60 frames a second. For a J that holds still each frame is
+// exact, so the two clocks agree to rounding: below the clamp, and where a reaches 1 part way
+// through a frame. The step that feeds b with the frame's starting a held through the frame
+// (b e^{-r_b dt} + r_a a dt M(r_b dt)) is computed to show that this test tells it apart. For a
+// crest passing a point every 8 s, each frame holds J for dt, and the mean foam differs by what
+// that costs. The mean is over the last two of four periods, once b (4 s) has settled: over the
+// first 16 s, which start from no foam and end on a crest, the half frame the 6 fps clock lags
+// counts at both ends (-2.5 % for b). Settled, b's mean is r_a / r_b times a's whatever lag its
+// source has, so this half cannot see the held source (-0.4 % too): the held J above does.
+TEST(Step06Foam, BothStagesAreTheSameAtSixAndSixtyFramesASecond) {
+    // The last frame's (a, b) and their means over the frames that end after `from` seconds.
+    auto run = [](const step06::FoamSettings& s, double fps, double seconds, auto jacobian_at, bool held_source,
+                  double from = 0) {
+        const double dt = 1 / fps;
+        TwoStages x{0, 0}, sum{0, 0};
+        int counted = 0;
+        for (int i = 0; i < int(std::lround(seconds * fps)); ++i) {
+            const double j = jacobian_at((i + 1) * dt);  // the sea is simulated to the frame's end first
+            if (held_source)
+                x = {step06::foam_step(x.active, j, dt, s),
+                     x.residual * std::exp(-s.residual_decay * dt) +
+                         s.decay_rate * x.active * dt * step06::mean_of_exp(s.residual_decay * dt)};
+            else
+                x = step_two_stages(x, j, dt, s);
+            if ((i + 1) * dt <= from + 1e-9) continue;
+            sum.active += x.active;
+            sum.residual += x.residual;
+            ++counted;
+        }
+        return std::pair{x, TwoStages{sum.active / counted, sum.residual / counted}};
+    };
+    step06::FoamSettings below_clamp;
+    below_clamp.injection = 2;  // 2 * 0.15 / 0.8 = 0.375 at J = 0.6
+    step06::FoamSettings saturating;
+    saturating.injection = 8;  // 8 * 0.55 = 4.4 at J = 0.2: a reaches 1 after 0.25 s
+    for (const auto& [s, j] : {std::pair{below_clamp, 0.6}, std::pair{saturating, 0.2}}) {
+        const auto still = [j = j](double) { return j; };
+        for (double seconds : {0.5, 1.0, 2.0, 10.0}) {
+            const TwoStages at6 = run(s, 6, seconds, still, false).first, at60 = run(s, 60, seconds, still, false).first;
+            EXPECT_NEAR(at6.active / at60.active, 1.0, 1e-12) << "J = " << j << ", after " << seconds << " s";
+            EXPECT_NEAR(at6.residual / at60.residual, 1.0, 1e-12) << "J = " << j << ", after " << seconds << " s";
+        }
+        const double held6 = run(s, 6, 1.0, still, true).first.residual, held60 = run(s, 60, 1.0, still, true).first.residual;
+        std::printf("J = %.1f, residual after 1 s: exact %.6f at 6 and 60 fps; the source held %.6f at 6, %.6f at 60 "
+                    "(%+.1f %%)\n",
+                    j, run(s, 6, 1.0, still, false).first.residual, held6, held60, 100 * (held6 / held60 - 1));
+        EXPECT_GT(std::abs(held6 / held60 - 1), 0.03) << "holding b's source depends on the frame rate";
+    }
+    auto passing_crest = [](double t) { return 1.0 - 0.5 * std::cos(2 * M_PI * t / 8); };
+    for (const step06::FoamSettings& s : {below_clamp, saturating}) {
+        const auto mean = [&](double fps, bool held_source) { return run(s, fps, 32, passing_crest, held_source, 16).second; };
+        const TwoStages mean6 = mean(6, false), mean60 = mean(60, false), held6 = mean(6, true), held60 = mean(60, true);
+        std::printf("a passing crest, injection %.0f, mean from 16 to 32 s: active %.5f at 6 fps, %.5f at 60 (%+.2f %%); "
+                    "residual %.5f, %.5f (%+.2f %%; its source held %+.2f %%)\n",
+                    s.injection, mean6.active, mean60.active, 100 * (mean6.active / mean60.active - 1), mean6.residual,
+                    mean60.residual, 100 * (mean6.residual / mean60.residual - 1),
+                    100 * (held6.residual / held60.residual - 1));
+        EXPECT_NEAR(mean6.active / mean60.active, 1.0, 0.01);
+        EXPECT_NEAR(mean6.residual / mean60.residual, 1.0, 0.01);
+    }
+}
+
+// Without injection (J above the threshold) nothing is made and the chain only empties: a decays as
+// a0 e^{-r_a t}, and b holds what it had plus what a passes on,
+//     b(t) = b0 e^{-r_b t} + r_a a0 (e^{-r_b t} - e^{-r_a t}) / (r_a - r_b)   (r_a a0 t e^{-r_a t} at r_b = r_a)
+// frame after frame at 60 fps, for r_b below, above and equal to r_a. And what the second stage is
+// for: one second of breaking, then 5 s of calm, with the defaults: the active foam is gone (under
+// 5 % of its peak), the residual is not (over 20 % of its own).
+TEST(Step06Foam, WithoutInjectionTheChainEmptiesAsItsClosedForm) {
+    const double a0 = 0.9, b0 = 0.4, dt = 1.0 / 60;
+    for (const double rb : {0.25, 2.0, 0.8}) {
+        step06::FoamSettings s;
+        s.residual_decay = rb;
+        const double ra = s.decay_rate;
+        TwoStages x{a0, b0};
+        double worst = 0;
+        for (int frame = 1; frame <= 600; ++frame) {
+            x = step_two_stages(x, 1.0, dt, s);
+            const double t = frame * dt;
+            const double a = a0 * std::exp(-ra * t);
+            const double b = b0 * std::exp(-rb * t) + (rb == ra ? ra * a0 * t * std::exp(-ra * t)
+                                                                 : ra * a0 * (std::exp(-rb * t) - std::exp(-ra * t)) / (ra - rb));
+            worst = std::max({worst, std::abs(x.active / a - 1), std::abs(x.residual / b - 1), std::abs((x.active + x.residual) / (a + b) - 1)});
+        }
+        std::printf("no injection, r_a %.2f, r_b %.2f: a, b and a + b over 10 s at 60 fps within %.1e of the closed form\n",
+                    ra, rb, worst);
+        EXPECT_LT(worst, 1e-12) << "r_b = " << rb;
+    }
+    const step06::FoamSettings s;
+    TwoStages x{0, 0}, peak{0, 0};
+    for (int i = 0; i < 60; ++i) {
+        const double j = i < 10 ? 0.2 : 1.0;  // 1 s of breaking, then 5 s of calm, at dt = 0.1 s
+        x = step_two_stages(x, j, 0.1, s);
+        peak = {std::max(peak.active, x.active), std::max(peak.residual, x.residual)};
+    }
+    std::printf("1 s of breaking then 5 s of calm: active foam %.4f (peak %.4f), residual %.4f (peak %.4f)\n", x.active,
+                peak.active, x.residual, peak.residual);
+    EXPECT_LT(x.active, 0.05 * peak.active);
+    EXPECT_GT(x.residual, 0.2 * peak.residual);
+}
+
+// The warm start of both stages (foam_steady_state, residual_steady_state) is where the steps
+// settle: stepping from it stays there at any frame time, and stepping from nothing for 60 s (15
+// residual decay times) gets there. With injection 8, below the clamp (J = 0.7: a = 0.5, b = 0.8 *
+// 0.5 / 0.25 = 1.6) and above it (J = 0: a = 1 from the first instant, b = r_a / r_b = 3.2).
+TEST(Step06Foam, ResidualSteadyStateIsWhereStepsSettle) {
+    step06::FoamSettings s;
+    s.injection = 8;
+    EXPECT_NEAR(step06::residual_steady_state(0.7, s), 1.6, 1e-12);
+    EXPECT_NEAR(step06::residual_steady_state(0.0, s), 3.2, 1e-12);
+    EXPECT_EQ(step06::residual_steady_state(0.8, s), 0.0);
+    for (const double j : {0.7, 0.0}) {
+        const TwoStages steady{step06::foam_steady_state(j, s), step06::residual_steady_state(j, s)};
+        for (const double dt : {1.0 / 240, 0.5}) {
+            const TwoStages next = step_two_stages(steady, j, dt, s);
+            EXPECT_NEAR(next.active / steady.active, 1.0, 1e-12) << "J = " << j << ", dt = " << dt;
+            EXPECT_NEAR(next.residual / steady.residual, 1.0, 1e-12) << "J = " << j << ", dt = " << dt;
+        }
+        TwoStages x{0, 0};
+        for (int i = 0; i < 240 * 60; ++i) x = step_two_stages(x, j, 1.0 / 240, s);
+        std::printf("J = %.1f: from nothing, after 60 s a = %.8f, b = %.8f; the warm start %.8f, %.8f\n", j, x.active,
+                    x.residual, steady.active, steady.residual);
+        EXPECT_NEAR(x.active / steady.active, 1.0, 1e-5) << "J = " << j;
+        EXPECT_NEAR(x.residual / steady.residual, 1.0, 1e-5) << "J = " << j;
+    }
 }
 
 // The bubble pattern tiles without a seam: the step across the tile's edge is no larger than the
@@ -258,33 +468,15 @@ TEST(Step06FoamPattern, DecayingFoamTurnsToLaceThenNothing) {
     EXPECT_LT(step06::foam_cover(0.2, 0.1), 0.1);  // ...the middles open
 }
 
-// Streaks as the Beaufort scale has them: no residual foam below force 7 (13.9 m/s), all of it from
-// force 9 (20.8 m/s); the residual foam is the whitecaps' exact step at its own slower decay, so it
-// outlasts them; it covers only where the stretched pattern makes a line, in proportion.
-TEST(Step06FoamPattern, StreaksFromBeaufortSevenOutlastTheWhitecaps) {
+// Streaks as the Beaufort scale has them: none below force 7 (13.9 m/s), some at force 8 (17.2
+// m/s), all of the residual foam drawn as streaks from force 9 (20.8 m/s). The residual foam
+// itself is made at every wind (foam.hpp; the tests above).
+TEST(Step06FoamPattern, StreaksFromBeaufortSeven) {
     EXPECT_EQ(step06::foam_streak_share(10.0), 0.0);
     EXPECT_EQ(step06::foam_streak_share(13.9), 0.0);
     EXPECT_GT(step06::foam_streak_share(17.2), 0.3);
     EXPECT_EQ(step06::foam_streak_share(20.8), 1.0);
     EXPECT_EQ(step06::foam_streak_share(30.0), 1.0);
-    const step06::FoamSettings s;
-    EXPECT_EQ(step06::residual_foam_step(0.0, 0.2, 0.1, s, 0.0), 0.0) << "no residual foam below force 7";
-    // One second of breaking (J = 0.2), then 5 s of calm: the whitecap is gone, the residual is not.
-    double whitecap = 0, residual = 0;
-    for (int i = 0; i < 10; ++i) {
-        whitecap = step06::foam_step(whitecap, 0.2, 0.1, s);
-        residual = step06::residual_foam_step(residual, 0.2, 0.1, s, 1.0);
-    }
-    const double residual_peak = residual;
-    for (int i = 0; i < 50; ++i) {
-        whitecap = step06::foam_step(whitecap, 1.0, 0.1, s);
-        residual = step06::residual_foam_step(residual, 1.0, 0.1, s, 1.0);
-    }
-    EXPECT_LT(whitecap, 0.05);
-    EXPECT_NEAR(residual, residual_peak * std::exp(-5 * s.streak_decay), 1e-12);
-    EXPECT_EQ(step06::streak_cover(1.0, 0.2), 0.0);  // between the lines: nothing
-    EXPECT_EQ(step06::streak_cover(0.6, 1.0), 0.6);  // on a line: the residual amount
-    EXPECT_EQ(step06::streak_cover(0.0, 1.0), 0.0);
 }
 
 // A storm looks higher than a breeze because it is: each shipped preset, loaded as the program
