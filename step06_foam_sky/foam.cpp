@@ -96,14 +96,11 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {
     const FoamPatternSettings settings;
-    // R: the bubble cells' borders; G: the smooth noise (foam_pattern.hpp), interleaved.
-    const std::vector<std::uint8_t> cells = to_r8(foam_pattern(settings)), noise = to_r8(foam_noise(settings));
-    std::vector<std::uint8_t> bytes(2 * cells.size());
-    for (std::size_t i = 0; i < cells.size(); ++i) bytes[2 * i] = cells[i], bytes[2 * i + 1] = noise[i];
+    const std::vector<std::uint8_t> texels = foam_pattern_texture(settings);  // r p, g noise, b p^2
     pattern_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(pattern_.id(), step05::mip_levels(settings.size), GL_RG8, settings.size, settings.size);
+    glTextureStorage2D(pattern_.id(), step05::mip_levels(settings.size), GL_RGBA8, settings.size, settings.size);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(pattern_.id(), 0, 0, 0, settings.size, settings.size, GL_RG, GL_UNSIGNED_BYTE, bytes.data());
+    glTextureSubImage2D(pattern_.id(), 0, 0, 0, settings.size, settings.size, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glGenerateTextureMipmap(pattern_.id());
     glTextureParameteri(pattern_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);

@@ -43,9 +43,9 @@ namespace step06 {
 struct FoamSettings {
     // J below which foam appears (the bias). One value for every sea: with it the whitecap
     // coverage follows the wind as observed (README, "How much foam"; tests/physics_check whitecaps).
-    double threshold = 0.72;
+    double threshold = 0.64;
     double injection = 16;    // active foam per second per unit of (threshold - J)
-    double decay_rate = 2;    // 1/s: r_a, the active whitecap stops breaking as exp(-r_a t)
+    double decay_rate = 1.6;  // 1/s: r_a, the active whitecap stops breaking as exp(-r_a t)
     double residual_decay = 0.1;  // 1/s: r_b, the foam as a whole (the residual it leaves) fades as exp(-r_b t)
 };
 

@@ -82,4 +82,14 @@ std::vector<std::uint8_t> to_r8(const std::vector<float>& pattern) {
     return bytes;
 }
 
+std::vector<std::uint8_t> foam_pattern_texture(const FoamPatternSettings& settings) {
+    const std::vector<float> cells = foam_pattern(settings), noise = foam_noise(settings);
+    std::vector<float> squares(cells.size());
+    for (std::size_t i = 0; i < cells.size(); ++i) squares[i] = cells[i] * cells[i];
+    const std::vector<std::uint8_t> r = to_r8(cells), g = to_r8(noise), b = to_r8(squares);
+    std::vector<std::uint8_t> rgba(4 * cells.size());
+    for (std::size_t i = 0; i < cells.size(); ++i) rgba[4 * i] = r[i], rgba[4 * i + 1] = g[i], rgba[4 * i + 2] = b[i], rgba[4 * i + 3] = 255;
+    return rgba;
+}
+
 }  // namespace step06

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -31,8 +32,11 @@ std::vector<float> foam_pattern(const FoamPatternSettings& settings);
 // on a noise_cells lattice, joined by smoothstep-weighted bilinear interpolation) plus an octave at
 // twice the frequency and half the weight, rescaled to [0, 1].
 std::vector<float> foam_noise(const FoamPatternSettings& settings);
-// The pattern as the GPU stores it: one byte a texel (R8, read back as byte / 255).
+// The pattern as the GPU stores it: one byte a texel (read back as byte / 255).
 std::vector<std::uint8_t> to_r8(const std::vector<float>& pattern);
+// The texture FoamSimulation uploads, RGBA8: r the cells' pattern p, g the smooth noise, b p^2
+// (filtered, E[p^2] - E[p]^2 is the pattern's variance over a footprint), a unused (255).
+std::vector<std::uint8_t> foam_pattern_texture(const FoamPatternSettings& settings);
 
 // How a foam amount covers the water, in the two stages (foam.hpp). Foam is a raft of bubbles;
 // where there is less of it, holes open where the bubbles burst first: the cells' middles (low
@@ -43,6 +47,27 @@ std::vector<std::uint8_t> to_r8(const std::vector<float>& pattern);
 inline double net_cover(double amount, double pattern, double holes) {
     return std::clamp((amount - (1.0 - pattern) * holes) / (1.0 - holes), 0.0, 1.0);
 }
+// What a pixel sees is the mean cover over its footprint, not the cover of the pattern's mean
+// there: far away, or at a grazing angle, the texture filter averages the pattern towards its mean,
+// and net_cover of that mean can be 0 (a thin lace vanishes) where the true mean is not. So the
+// texture also keeps p^2, whose filtered value gives the pattern's variance over the footprint,
+// and the cover is averaged over a pattern spread uniformly with that mean and variance (half
+// width sqrt(3) sigma). net_cover is clamp(alpha + beta p), whose mean over p in [p0, p1] is a
+// difference of clamp's integral G; at sigma = 0 it is net_cover. cascades_visible.glsl's
+// mean_clamp is the same.
+inline double clamp_integral(double x) { return x <= 0 ? 0.0 : (x < 1 ? 0.5 * x * x : x - 0.5); }
+// The mean of clamp(alpha + beta p, 0, 1) over p uniform in [mean - sqrt(3) sigma, mean + sqrt(3) sigma].
+inline double mean_clamp(double alpha, double beta, double mean, double variance) {
+    const double half = std::sqrt(3.0 * std::max(variance, 0.0)) * std::abs(beta);
+    const double centre = alpha + beta * mean;
+    if (half < 1e-4) return std::clamp(centre, 0.0, 1.0);
+    return (clamp_integral(centre + half) - clamp_integral(centre - half)) / (2 * half);
+}
+// net_cover averaged over a footprint where the pattern has this mean and variance.
+inline double filtered_net_cover(double amount, double mean, double variance, double holes) {
+    return mean_clamp((amount - holes) / (1.0 - holes), holes / (1.0 - holes), mean, variance);
+}
+
 // The active whitecap: dense and turbulent, a few holes at its fringe. The residual foam: a lace
 // of bubble borders that thins as it fades. It is thin foam: its amount (0 to 1) is scaled by
 // kResidualThickness times a smooth noise's (0.25 + 1.25 n), so it tears unevenly, and held below
@@ -51,8 +76,11 @@ inline double net_cover(double amount, double pattern, double holes) {
 constexpr double kActiveHoles = 0.3, kResidualHoles = 0.75;
 constexpr double kResidualThickness = 0.9, kResidualMost = 0.65;
 inline double active_cover(double amount, double pattern) { return net_cover(amount, pattern, kActiveHoles); }
+inline double residual_thickness(double amount, double noise) {
+    return std::min(kResidualThickness * (0.25 + 1.25 * noise) * amount, kResidualMost);
+}
 inline double residual_cover(double amount, double pattern, double noise) {
-    return net_cover(std::min(kResidualThickness * (0.25 + 1.25 * noise) * amount, kResidualMost), pattern, kResidualHoles);
+    return net_cover(residual_thickness(amount, noise), pattern, kResidualHoles);
 }
 // Residual foam is thinner and greyer than a breaking crest: Koepke (1984) found the effective
 // reflectance of whitecaps 22 %, less than half the 50-55 % of fresh foam, because most of a
@@ -65,9 +93,10 @@ constexpr double kResidualAlbedo = 0.5;
 // wind from: force 7 (from 13.9 m/s) "foam from breaking waves begins to be blown in streaks along
 // the direction of the wind", force 8 (17.2) "well-marked streaks", force 9 (20.8) "dense streaks".
 // The wind combs the residual foam into lines (windrows, drawn by Langmuir circulation): from force
-// 7 it is drawn as streaks over the lace, the streaks' strength foam_streak_share(U), which is 0
-// below force 7 and 1 from force 9. A streak is foam gathered into a line, denser than the lace it
-// came from: it takes twice the residual amount (at most 1).
+// 7 it is drawn as streaks over the lace, the streaks' strength s = foam_streak_share(U), which is
+// 0 below force 7 and 1 from force 9. A streak is foam gathered into a line, denser than the lace it
+// came from: it takes three times the residual amount (at most 1), and the lace keeps 1 - 0.7 s of
+// its cover (the wind took the rest into the lines).
 constexpr double kStreaksFrom = 13.9, kDenseStreaksFrom = 20.8;  // m/s
 inline double foam_streak_share(double wind_speed) {
     return std::clamp((wind_speed - kStreaksFrom) / (kDenseStreaksFrom - kStreaksFrom), 0.0, 1.0);
@@ -82,20 +111,22 @@ inline double foam_streak_share(double wind_speed) {
 //     line wanders, and its neighbours a few metres away wander otherwise;
 //   - its breaks: the smooth noise read over tiles kBreakLength by kBreakWidth metres: where it is
 //     low the line stops, so lines have ends, segments of a few to a few tens of metres.
-constexpr double kStreakLength = 40, kStreakSpacing = 3;  // the pattern's stretch along and across the wind
-constexpr double kStreakMeander = 1.2, kMeanderLength = 80, kMeanderWidth = 24;  // metres
+constexpr double kStreakLength = 40, kStreakSpacing = 2;  // the pattern's stretch along and across the wind
+constexpr double kStreakMeander = 0.6, kMeanderLength = 160, kMeanderWidth = 24;  // metres
 constexpr double kBreakLength = 100, kBreakWidth = 8;  // metres per tile (4 noise cells: 25 m by 2 m)
 constexpr double kStreakLineFrom = 0.35, kStreakLineTo = 0.75;  // the pattern's values that make a line
 constexpr double kBreakFrom = 0.45, kBreakTo = 0.6;             // the noise's values where a line resumes
-// How much of a texel a streak covers: the residual amount (at most 1) where the line is and the
-// line is not broken.
+// How much of a texel a streak covers: the residual amount (at most 1) where the line is (a linear
+// ramp of the line's pattern, so it can be averaged over a footprint as net_cover is) and the line
+// is not broken (smoothstep of the noise, which is smooth already).
+inline double filtered_streak_cover(double residual, double line_mean, double line_variance, double unbroken) {
+    const double width = kStreakLineTo - kStreakLineFrom;
+    const double t = std::clamp((unbroken - kBreakFrom) / (kBreakTo - kBreakFrom), 0.0, 1.0);
+    return std::clamp(residual, 0.0, 1.0) * mean_clamp(-kStreakLineFrom / width, 1.0 / width, line_mean, line_variance) *
+           t * t * (3 - 2 * t);
+}
 inline double streak_cover(double residual, double line, double unbroken) {
-    const auto smooth = [](double from, double to, double x) {
-        const double t = std::clamp((x - from) / (to - from), 0.0, 1.0);
-        return t * t * (3 - 2 * t);
-    };
-    return std::clamp(residual, 0.0, 1.0) * smooth(kStreakLineFrom, kStreakLineTo, line) *
-           smooth(kBreakFrom, kBreakTo, unbroken);
+    return filtered_streak_cover(residual, line, 0.0, unbroken);
 }
 
 }  // namespace step06

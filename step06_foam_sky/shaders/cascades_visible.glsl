@@ -179,7 +179,7 @@ vec2 foam_at(vec2 p, float long_side) {
     return foam;
 }
 
-// foam_pattern.hpp: r 1 on the borders of bubble cells; g a smooth noise
+// foam_pattern.hpp: r 1 on the borders of bubble cells; g a smooth noise; b r^2
 layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;
 uniform float u_foam_pattern_size;  // metres one tile of it covers
 // World (x, z) to the pattern's coordinates for the streaks: stretched along the wind.
@@ -199,16 +199,41 @@ const float ACTIVE_HOLES = 0.3, RESIDUAL_HOLES = 0.75, RESIDUAL_THICKNESS = 0.9,
 float net_cover(float amount, float pattern, float holes) {
     return clamp((amount - (1.0 - pattern) * holes) / (1.0 - holes), 0.0, 1.0);
 }
+float residual_thickness(float amount, float noise) {
+    return min(RESIDUAL_THICKNESS * (0.25 + 1.25 * noise) * amount, RESIDUAL_MOST);
+}
 float residual_cover(float amount, float pattern, float noise) {
-    return net_cover(min(RESIDUAL_THICKNESS * (0.25 + 1.25 * noise) * amount, RESIDUAL_MOST), pattern, RESIDUAL_HOLES);
+    return net_cover(residual_thickness(amount, noise), pattern, RESIDUAL_HOLES);
 }
 
-// foam_pattern.hpp's streak_cover: the residual foam where the line is and is not broken.
+// foam_pattern.hpp's mean_clamp and filtered_net_cover: the mean cover over a pixel's footprint,
+// from the pattern's mean and variance there (the filtered r and b), so a lace far away is as
+// bright on average as near (net_cover of the filtered mean would close or erase it).
+float clamp_integral(float x) { return x <= 0.0 ? 0.0 : (x < 1.0 ? 0.5 * x * x : x - 0.5); }
+float mean_clamp(float alpha, float beta, float mean, float variance) {
+    float half_width = sqrt(3.0 * max(variance, 0.0)) * abs(beta);
+    float centre = alpha + beta * mean;
+    if (half_width < 1e-4) return clamp(centre, 0.0, 1.0);
+    return (clamp_integral(centre + half_width) - clamp_integral(centre - half_width)) / (2.0 * half_width);
+}
+float filtered_net_cover(float amount, vec2 pattern, float holes) {  // pattern: (mean, variance)
+    return mean_clamp((amount - holes) / (1.0 - holes), holes / (1.0 - holes), pattern.x, pattern.y);
+}
+// A fetch of the pattern as (mean, variance) over the footprint. The bytes' rounding leaves up to
+// about 2/255 of false variance where the footprint is a texel: taken off.
+vec2 pattern_statistics(vec4 texel) { return vec2(texel.r, max(texel.b - texel.r * texel.r - 2.0 / 255.0, 0.0)); }
+// Two patterns mixed with weights w and 1 - w (independent: the variances add, squared weights).
+vec2 mix_statistics(vec2 a, vec2 b, float w) { return vec2(w * a.x + (1.0 - w) * b.x, w * w * a.y + (1.0 - w) * (1.0 - w) * b.y); }
+
+// foam_pattern.hpp's streak_cover: the residual foam where the line is and is not broken; and
+// filtered, the line's ramp averaged over the footprint as the lace's is.
 const float STREAK_LINE_FROM = 0.35, STREAK_LINE_TO = 0.75, BREAK_FROM = 0.45, BREAK_TO = 0.6;
-float streak_cover(float residual, float line, float unbroken) {
-    return clamp(residual, 0.0, 1.0) * smoothstep(STREAK_LINE_FROM, STREAK_LINE_TO, line) *
+float filtered_streak_cover(float residual, vec2 line, float unbroken) {  // line: (mean, variance)
+    float width = STREAK_LINE_TO - STREAK_LINE_FROM;
+    return clamp(residual, 0.0, 1.0) * mean_clamp(-STREAK_LINE_FROM / width, 1.0 / width, line.x, line.y) *
            smoothstep(BREAK_FROM, BREAK_TO, unbroken);
 }
+float streak_cover(float residual, float line, float unbroken) { return filtered_streak_cover(residual, vec2(line, 0.0), unbroken); }
 
 // How much of the pixel each stage of foam covers, and the active foam's brightness there: a
 // breaking crest is churned, bubbles and troughs of foam, not a flat sheet.
@@ -229,27 +254,25 @@ FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     // with it.
     if (amounts.x < 0.002 && amounts.y < 0.002) return FoamCover(0.0, 0.0, 1.0);
     vec2 uv = p / u_foam_pattern_size, uv_dx = f.dx / u_foam_pattern_size, uv_dy = f.dy / u_foam_pattern_size;
-    float coarse = textureGrad(u_foam_pattern, uv, uv_dx, uv_dy).r;
-    float fine = textureGrad(u_foam_pattern, uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71).r;
-    float active_cover = net_cover(amounts.x, 0.6 * coarse + 0.4 * fine, ACTIVE_HOLES);
+    vec2 coarse = pattern_statistics(textureGrad(u_foam_pattern, uv, uv_dx, uv_dy));
+    vec2 fine = pattern_statistics(textureGrad(u_foam_pattern, uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71));
+    float active_cover = filtered_net_cover(amounts.x, mix_statistics(coarse, fine, 0.6), ACTIVE_HOLES);
     // The residual's lace: both scales of cells, so its holes come in many sizes, on a sea that
     // has stretched and sheared it (the cells read through a warp of a metre, the smooth noise over
-    // 30 m tiles, so no honeycomb shows). It is thin foam: even where most of it is left (b near
-    // 1) the water shows through its holes (RESIDUAL_THICKNESS, never more than RESIDUAL_MOST
-    // of fresh foam's cover), and they open as it fades,
-    // unevenly: the same noise makes it denser in some places than in others, as a raft of foam
-    // tears.
+    // 30 m tiles, so no honeycomb shows). It is thin foam (residual_thickness): the water shows
+    // through its holes, and they open as it fades, unevenly: the same noise makes it denser in
+    // some places than in others, as a raft of foam tears.
     vec2 noise_uv = uv * 0.3 + 0.21;
     vec2 warp = vec2(textureGrad(u_foam_pattern, noise_uv, uv_dx * 0.3, uv_dy * 0.3).g,
                      textureGrad(u_foam_pattern, noise_uv.yx + 0.5, uv_dx.yx * 0.3, uv_dy.yx * 0.3).g);
     vec2 lace_uv = uv + 0.12 * (warp - 0.5);
-    float lace = 0.55 * textureGrad(u_foam_pattern, lace_uv, uv_dx, uv_dy).r +
-                 0.45 * textureGrad(u_foam_pattern, lace_uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71).r;
-    float residual = residual_cover(amounts.y, lace, warp.x);
+    vec2 lace = mix_statistics(pattern_statistics(textureGrad(u_foam_pattern, lace_uv, uv_dx, uv_dy)),
+                               pattern_statistics(textureGrad(u_foam_pattern, lace_uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71)), 0.55);
+    float residual = filtered_net_cover(residual_thickness(amounts.y, warp.x), lace, RESIDUAL_HOLES);
 #if STREAKS
     // The streaks: the line's pattern stretched along the wind, its across coordinate shifted by
     // the meander (the smooth noise), cut where the smooth noise is low. (Rows of each matrix:
-    // along, across.)
+    // along, across.) The line's ramp is averaged over the footprint as the lace's is.
     mat2 to_meander = transpose(mat2(u_meander_along, u_meander_across));
     mat2 to_breaks = transpose(mat2(u_break_along, u_break_across));
     mat2 to_lines = transpose(mat2(u_streak_along, u_streak_across));
@@ -257,8 +280,10 @@ FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     float unbroken = textureGrad(u_foam_pattern, to_breaks * p, to_breaks * f.dx, to_breaks * f.dy).g;
     vec2 across = normalize(u_streak_across);  // the meander moves the point across the wind
     vec2 q = p + across * (u_streak_meander * (2.0 * wander - 1.0));
-    float line = textureGrad(u_foam_pattern, to_lines * q, to_lines * f.dx, to_lines * f.dy).r;
-    residual = max(residual, u_streak_share * streak_cover(2.0 * amounts.y, line, unbroken));  // denser than the lace
+    vec2 line = pattern_statistics(textureGrad(u_foam_pattern, to_lines * q, to_lines * f.dx, to_lines * f.dy));
+    // Three times the residual amount: a streak is foam gathered into a line, denser than the lace,
+    // which loses what the wind gathered (foam_pattern.hpp).
+    residual = max(residual * (1.0 - 0.7 * u_streak_share), u_streak_share * filtered_streak_cover(3.0 * amounts.y, line, unbroken));
 #endif
-    return FoamCover(active_cover, residual, 0.8 + 0.2 * fine);
+    return FoamCover(active_cover, residual, 0.8 + 0.2 * fine.x);
 }

@@ -32,8 +32,14 @@ void main() {
     ivec2 cell = origin + ((id.xy - origin) & (u_n - 1));
     vec2 p = (vec2(cell) + 0.5) * u_texel_size[level];
 
+    // Every level reads the surface as finely as the finest level does, at its texel's centre: the
+    // same field, sampled more sparsely farther out. Read at its own texel's size, a coarse level
+    // would see the folds smoothed away and make less foam (a 1 m texel made a third of the foam a
+    // 0.25 m one did): the sea seen from the deck, through the finer level, would carry more foam
+    // than the same sea from above, through the coarser one. Sparse samples are not smooth, but they
+    // are unbiased, and they sit still in the world (the windows move by whole texels).
     vec4 displacement, slopes;
-    surface_at(p, u_texel_size[level], displacement, slopes);
+    surface_at(p, u_texel_size[0], displacement, slopes);
     float j = jacobian(displacement, slopes);
 
     // A cell that has just entered the window holds another cell's foam: start it afresh.

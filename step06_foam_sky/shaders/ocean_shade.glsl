@@ -60,8 +60,10 @@ vec4 shade_sea_pixel(ivec2 pixel) {
     // covers in all: the residual shows where the active foam leaves room.
     FoamCover cover = u_show_foam ? foam_cover(rest_xz, footprint) : FoamCover(0.0, 0.0, 1.0);
     float foam = cover.whitecap + cover.residual * (1.0 - cover.whitecap);
-    // The light foam sends back, per unit of fresh foam's: the breaking core's turbulence varies
-    // it a little, the residual is greyer (foam_pattern.hpp's kResidualAlbedo).
+    // How much of the light reaching the pixel its foam sends back, per unit of fresh foam's: the
+    // breaking core's turbulence varies it a little, the residual is thinner (foam_pattern.hpp's
+    // kResidualAlbedo). Bubbles scatter, they hardly absorb: what foam does not send back passes
+    // through, so the water's own light shows through it in that measure.
     float foam_albedo = cover.whitecap * cover.turbulence + RESIDUAL_ALBEDO * cover.residual * (1.0 - cover.whitecap);
 
 #if DEBUG_VIEW == 1
@@ -116,7 +118,7 @@ vec4 shade_sea_pixel(ivec2 pixel) {
         float sun_on_layer = 0.5 * max(dot(n, u_to_sun), 0.0) + 0.5 * max(u_to_sun.y, 0.0);
         float through = FOAM_FORWARD * henyey_greenstein(dot(-v, u_to_sun), FOAM_FORWARD_G);
         vec3 foam_light = u_foam_colour * (sky_irradiance_over_pi + u_sun_radiance * (sun_on_layer / PI + through));
-        colour = water * (1.0 - foam) + foam_light * foam_albedo;
+        colour = water * (1.0 - foam_albedo) + foam_light * foam_albedo;
     }
     if (u_show_fog) colour = apply_fog(colour, u_eye, surface_point, horizon_colour(-v));
     return vec4(colour, 1.0);

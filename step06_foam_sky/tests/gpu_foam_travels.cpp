@@ -76,7 +76,7 @@ TEST_F(FoamOnOneWave, FoamIsDrawnWhereItsWaterParticleIs) {
                                       glm::lookAt(centre + glm::vec3(0, 100, 0), centre, glm::vec3(0, 0, -1));
     // The tessellation: 16 m patches cut 64 times (0.25 m), the finest GL allows: the eye the
     // levels are computed from is set close, so every patch in view gets it, and the footprint
-    // (twice the spacing, distance / 1000: under 0.1 m) reads the maps at mip level 0, as near a camera.
+    // (twice the spacing of distance / 1000: under 0.15 m) reads the maps at mip level 0.
     step06::PatchGrid grid;
     grid.build(8, 16);
     mesh->set("u_view_projection", view_projection);
