@@ -51,7 +51,7 @@ struct FoamSettings {
 
 // A new foam texel starts where injection and decay would balance for the current J, so the
 // first frame already has foam on the crests (a fixed clock, dt = 0, would otherwise never grow
-// any). The decay rate is floored at 0.1/s so that a texel without decay does not start at 1.
+// any). The decay rate is floored at 0.1/s so that a texel without decay does not divide by zero.
 inline double foam_steady_state(double jacobian, const FoamSettings& s) {
     return std::clamp(s.injection * std::max(0.0, s.threshold - jacobian) / std::max(s.decay_rate, 0.1), 0.0, 1.0);
 }
@@ -114,7 +114,7 @@ public:
                 glm::dvec2 forward_xz, double dt, const FoamSettings& settings);
     // The windows and the texture, for the renderer (foam_map.glsl's uniforms) and --export.
     void bind(const ocean::ShaderProgram& program, int unit) const;
-    // The bubble pattern (u_foam_pattern, R8, mipmapped, repeating), the metres one tile of it
+    // The bubble pattern (u_foam_pattern, RGBA8: the cells, a smooth noise, the cells squared; mipmapped, repeating), the metres one tile of it
     // covers (u_foam_pattern_size), and the streaks' frame (u_streak_along, _across: world x, z to
     // the pattern's coordinates, stretched along the wind).
     void bind_pattern(const ocean::ShaderProgram& program, int unit) const;

@@ -105,7 +105,7 @@ inline double foam_streak_share(double wind_speed) {
 // A streak is a filament: narrow across the wind, meandering, broken along it. The renderer reads
 // the pattern texture three times in a frame that follows the wind:
 //   - the line: the bubble cells stretched kStreakLength times along the wind and kStreakSpacing
-//     times across (cells 2.7 m wide and 36 m long: their borders are lines a few tens of cm wide);
+//     times across (cells 1.8 m wide and 36 m long: their borders are lines a few tens of cm wide);
 //   - its meander: the point moved across the wind by up to kStreakMeander metres by the smooth
 //     noise read over tiles kMeanderLength metres along the wind and kMeanderWidth across, so each
 //     line wanders, and its neighbours a few metres away wander otherwise;

@@ -47,7 +47,7 @@ public:
     // For the shading: the maps, the foam and its bubble pattern, and what each pixel cannot
     // resolve (the slope variance per mip level, and the waves shorter than the last cascade).
     void bind_for_shading(const ocean::ShaderProgram& p) const;
-    bool has_streaks() const { return foam_->streaks(); }  // residual foam to read (Beaufort 7 and up)
+    bool has_streaks() const { return foam_->streaks(); }  // the residual combed into streaks (Beaufort 7 and up)
 
     const CascadeView& cascades() const { return cascade_view_; }
     glm::dvec3 world_origin() const { return {cascade_view_.origin.x, 0.0, cascade_view_.origin.y}; }

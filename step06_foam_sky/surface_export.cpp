@@ -40,7 +40,8 @@ void export_surface(const std::string& dir, ocean::ProgramFactory& programs, con
                           {"export.spacing", ocean::format_number(window.texel_size)},
                           {"export.short_wave_slope_variance_upwind", ocean::format_number(short_waves.upwind)},
                           {"export.short_wave_slope_variance_crosswind", ocean::format_number(short_waves.crosswind)}},
-                         {{"foam.pfm", "foam, 0..1 (before the renderer's smoothstep)", foam.read_level(kExportedFoamLevel)}});
+                         {{"foam.pfm", "the active foam a, 0..1 (before the renderer's cover)", foam.read_level(kExportedFoamLevel)},
+                          {"foam_whole.pfm", "the foam as a whole f, 0..1 (the residual is f - a)", foam.read_whole(kExportedFoamLevel)}});
 }
 
 }  // namespace step06

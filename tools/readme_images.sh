@@ -34,6 +34,20 @@ for preset in calm breezy stormy crossing; do
   run step06_foam_sky "$preset.png" --preset "$root/step06_foam_sky/presets/$preset.preset"
 done
 run step06_foam_sky foam.png --set view=foam --camera overview
+
+# The foam from 40 m straight down at Beaufort 5 and 8 after 10 s of foam (the census's clock,
+# tests/whitecaps.sh): whitecaps and their lace, then streaks.
+beaufort_scratch=$(mktemp -d)
+for wind in 10 20; do
+  "$build/step06_foam_sky/step06_foam_sky" --headless --size 400x400 --frames 41 --time 0 --dt 0.25 \
+    --set camera_pitch=89 --set camera_distance=40 --set camera_target_y=0 --set camera_fov=80 \
+    --set "wind_speed=$wind" --screenshot "$beaufort_scratch/$wind.png" > /dev/null
+done
+"$build/tools/image_panel" "$root/step06_foam_sky/streaks_beaufort.png" 400x400 2 \
+  "10 m/s (Beaufort 5): whitecaps and their lace|$beaufort_scratch/10.png" \
+  "20 m/s (Beaufort 8): streaks along the wind|$beaufort_scratch/20.png"
+rm -rf "$beaufort_scratch"
+echo step06_foam_sky/streaks_beaufort.png
 run step06_foam_sky tessellation.png --set wireframe=true --camera overview
 
 # The combed streaks and what removed them: the same mid-distance strip (no bloom) filtered four

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # whitecap_figure.sh BUILD_DIR OUT_DIR: docs/figures/whitecaps.png, step06's whitecap coverage
 # against the wind as a camera records it (step06_foam_sky/tests/whitecaps.sh's pictures from
-# 150 m, read by tests/picture_check) and on the foam map (foam > 0.3, tests/physics_check), beside
-# Monahan and O'Muircheartaigh's and Callaghan et al.'s laws. About two minutes on llvmpipe.
+# 150 m, read by tests/picture_check) and on the active foam map (foam > 0.3, tests/physics_check),
+# beside Monahan and O'Muircheartaigh's and Callaghan et al.'s laws; and the picture's active
+# whitecaps (stage A) beside Monahan and Lu's share of them. About five minutes on llvmpipe.
 set -eu
 build=$(cd "$1" && pwd) out=$2
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -11,11 +12,12 @@ mkdir -p "$work" "$out"
 winds="4 6 8 10 12 14 16 18 20 22 24"
 bash "$root/step06_foam_sky/tests/whitecaps.sh" "$build/step06_foam_sky/step06_foam_sky" "$build/tests/picture_check" \
   "$work" $winds > "$work/picture.txt" || true  # the laws' limits do not hold at every wind: the figure shows them all
-echo "# U10  picture %  foam map %" > "$work/whitecaps.dat"
+echo "# U10  picture %  foam map %  active (stage A) in the picture %" > "$work/whitecaps.dat"
 for wind in $winds; do
   picture=$(sed -n "s|.*150m_wind_$wind: U = *[0-9.]* m/s, whitecaps cover *\([0-9.]*\) %.*|\1|p" "$work/picture.txt")
   map=$("$build/tests/physics_check" whitecaps "$work/150m_wind_$wind" | sed -n 's|.*whitecaps *\([0-9.]*\) % of the sea.*|\1|p' || true)
-  echo "$wind ${picture:-nan} ${map:-nan}" >> "$work/whitecaps.dat"
+  active=$(sed -n "s|.*150m_wind_$wind: U = *[0-9.]* m/s, whitecaps W .*active W_A *\([0-9.]*\) %.*|\1|p" "$work/picture.txt")
+  echo "$wind ${picture:-nan} ${map:-nan} ${active:-nan}" >> "$work/whitecaps.dat"
 done
 cat > "$work/whitecaps.gp" <<'GP'
 set terminal pngcairo size 900,560 font "DejaVu Sans,11"
@@ -32,8 +34,10 @@ callaghan(u) = u <= 3.7 ? 1/0 : (u <= 11.25 ? 100 * 3.18e-5 * (u - 3.7)**3 : 100
 set samples 200
 plot monahan(x) with lines lw 3 lc rgb '#888888' title "Monahan and O'Muircheartaigh (1980)", \
      callaghan(x) with lines lw 3 lc rgb '#d9822b' dt 2 title "Callaghan et al. (2008)", \
-     'whitecaps.dat' using 1:($2 > 0 ? $2 : 1/0) with linespoints lw 2 pt 7 lc rgb 'black' title "step06, the picture from 150 m (white: more than halfway to full foam)", \
-     '' using 1:($3 > 0 ? $3 : 1/0) with points pt 6 ps 1.5 lc rgb '#1f5fa8' title "step06, the foam map (amount > 0.3)"
+     'whitecaps.dat' using 1:($2 > 0 ? $2 : 1/0) with linespoints lw 2 pt 7 lc rgb 'black' title "step06, the picture from 150 m (whitecap: more than a quarter of the way to full foam)", \
+     '' using 1:($3 > 0 ? $3 : 1/0) with points pt 6 ps 1.5 lc rgb '#1f5fa8' title "step06, the active foam map (amount > 0.3)", \
+     '' using 1:($4 > 0 ? $4 : 1/0) with linespoints lw 2 pt 5 lc rgb '#2a9d5c' title "step06, active whitecaps in the picture (stage A: more than 0.6 of the way)", \
+     monahan(x) / 10.7 with lines lw 2 lc rgb '#2a9d5c' dt 3 title "Monahan and Lu's stage A (W / 10.7)"
 GP
 (cd "$work" && gnuplot whitecaps.gp)
 cp "$work/whitecaps.png" "$out/whitecaps.png"

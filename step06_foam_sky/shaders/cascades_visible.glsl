@@ -243,7 +243,7 @@ struct FoamCover {
 };
 // The simulated amounts laid out by the pattern in world space, where the foam is: the active
 // foam on the pattern read at two scales (so the cells are not all one size and the tile does not
-// show), the residual on the coarser one as lace, or, from Beaufort 7, partly as streaks.
+// show), the residual as lace on both, and from Beaufort 7 also as streaks.
 FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     float long_side = max(length(f.dx), length(f.dy));
     vec2 amounts = foam_at(p, long_side);    // (active foam, foam as a whole)

@@ -6,6 +6,6 @@
 // is texel c mod N), so the foam already made stays where it is in the world when the camera moves.
 #include "step06_foam_sky/texture_units.h"
 const int FOAM_LEVELS = 3;
-layout(binding = UNIT_FOAM) uniform sampler2DArray u_foam;  // a layer per level: (whitecaps, residual foam)
+layout(binding = UNIT_FOAM) uniform sampler2DArray u_foam;  // a layer per level: (active foam, foam as a whole)
 uniform vec2 u_foam_centre[FOAM_LEVELS];    // metres: the middle of each window
 uniform float u_foam_extent[FOAM_LEVELS];   // metres: the side of each window
