@@ -524,13 +524,18 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     std::printf("the cover functions on the uploaded pattern: worst |GPU - CPU| %.2g (limit 1e-5)\n", worst_overall);
 }
 
-// The filtered cover functions in the renderer (foam_cover.frag's 3 and 4: filtered_net_cover and
-// filtered_streak_cover, the breaks' factor 1) on mip levels 0, 2 and 4 of the pattern texture, a
-// pixel a texel of the level, through pattern_statistics. Against the CPU given, for each texel,
-// (1) the level's own bytes, read back (only float arithmetic differs: limit 1e-4), and (2) the
-// mean of the 2^L x 2^L level-0 bytes it averages, r and b as the uploaded bytes / 255 with the
-// same 2/255 off the variance (what the level should hold). glGenerateTextureMipmap rounds each
-// level to 8 bits, which moves a texel's mean and mean square by up to 1/255 and costs up to ...
+// The filtered cover functions in the renderer (foam_cover.frag's 3 and 4: filtered_net_cover, and
+// filtered_streak_cover with the breaks' factor 1) on mip levels 0, 2 and 4 of the pattern texture,
+// a pixel a texel of the level, through pattern_statistics. The CPU is given each texel's r and b
+// two ways, with the same 2/255 off the variance:
+//   - the level's own bytes, read back: only float arithmetic differs (limit 1e-4);
+//   - the mean of the 2^L x 2^L uploaded bytes it averages, what the level should hold. But
+//     glGenerateTextureMipmap makes each level from the one above and rounds it to 8 bits: up to L
+//     bytes off (llvmpipe: 1.9 at level 2, 2.9 at level 4, about +0.5 a level on average). Where a
+//     block is nearly flat the cover is steep in the variance (the spread's width is its square
+//     root), so a byte of b can move a texel's cover by 0.05 (levels rounded to the nearest byte;
+//     printed) and llvmpipe's levels move it by up to 0.095: the limit is 0.15 a texel, and 0.02
+//     for the mean over the level (llvmpipe's bias upwards: 0.014 at level 4).
 TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
     step06::FoamSimulation foam(factory());
     ocean::ShaderProgram* program =
@@ -540,11 +545,10 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
     const int n = settings.size;
     const std::vector<std::uint8_t> uploaded = step06::foam_pattern_texture(settings);
     foam.bind_pattern(*program, 0);
-    GLint texture = 0;
+    GLint texture = 0;  // FoamSimulation's pattern texture, to read its levels back
     glActiveTexture(GL_TEXTURE0);
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
-    // The pattern's mean and variance from a texel's r and b (bytes, or means of bytes), as
-    // pattern_statistics takes them.
+    // pattern_statistics on the CPU: the mean and variance from r and b in bytes (or means of bytes).
     const auto statistics = [](double r, double b) {
         const double mean = r / 255.0;
         return std::pair{mean, std::max(b / 255.0 - mean * mean - 2.0 / 255.0, 0.0)};
@@ -554,9 +558,9 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
         float holes, amount;
     };
     const float active = float(step06::kActiveHoles), residual = float(step06::kResidualHoles);
-    const Case cases[] = {{3, active, 0.3f},   {3, active, 0.65f}, {3, residual, 0.2f},
+    const Case cases[] = {{3, active, 0.3f},   {3, active, 0.65f},   {3, residual, 0.2f},
                           {3, residual, 0.4f}, {3, residual, 0.65f}, {4, 0, 0.8f}};
-    double worst_own = 0, worst_box = 0;
+    double worst_own = 0, worst_box = 0, worst_mean = 0;
     for (const int level : {0, 2, 4}) {
         const int m = n >> level, box = 1 << level;
         std::vector<std::uint8_t> own(std::size_t(4 * m * m));
@@ -564,8 +568,10 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
         if (level == 0) {
             ASSERT_EQ(own, uploaded) << "level 0 is foam_pattern_texture";
         }
-        // Each texel's r and b as the means of the level-0 bytes it averages.
+        // Each texel's r and b as the means of the uploaded bytes it averages, and how far the
+        // level's bytes are from them.
         std::vector<std::pair<double, double>> box_means(std::size_t(m * m));
+        double off = 0, off_sum = 0;
         for (int j = 0; j < m; ++j)
             for (int i = 0; i < m; ++i) {
                 double r = 0, b = 0;
@@ -574,59 +580,56 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
                         r += uploaded[std::size_t(4 * (y * n + x))];
                         b += uploaded[std::size_t(4 * (y * n + x) + 2)];
                     }
-                box_means[std::size_t(j * m + i)] = {r / (box * box), b / (box * box)};
+                const std::size_t t = std::size_t(j * m + i);
+                box_means[t] = {r / (box * box), b / (box * box)};
+                off = std::max({off, std::abs(own[4 * t] - box_means[t].first),
+                                std::abs(own[4 * t + 2] - box_means[t].second)});
+                off_sum += own[4 * t] - box_means[t].first;
             }
-        {  // DIAG
-            double dr = 0, db = 0, sr = 0, sb = 0;
-            for (std::size_t i = 0; i < box_means.size(); ++i) {
-                dr = std::max(dr, std::abs(own[4 * i] - box_means[i].first));
-                db = std::max(db, std::abs(own[4 * i + 2] - box_means[i].second));
-                sr += own[4 * i] - box_means[i].first;
-                sb += own[4 * i + 2] - box_means[i].second;
-            }
-            std::printf("DIAG level %d: bytes - box means: r worst %.3f mean %.3f, b worst %.3f mean %.3f\n", level, dr,
-                        sr / double(box_means.size()), db, sb / double(box_means.size()));
-        }
+        std::printf("level %d: its r and b up to %.2f bytes from the box means of level 0 (r %+.2f on average)\n",
+                    level, off, off_sum / (m * m));
+        EXPECT_LE(off, double(level)) << "level " << level;
         for (const Case& c : cases) {
             foam.bind_pattern(*program, 0);
             program->set("u_amount", c.amount);
             program->set("u_holes", c.holes);
             program->set("u_function", c.function);
             program->set("u_lod", float(level));
-            const std::vector<float> gpu = ocean_test::draw_full_screen<float>(*program, m, m, GL_R32F, GL_RED, GL_FLOAT, 1);
-            const auto cpu = [&](std::pair<double, double> s) {
-                return c.function == 3 ? step06::filtered_net_cover(c.amount, s.first, s.second, c.holes)
-                                       : step06::filtered_streak_cover(c.amount, s.first, s.second, 1.0);
+            const std::vector<float> gpu =
+                ocean_test::draw_full_screen<float>(*program, m, m, GL_R32F, GL_RED, GL_FLOAT, 1);
+            const auto cpu = [&](double r, double b) {
+                const auto [mean, variance] = statistics(r, b);
+                return c.function == 3 ? step06::filtered_net_cover(c.amount, mean, variance, c.holes)
+                                       : step06::filtered_streak_cover(c.amount, mean, variance, 1.0);
             };
-            double own_error = 0, box_error = 0, covered = 0, signed_box = 0, abs_box = 0;
+            double own_error = 0, box_error = 0, nearest_error = 0, covered = 0, box_covered = 0;
             for (std::size_t i = 0; i < gpu.size(); ++i) {
-                signed_box += gpu[i] - cpu(statistics(box_means[i].first, box_means[i].second));
-                abs_box += std::abs(gpu[i] - cpu(statistics(box_means[i].first, box_means[i].second)));
-                own_error = std::max(own_error, std::abs(gpu[i] - cpu(statistics(own[4 * i], own[4 * i + 2]))));
-                box_error = std::max(box_error, std::abs(gpu[i] - cpu(statistics(box_means[i].first, box_means[i].second))));
+                const auto [r, b] = box_means[i];
+                const double expected = cpu(r, b);
+                own_error = std::max(own_error, std::abs(gpu[i] - cpu(own[4 * i], own[4 * i + 2])));
+                box_error = std::max(box_error, std::abs(gpu[i] - expected));
+                nearest_error = std::max(nearest_error, std::abs(cpu(std::round(r), std::round(b)) - expected));
                 covered += gpu[i];
+                box_covered += expected;
             }
-            double ideal = 0, ideal_mean = 0;
-            for (std::size_t i = 0; i < gpu.size(); ++i) {
-                const double e = cpu(statistics(std::round(box_means[i].first), std::round(box_means[i].second))) - cpu(statistics(box_means[i].first, box_means[i].second));
-                ideal = std::max(ideal, std::abs(e));
-                ideal_mean += e;
-            }
-            std::printf("DIAG rounded to nearest byte: worst %.4f mean %.4f\n", ideal, ideal_mean / double(gpu.size()));
-            std::printf("DIAG mean signed %.4f abs %.4f\n", signed_box / double(gpu.size()), abs_box / double(gpu.size()));
-            std::printf("level %d, %s holes %.2f, amount %.2f: mean cover %.3f, worst |GPU - CPU| on the level's bytes "
-                        "%.1e, on the box means of level 0 %.4f\n",
+            const double mean_error = (covered - box_covered) / double(gpu.size());
+            std::printf("level %d, %-21s holes %.2f, amount %.2f: mean cover %.3f; worst |GPU - CPU| on the level's "
+                        "bytes %.1e, on the box means %.3f (%.3f if rounded to the nearest byte), mean %+.4f\n",
                         level, c.function == 3 ? "filtered_net_cover" : "filtered_streak_cover", double(c.holes),
-                        double(c.amount), covered / double(gpu.size()), own_error, box_error);
+                        double(c.amount), covered / double(gpu.size()), own_error, box_error, nearest_error,
+                        mean_error);
             EXPECT_LT(own_error, 1e-4) << "level " << level << ", function " << c.function << ", amount " << c.amount;
-            EXPECT_LT(box_error, 0.02) << "level " << level << ", function " << c.function << ", amount " << c.amount;
+            EXPECT_LT(box_error, 0.15) << "level " << level << ", function " << c.function << ", amount " << c.amount;
+            EXPECT_LT(std::abs(mean_error), 0.02)
+                << "level " << level << ", function " << c.function << ", amount " << c.amount;
             worst_own = std::max(worst_own, own_error);
             worst_box = std::max(worst_box, box_error);
+            worst_mean = std::max(worst_mean, std::abs(mean_error));
         }
     }
-    std::printf("the filtered cover on mip levels 0, 2, 4: worst |GPU - CPU| %.1e on the level's bytes (limit 1e-4), "
-                "%.4f on the box means of level 0 (limit 0.02)\n",
-                worst_own, worst_box);
+    std::printf("the filtered cover on mip levels 0, 2, 4: worst |GPU - CPU| %.1e on the level's bytes (limit "
+                "1e-4); on the box means of level 0 %.3f a texel (limit 0.15), %.4f over a level (limit 0.02)\n",
+                worst_own, worst_box, worst_mean);
 }
 
 TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {

@@ -544,7 +544,8 @@ TEST(Step06FoamPattern, MeanClampIsTheMeanOfTheClampOverTheSpread) {
                     const double ends[] = {alpha + beta * (mean - half), alpha + beta * (mean + half)};
                     across_both += std::min(ends[0], ends[1]) < 0 && std::max(ends[0], ends[1]) > 1;
                     const double error = std::abs(step06::mean_clamp(alpha, beta, mean, sigma * sigma) - sum / samples);
-                    EXPECT_LT(error, 1e-6) << "alpha " << alpha << ", beta " << beta << ", mean " << mean << ", sigma " << sigma;
+                    EXPECT_LT(error, 1e-6)
+                        << "alpha " << alpha << ", beta " << beta << ", mean " << mean << ", sigma " << sigma;
                     worst = std::max(worst, error);
                     ++cases;
                 }
@@ -580,10 +581,10 @@ PatternBlocks pattern_blocks(const std::vector<float>& pattern, int n, int w, in
 }
 
 // The point of filtered_net_cover, against what a mip level is: a box filter. Over each block of 2
-// to 32 texels a side of the real pattern, the true mean of net_cover over its texels (what the
-// pixel should show) against (a) net_cover of the block's mean pattern (filtering the pattern, then
-// covering: the old way) and (b) filtered_net_cover of the block's mean and variance (what the
-// texture's filtered p and p^2 give), and the whole tile (the coarsest level). (b) keeps the image's
+// to 32 texels a side of the real pattern, and the whole tile (the coarsest level), the true mean of
+// net_cover over its texels (what the pixel should show) against (a) net_cover of the block's mean
+// pattern (filtering the pattern, then covering: the old way) and (b) filtered_net_cover of the
+// block's mean and variance (what the texture's filtered p and p^2 give). (b) keeps the image's
 // true mean cover within 0.015 up to 8 texels a block (measured 0.010) and 0.05 beyond (measured
 // 0.040, from 16 texels to the whole tile: a block's values are skewed, mostly the cells' low
 // middles, not spread uniformly as (b) assumes; the residual's holes at amounts 0.65 and 0.9). (a)
@@ -595,13 +596,14 @@ TEST(Step06FoamPattern, FilteredCoverKeepsTheBoxFilteredMean) {
     const int n = settings.size;
     const double amounts[] = {0.2, 0.4, 0.65, 0.9};
     for (const int block : {2, 4, 8, 16, 32, 256}) {
-        double worst_old = 0, worst_filtered = 0, block_old = 0, block_filtered = 0, sum_old = 0, sum_filtered = 0, blocks = 0;
+        double worst_old = 0, worst_filtered = 0;  // the image's mean cover
+        double block_old = 0, block_filtered = 0, sum_old = 0, sum_filtered = 0, blocks = 0;  // a block's
         for (const double holes : {step06::kActiveHoles, step06::kResidualHoles}) {
             double worst_old_here = 0, worst_filtered_here = 0;
             std::printf("block %3d, holes %.2f, image mean true/old/filtered:", block, holes);
             for (const double amount : amounts) {
-                const PatternBlocks b =
-                    pattern_blocks(cells, n, block, block, [&](double p) { return step06::net_cover(amount, p, holes); });
+                const PatternBlocks b = pattern_blocks(
+                    cells, n, block, block, [&](double p) { return step06::net_cover(amount, p, holes); });
                 double truth = 0, old = 0, filtered = 0;
                 for (std::size_t i = 0; i < b.means.size(); ++i) {
                     const double a_cover = step06::net_cover(amount, b.means[i], holes);
@@ -629,9 +631,10 @@ TEST(Step06FoamPattern, FilteredCoverKeepsTheBoxFilteredMean) {
             worst_old = std::max(worst_old, worst_old_here);
             worst_filtered = std::max(worst_filtered, worst_filtered_here);
         }
-        std::printf("block %3d: worst error of the image's mean cover old %.3f, filtered %.3f; a block's error: worst old "
-                    "%.3f, filtered %.3f, mean old %.3f, filtered %.3f\n",
-                    block, worst_old, worst_filtered, block_old, block_filtered, sum_old / blocks, sum_filtered / blocks);
+        std::printf("block %3d: worst error of the image's mean cover old %.3f, filtered %.3f; a block's error: "
+                    "worst old %.3f, filtered %.3f, mean old %.3f, filtered %.3f\n",
+                    block, worst_old, worst_filtered, block_old, block_filtered, sum_old / blocks,
+                    sum_filtered / blocks);
     }
 }
 
@@ -647,11 +650,13 @@ TEST(Step06FoamPattern, FilteredStreakCoverKeepsTheBoxFilteredMean) {
     for (const double residual : {0.3, 0.8, 1.6})
         for (double line = 0; line <= 1.0; line += 0.05)
             for (double unbroken = 0; unbroken <= 1.0; unbroken += 0.05) {
-                const double t = std::clamp((unbroken - step06::kBreakFrom) / (step06::kBreakTo - step06::kBreakFrom), 0.0, 1.0);
-                const double expected = std::min(residual, 1.0) * std::clamp((line - step06::kStreakLineFrom) / width, 0.0, 1.0) *
-                                        t * t * (3 - 2 * t);
+                const double t =
+                    std::clamp((unbroken - step06::kBreakFrom) / (step06::kBreakTo - step06::kBreakFrom), 0.0, 1.0);
+                const double ramp = std::clamp((line - step06::kStreakLineFrom) / width, 0.0, 1.0);
+                const double expected = std::min(residual, 1.0) * ramp * t * t * (3 - 2 * t);
                 EXPECT_NEAR(step06::filtered_streak_cover(residual, line, 0.0, unbroken), expected, 1e-12);
-                EXPECT_EQ(step06::filtered_streak_cover(residual, line, 0.0, unbroken), step06::streak_cover(residual, line, unbroken));
+                EXPECT_EQ(step06::filtered_streak_cover(residual, line, 0.0, unbroken),
+                          step06::streak_cover(residual, line, unbroken));
             }
 
     const step06::FoamPatternSettings settings;
@@ -670,7 +675,8 @@ TEST(Step06FoamPattern, FilteredStreakCoverKeepsTheBoxFilteredMean) {
         }
         const double count = double(b.means.size());
         truth /= count, old /= count, filtered /= count;
-        std::printf("streaks over %2d x %2d texels: image mean true %.3f, old %.3f, filtered %.3f\n", w, h, truth, old, filtered);
+        std::printf("streaks over %2d x %2d texels: image mean true %.3f, old %.3f, filtered %.3f\n", w, h, truth,
+                    old, filtered);
         EXPECT_NEAR(filtered, truth, 0.03) << w << " x " << h;
         EXPECT_GT(std::abs(old - truth), 2 * std::abs(filtered - truth)) << w << " x " << h;
     }
