@@ -29,9 +29,10 @@
 //       luminance, from the bare water to full foam. Foam comes in two stages, which photographs
 //       separate by brightness (Monahan and Lu 1990): the active whitecap (stage A), as bright as
 //       the white reference or nearly, and the residual foam it leaves (stage B), greyer. A pixel is
-//       whitecap, of either stage, where its cover is above 0.25: the residual foam sends back at
-//       most 0.4 of fresh foam's light above the water's, usually less (it has holes), and whitecap
-//       counts include it. Against Monahan and O'Muircheartaigh (1980), W = 3.84e-6 U^3.41, and
+//       whitecap, of either stage, where its cover is above 0.25: the residual foam sends back half
+//       of fresh foam's light where its lace covers a pixel (0.5 to 0.62 of the white reference,
+//       whose active foam's brightness varies), less over a 1 m pixel that averages its holes, and
+//       whitecap counts include it. Against Monahan and O'Muircheartaigh (1980), W = 3.84e-6 U^3.41, and
 //       Callaghan, de Leeuw, Cohen and O'Dowd (2008), W = 3.18e-5 (U - 3.70)^3 up to 11.25 m/s and
 //       4.82e-6 (U + 1.98)^3 above (none below 3.7 m/s): within half the lower and twice the
 //       higher of the two where they predict 0.2 % or more, below 0.2 % where they do not.
@@ -309,11 +310,12 @@ double callaghan(double u) {
 }
 
 // The stages photographs separate by brightness (Monahan and Lu 1990). A pixel is whitecap, of
-// either stage, above this cover: the residual foam is greyer, at full cover at most 0.4 of fresh
-// foam's brightness above the water and usually less (it has holes), and photograph analyses count
+// either stage, above this cover: the residual foam is greyer, half fresh foam's brightness where its
+// lace covers a pixel and less over a pixel that averages its holes, and photograph analyses count
 // it; halfway (0.5) would leave it out.
 constexpr double kWhitecapCover = 0.25;
-// And an active whitecap (stage A) above this: no residual foam reaches it.
+// And an active whitecap (stage A) above this: over the census' 1 m pixels, which average the lace's
+// holes, no residual foam reaches it (a fine pixel on a lace border can: 0.5 to 0.62).
 constexpr double kActiveCover = 0.6;
 // Monahan and Lu's split, W_B = 9.7 W_A (MonahanLu.f of github edinnat/Ocean-reference-model-mirror:
 // Wa = Wb / 9.7): the active share of all whitecap is 1 / 10.7.

@@ -38,6 +38,10 @@ namespace {
 struct Step06Gpu : ocean_test::GlTest {
     ocean_test::ProgramCache cache;
     ocean::ProgramFactory factory() { return cache.factory(); }
+    // tests/foam_cover.frag: the renderer's cover functions at each texel of the pattern texture.
+    ocean::ShaderProgram* foam_cover_program() {
+        return cache("foam_cover", {"common/shaders/fullscreen.vert", "step06_foam_sky/tests/foam_cover.frag"}, {});
+    }
     // A calm sea (all maps zero, J = 1) of 4 cascades at N = 64.
     std::vector<step05::InitialSpectrum> calm = std::vector<step05::InitialSpectrum>(4);
     std::unique_ptr<step05::OceanSimulation> calm_ocean() {
@@ -484,8 +488,7 @@ TEST_F(Step06Gpu, BothClocksFollowTheCpuOnAMovingSea) {
 // a few amounts (streaks up to 2: twice the residual, clamped).
 TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     step06::FoamSimulation foam(factory());
-    ocean::ShaderProgram* program =
-        cache("foam_cover", {"common/shaders/fullscreen.vert", "step06_foam_sky/tests/foam_cover.frag"}, {});
+    ocean::ShaderProgram* program = foam_cover_program();
     ASSERT_NE(program, nullptr);
     const step06::FoamPatternSettings settings;
     const int n = settings.size;
@@ -538,8 +541,7 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
 //     for the mean over the level (llvmpipe's bias upwards: 0.014 at level 4).
 TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
     step06::FoamSimulation foam(factory());
-    ocean::ShaderProgram* program =
-        cache("foam_cover", {"common/shaders/fullscreen.vert", "step06_foam_sky/tests/foam_cover.frag"}, {});
+    ocean::ShaderProgram* program = foam_cover_program();
     ASSERT_NE(program, nullptr);
     const step06::FoamPatternSettings settings;
     const int n = settings.size;
