@@ -96,7 +96,7 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {
     const FoamPatternSettings settings;
-    const std::vector<std::uint8_t> texels = foam_pattern_texture(settings);  // r p, g noise, b p^2
+    const std::vector<std::uint8_t> texels = foam_pattern_texture(settings);  // r p, g noise, b p^2, a noise
     pattern_ = ocean::make_texture(GL_TEXTURE_2D);
     glTextureStorage2D(pattern_.id(), step05::mip_levels(settings.size), GL_RGBA8, settings.size, settings.size);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

@@ -83,12 +83,14 @@ std::vector<std::uint8_t> to_r8(const std::vector<float>& pattern) {
 }
 
 std::vector<std::uint8_t> foam_pattern_texture(const FoamPatternSettings& settings) {
-    const std::vector<float> cells = foam_pattern(settings), noise = foam_noise(settings);
+    FoamPatternSettings other = settings;
+    other.seed = settings.seed + 1;
+    const std::vector<float> cells = foam_pattern(settings), noise = foam_noise(settings), noise2 = foam_noise(other);
     std::vector<float> squares(cells.size());
     for (std::size_t i = 0; i < cells.size(); ++i) squares[i] = cells[i] * cells[i];
-    const std::vector<std::uint8_t> r = to_r8(cells), g = to_r8(noise), b = to_r8(squares);
+    const std::vector<std::uint8_t> r = to_r8(cells), g = to_r8(noise), b = to_r8(squares), a = to_r8(noise2);
     std::vector<std::uint8_t> rgba(4 * cells.size());
-    for (std::size_t i = 0; i < cells.size(); ++i) rgba[4 * i] = r[i], rgba[4 * i + 1] = g[i], rgba[4 * i + 2] = b[i], rgba[4 * i + 3] = 255;
+    for (std::size_t i = 0; i < cells.size(); ++i) rgba[4 * i] = r[i], rgba[4 * i + 1] = g[i], rgba[4 * i + 2] = b[i], rgba[4 * i + 3] = a[i];
     return rgba;
 }
 

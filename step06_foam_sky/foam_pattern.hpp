@@ -35,7 +35,8 @@ std::vector<float> foam_noise(const FoamPatternSettings& settings);
 // The pattern as the GPU stores it: one byte a texel (read back as byte / 255).
 std::vector<std::uint8_t> to_r8(const std::vector<float>& pattern);
 // The texture FoamSimulation uploads, RGBA8: r the cells' pattern p, g the smooth noise, b p^2
-// (filtered, E[p^2] - E[p]^2 is the pattern's variance over a footprint), a unused (255).
+// (filtered, E[p^2] - E[p]^2 is the pattern's variance over a footprint), a a second smooth noise
+// (another seed: with g, a two-dimensional warp in one fetch).
 std::vector<std::uint8_t> foam_pattern_texture(const FoamPatternSettings& settings);
 
 // How a foam amount covers the water, in the two stages (foam.hpp). Foam is a raft of bubbles;
@@ -95,7 +96,7 @@ constexpr double kResidualAlbedo = 0.5;
 // The wind combs the residual foam into lines (windrows, drawn by Langmuir circulation): from force
 // 7 it is drawn as streaks over the lace, the streaks' strength s = foam_streak_share(U), which is
 // 0 below force 7 and 1 from force 9. A streak is foam gathered into a line, denser than the lace it
-// came from: it takes three times the residual amount (at most 1), and the lace keeps 1 - 0.7 s of
+// came from: it takes three times the residual amount (at most 1), and the lace keeps 1 - 0.8 s of
 // its cover (the wind took the rest into the lines).
 constexpr double kStreaksFrom = 13.9, kDenseStreaksFrom = 20.8;  // m/s
 inline double foam_streak_share(double wind_speed) {

@@ -179,7 +179,7 @@ vec2 foam_at(vec2 p, float long_side) {
     return foam;
 }
 
-// foam_pattern.hpp: r 1 on the borders of bubble cells; g a smooth noise; b r^2
+// foam_pattern.hpp: r 1 on the borders of bubble cells; g a smooth noise; b r^2; a another noise
 layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;
 uniform float u_foam_pattern_size;  // metres one tile of it covers
 // World (x, z) to the pattern's coordinates for the streaks: stretched along the wind.
@@ -254,21 +254,19 @@ FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     // with it.
     if (amounts.x < 0.002 && amounts.y < 0.002) return FoamCover(0.0, 0.0, 1.0);
     vec2 uv = p / u_foam_pattern_size, uv_dx = f.dx / u_foam_pattern_size, uv_dy = f.dy / u_foam_pattern_size;
-    vec2 coarse = pattern_statistics(textureGrad(u_foam_pattern, uv, uv_dx, uv_dy));
-    vec2 fine = pattern_statistics(textureGrad(u_foam_pattern, uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71));
+    // Foam on a sea that has stretched and sheared it: the cells are read through a warp of up to
+    // half a metre, the two smooth noises (g, a) over 30 m tiles, so no honeycomb shows. Then the
+    // cells at two scales (9 m and 3.3 m tiles), so they are not all one size and the tile does
+    // not show: the active foam takes them 0.6 / 0.4, the residual's lace 0.55 / 0.45.
+    vec4 noise = textureGrad(u_foam_pattern, uv * 0.3 + 0.21, uv_dx * 0.3, uv_dy * 0.3);
+    vec2 lace_uv = uv + 0.12 * (noise.ga - 0.5);
+    vec2 coarse = pattern_statistics(textureGrad(u_foam_pattern, lace_uv, uv_dx, uv_dy));
+    vec2 fine = pattern_statistics(textureGrad(u_foam_pattern, lace_uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71));
     float active_cover = filtered_net_cover(amounts.x, mix_statistics(coarse, fine, 0.6), ACTIVE_HOLES);
-    // The residual's lace: both scales of cells, so its holes come in many sizes, on a sea that
-    // has stretched and sheared it (the cells read through a warp of a metre, the smooth noise over
-    // 30 m tiles, so no honeycomb shows). It is thin foam (residual_thickness): the water shows
-    // through its holes, and they open as it fades, unevenly: the same noise makes it denser in
-    // some places than in others, as a raft of foam tears.
-    vec2 noise_uv = uv * 0.3 + 0.21;
-    vec2 warp = vec2(textureGrad(u_foam_pattern, noise_uv, uv_dx * 0.3, uv_dy * 0.3).g,
-                     textureGrad(u_foam_pattern, noise_uv.yx + 0.5, uv_dx.yx * 0.3, uv_dy.yx * 0.3).g);
-    vec2 lace_uv = uv + 0.12 * (warp - 0.5);
-    vec2 lace = mix_statistics(pattern_statistics(textureGrad(u_foam_pattern, lace_uv, uv_dx, uv_dy)),
-                               pattern_statistics(textureGrad(u_foam_pattern, lace_uv * 2.71 + 0.37, uv_dx * 2.71, uv_dy * 2.71)), 0.55);
-    float residual = filtered_net_cover(residual_thickness(amounts.y, warp.x), lace, RESIDUAL_HOLES);
+    // The residual's lace: thin foam (residual_thickness): the water shows through its holes, and
+    // they open as it fades, unevenly: the noise makes it denser in some places than in others,
+    // as a raft of foam tears.
+    float residual = filtered_net_cover(residual_thickness(amounts.y, noise.g), mix_statistics(coarse, fine, 0.55), RESIDUAL_HOLES);
 #if STREAKS
     // The streaks: the line's pattern stretched along the wind, its across coordinate shifted by
     // the meander (the smooth noise), cut where the smooth noise is low. (Rows of each matrix:
@@ -283,7 +281,7 @@ FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     vec2 line = pattern_statistics(textureGrad(u_foam_pattern, to_lines * q, to_lines * f.dx, to_lines * f.dy));
     // Three times the residual amount: a streak is foam gathered into a line, denser than the lace,
     // which loses what the wind gathered (foam_pattern.hpp).
-    residual = max(residual * (1.0 - 0.7 * u_streak_share), u_streak_share * filtered_streak_cover(3.0 * amounts.y, line, unbroken));
+    residual = max(residual * (1.0 - 0.8 * u_streak_share), u_streak_share * filtered_streak_cover(3.0 * amounts.y, line, unbroken));
 #endif
     return FoamCover(active_cover, residual, 0.8 + 0.2 * fine.x);
 }
