@@ -122,7 +122,9 @@ public:
     // speed (m/s: the share of the residual foam drawn as streaks, foam_streak_share).
     void set_wind(glm::dvec2 heading, double speed);
     // Whether the residual foam is combed into streaks (Beaufort 7 and up): the shading's STREAKS variant.
-    bool streaks() const { return streak_share_ > 0; }
+    // Below 5 % of their strength the streaks' cover is under 5 % of the residual's, not seen: their
+    // three fetches are compiled out (force 7 begins at 13.9 m/s; they come in from 14.25 m/s).
+    bool streaks() const { return streak_share_ >= 0.05; }
     static constexpr float kPatternSize = 9.0f;  // metres: about ten 1 m bubble cells a side
     const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
     const std::array<FoamWindow, kFoamLevels>& windows() const { return windows_; }

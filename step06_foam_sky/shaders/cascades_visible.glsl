@@ -248,11 +248,14 @@ FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     float long_side = max(length(f.dx), length(f.dy));
     vec2 amounts = foam_at(p, long_side);    // (active foam, foam as a whole)
     amounts.y = max(amounts.y - amounts.x, 0.0);  // the residual: what the active part is not
-    // Most of the sea holds no foam (below 0.002 no pattern gives a cover above 0.005): on a GPU
-    // it skips the pattern (llvmpipe runs the branch masked). The fetches take the footprint's
-    // own derivatives (textureGrad), so a pixel with foam needs no neighbour to take the branch
-    // with it.
-    if (amounts.x < 0.002 && amounts.y < 0.002) return FoamCover(0.0, 0.0, 1.0);
+    // Most of the sea holds no foam that shows: an active amount below 0.002 covers under 0.005 of
+    // any texel, and a residual below 0.02 (its thin lace: at most 0.027 thick) under 0.002 of a
+    // pixel on average. There it skips the pattern: on a GPU a branch, on llvmpipe, which runs a
+    // branch masked, a saving wherever a whole group of pixels skips it. The residual fades
+    // slowly (10 s), so much of the sea holds a trace of it: without its own threshold the
+    // pattern's fetches ran over most of the sea. The fetches take the footprint's own
+    // derivatives (textureGrad), so a pixel with foam needs no neighbour to take the branch with it.
+    if (amounts.x < 0.002 && amounts.y < 0.02) return FoamCover(0.0, 0.0, 1.0);
     vec2 uv = p / u_foam_pattern_size, uv_dx = f.dx / u_foam_pattern_size, uv_dy = f.dy / u_foam_pattern_size;
     // Foam on a sea that has stretched and sheared it: the cells are read through a warp of up to
     // half a metre, the two smooth noises (g, a) over 30 m tiles, so no honeycomb shows. Then the
