@@ -112,26 +112,22 @@ FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::
 void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit) const {
     program.set("u_foam_pattern", unit);
     program.set("u_foam_pattern_size", kPatternSize);
-    program.set("u_streak_along", streak_along_);
-    program.set("u_streak_across", streak_across_);
-    program.set("u_meander_along", meander_along_);
-    program.set("u_meander_across", meander_across_);
-    program.set("u_break_along", break_along_);
-    program.set("u_break_across", break_across_);
+    // World (x, z) to the pattern's coordinates of the streaks' lines, meander and breaks
+    // (foam_pattern.hpp): the wind's heading and the heading across it, each over its tile's metres.
+    const glm::vec2 along = wind_along_, across(-along.y, along.x);
+    program.set("u_streak_along", along / float(kPatternSize * kStreakLength));
+    program.set("u_streak_across", across / float(kPatternSize * kStreakSpacing));
+    program.set("u_meander_along", along / float(kMeanderLength));
+    program.set("u_meander_across", across / float(kMeanderWidth));
+    program.set("u_break_along", along / float(kBreakLength));
+    program.set("u_break_across", across / float(kBreakWidth));
     program.set("u_streak_meander", float(kStreakMeander));
     program.set("u_streak_share", float(streak_share_));
     glBindTextureUnit(GLuint(unit), pattern_.id());
 }
 
 void FoamSimulation::set_wind(glm::dvec2 heading, double speed) {
-    const glm::vec2 along(heading);
-    streak_along_ = along / float(kPatternSize * kStreakLength);
-    const glm::vec2 across(-along.y, along.x);
-    streak_across_ = across / float(kPatternSize * kStreakSpacing);
-    meander_along_ = along / float(kMeanderLength);
-    meander_across_ = across / float(kMeanderWidth);
-    break_along_ = along / float(kBreakLength);
-    break_across_ = across / float(kBreakWidth);
+    wind_along_ = glm::vec2(heading);
     streak_share_ = foam_streak_share(speed);
 }
 

@@ -65,16 +65,17 @@ inline double foam_step(double foam, double jacobian, double dt, const FoamSetti
     return std::clamp(foam * std::exp(-x) + grown, 0.0, 1.0);
 }
 
-// The foam as a whole, f: foam_step at the residual's rate r_b.
-inline double whole_foam_step(double whole, double jacobian, double dt, const FoamSettings& s) {
+// The foam as a whole, f: the same clock as the active foam's at the residual's rate r_b.
+inline FoamSettings slow_clock(const FoamSettings& s) {
     FoamSettings slow = s;
     slow.decay_rate = s.residual_decay;
-    return foam_step(whole, jacobian, dt, slow);
+    return slow;
+}
+inline double whole_foam_step(double whole, double jacobian, double dt, const FoamSettings& s) {
+    return foam_step(whole, jacobian, dt, slow_clock(s));
 }
 inline double whole_foam_steady_state(double jacobian, const FoamSettings& s) {
-    FoamSettings slow = s;
-    slow.decay_rate = s.residual_decay;
-    return foam_steady_state(jacobian, slow);
+    return foam_steady_state(jacobian, slow_clock(s));
 }
 // The residual foam: what the foam as a whole holds beyond the active part (never below 0, for a
 // residual rate set above the active one).
@@ -114,9 +115,9 @@ public:
                 glm::dvec2 forward_xz, double dt, const FoamSettings& settings);
     // The windows and the texture, for the renderer (foam_map.glsl's uniforms) and --export.
     void bind(const ocean::ShaderProgram& program, int unit) const;
-    // The bubble pattern (u_foam_pattern, RGBA8: the cells, a smooth noise, the cells squared; mipmapped, repeating), the metres one tile of it
-    // covers (u_foam_pattern_size), and the streaks' frame (u_streak_along, _across: world x, z to
-    // the pattern's coordinates, stretched along the wind).
+    // The pattern texture (u_foam_pattern, RGBA8: foam_pattern_texture; mipmapped, repeating), the
+    // metres one tile of it covers (u_foam_pattern_size), and the streaks' frames (u_streak_*,
+    // u_meander_*, u_break_*: world x, z to the pattern's coordinates, stretched along the wind).
     void bind_pattern(const ocean::ShaderProgram& program, int unit) const;
     // The wind the streaks lie along: its heading (unit x, z: short_waves.hpp's wind_heading) and
     // speed (m/s: the share of the residual foam drawn as streaks, foam_streak_share).
@@ -146,10 +147,7 @@ private:
     ocean::Texture pattern_;
     int n_ = 0;
     bool warm_start_ = true;
-    // World (x, z) to the pattern's coordinates of the streaks' lines, meander and breaks
-    // (foam_pattern.hpp), along and across the wind.
-    glm::vec2 streak_along_{1.0f, 0.0f}, streak_across_{0.0f, 1.0f};
-    glm::vec2 meander_along_{1.0f, 0.0f}, meander_across_{0.0f, 1.0f}, break_along_{1.0f, 0.0f}, break_across_{0.0f, 1.0f};
+    glm::vec2 wind_along_{1.0f, 0.0f};  // the wind's heading (x, z): the streaks' frame follows it
     double streak_share_ = 0;
     glm::dvec2 origin_{0.0};  // the world origin of the last update (CascadeView::origin)
     std::array<FoamWindow, kFoamLevels> windows_{};

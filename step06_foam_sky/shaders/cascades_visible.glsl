@@ -196,15 +196,6 @@ uniform float u_streak_meander, u_streak_share;
 // residual_cover: thin lace, torn unevenly by the smooth noise, never closed.
 const float ACTIVE_HOLES = 0.3, RESIDUAL_HOLES = 0.75, RESIDUAL_THICKNESS = 0.9, RESIDUAL_MOST = 0.65,
             RESIDUAL_ALBEDO = 0.5;
-float net_cover(float amount, float pattern, float holes) {
-    return clamp((amount - (1.0 - pattern) * holes) / (1.0 - holes), 0.0, 1.0);
-}
-float residual_thickness(float amount, float noise) {
-    return min(RESIDUAL_THICKNESS * (0.25 + 1.25 * noise) * amount, RESIDUAL_MOST);
-}
-float residual_cover(float amount, float pattern, float noise) {
-    return net_cover(residual_thickness(amount, noise), pattern, RESIDUAL_HOLES);
-}
 
 // foam_pattern.hpp's mean_clamp and filtered_net_cover: the mean cover over a pixel's footprint,
 // from the pattern's mean and variance there (the filtered r and b), so a lace far away is as
@@ -218,6 +209,14 @@ float mean_clamp(float alpha, float beta, float mean, float variance) {
 }
 float filtered_net_cover(float amount, vec2 pattern, float holes) {  // pattern: (mean, variance)
     return mean_clamp((amount - holes) / (1.0 - holes), holes / (1.0 - holes), pattern.x, pattern.y);
+}
+// One pattern value (no spread): clamp((amount - (1 - pattern) holes) / (1 - holes), 0, 1).
+float net_cover(float amount, float pattern, float holes) { return filtered_net_cover(amount, vec2(pattern, 0.0), holes); }
+float residual_thickness(float amount, float noise) {
+    return min(RESIDUAL_THICKNESS * (0.25 + 1.25 * noise) * amount, RESIDUAL_MOST);
+}
+float residual_cover(float amount, float pattern, float noise) {
+    return net_cover(residual_thickness(amount, noise), pattern, RESIDUAL_HOLES);
 }
 // A fetch of the pattern as (mean, variance) over the footprint. The bytes' rounding leaves up to
 // about 2/255 of false variance where the footprint is a texel: taken off.
