@@ -115,7 +115,7 @@ std::optional<std::string> Param::parse(const std::string& text, ParamValue& out
                 return "parameter '" + name_ + "' expects " +
                        (type_ == ParamType::Int ? "an integer" : "a number") + " in " +
                        range_text() + ", got " + shown;
-            if (*number < min_ || *number > max_)
+            if (!in_range(*number))
                 return "parameter '" + name_ + "' = " + trim(text) + " is outside its range " +
                        range_text();
             out.number = *number;
@@ -175,6 +175,23 @@ std::optional<std::string> Param::set_from_text(const std::string& text) {
     return std::nullopt;
 }
 
+Param& Param::in_group(std::string group) {
+    group_ = std::move(group);
+    if (scope_changes_ != nullptr) {
+        generations_.erase(std::find(generations_.begin(), generations_.end(), scope_changes_));
+        scope_changes_ = nullptr;
+    }
+    return *this;
+}
+
+bool Param::in_range(double number) const {
+    // add_float's ranges arrive as floats (or as doubles rounded to float when stored, see bind):
+    // the text "0.95" and the declared 0.95f are the same float, not the same double.
+    if (type_ == ParamType::Float && !double_precision_)
+        return float(number) >= float(min_) && float(number) <= float(max_);
+    return number >= min_ && number <= max_;
+}
+
 void Param::set_number(double value) {
     store({std::clamp(value, min_, max_), glm::vec3(0.0f), ""});
 }
@@ -188,7 +205,7 @@ Param& ParamRegistry::add(std::unique_ptr<Param> param) {
         throw std::logic_error("parameter '" + param->name_ + "' declared twice");
     param->reset();  // the default stored (a double bound to a float range keeps its value)
     param->group_ = group_;
-    if (changes_ != nullptr) param->generations_.push_back(changes_);
+    if (changes_ != nullptr) param->generations_.push_back(param->scope_changes_ = changes_);
     params_.push_back(std::move(param));
     return *params_.back();
 }

@@ -44,7 +44,10 @@ public:
     ParamType type() const { return type_; }
 
     // Chainable refinements of a declaration.
-    Param& in_group(std::string group) { group_ = std::move(group); return *this; }
+    // A declaration's own group takes it out of the open GroupScope altogether: its panel group
+    // and its change counter (chain .bumps() to keep one). A parameter that only changed panels
+    // but still bumped the scope's counter once dropped step07's bodies whenever the boat steered.
+    Param& in_group(std::string group);
     Param& visible_if(std::function<bool()> predicate) { visible_ = std::move(predicate); return *this; }
     Param& logarithmic() { logarithmic_ = true; return *this; }
     Param& bumps(Generation& generation) { generations_.push_back(&generation); return *this; }
@@ -75,6 +78,9 @@ public:
     std::string* text_value() const { return text_; }
     void bump_generations() const;  // a change made behind the registry's back (a colour widget)
     bool is_double_precision() const { return double_precision_; }
+    // Whether `number` lies in the range, compared in the type the range was declared in: a float
+    // parameter's ends as floats (0.2f is 0.200000003 as a double, which would refuse "0.2").
+    bool in_range(double number) const;
     double min() const { return min_; }
     double max() const { return max_; }
     const std::vector<std::string>& choices() const { return choices_; }
@@ -97,6 +103,7 @@ private:
     bool logarithmic_ = false;
     bool double_precision_ = false;  // add_double: formatted to every digit of the double
     std::vector<Generation*> generations_;
+    Generation* scope_changes_ = nullptr;  // the counter the open GroupScope added, if any
 };
 
 class ParamRegistry {
@@ -129,8 +136,8 @@ public:
 
     // A block of declarations that share a panel group (and a change counter) says so once: while
     // the returned scope lives, every parameter declared goes into `group` and bumps `changes`
-    // (a declaration's own .in_group() still wins). Scopes nest; the outer one returns when the
-    // inner one ends.
+    // (a declaration's own .in_group() takes it out of the scope: group and counter). Scopes nest;
+    // the outer one returns when the inner one ends.
     class GroupScope {
     public:
         GroupScope(ParamRegistry& registry, std::string group, Generation* changes)

@@ -220,22 +220,66 @@ TEST(ParamRegistry, AGroupScopeGroupsAndCountsOnlyWhatItsBlockDeclares) {
             const auto inner = params.group("grid", &grid);
             params.add_float("b", &b, 0, 1, "");
         }
-        params.add_float("c", &c, 0, 1, "").in_group("own");
+        params.add_float("c", &c, 0, 1, "");
     }
     params.add_float("d", &d, 0, 1, "");
     EXPECT_EQ(params.find("a")->group(), "waves");
     EXPECT_EQ(params.find("b")->group(), "grid");
-    EXPECT_EQ(params.find("c")->group(), "own") << "a declaration's own group wins";
+    EXPECT_EQ(params.find("c")->group(), "waves") << "the outer scope came back";
     EXPECT_EQ(params.find("d")->group(), "") << "the scope ended with its block";
     const unsigned waves_before = waves.value, grid_before = grid.value;
     params.set_assignment("b=0.5");
     EXPECT_EQ(grid.value, grid_before + 1);
     EXPECT_EQ(waves.value, waves_before) << "the inner scope replaced the outer counter";
     params.set_assignment("c=0.5");
-    EXPECT_EQ(waves.value, waves_before + 1) << "the outer scope came back";
+    EXPECT_EQ(waves.value, waves_before + 1) << "the outer scope's counter came back";
     params.set_assignment("d=0.5");
     EXPECT_EQ(waves.value, waves_before + 1);
     EXPECT_EQ(grid.value, grid_before + 1);
+}
+
+// A declaration's own group takes it out of the scope, counter too: step07's throttle, declared
+// inside the bodies' scope with .in_group("steering"), once dropped the bodies at every move. A
+// counter it should keep is said with .bumps().
+TEST(ParamRegistry, ADeclarationsOwnGroupLeavesTheScopesCounter) {
+    ocean::ParamRegistry params;
+    ocean::Generation bodies;
+    float size = 1, throttle = 0, density = 1;
+    {
+        const auto scope = params.group("bodies", &bodies);
+        params.add_float("size", &size, 0, 10, "");
+        params.add_float("throttle", &throttle, -1, 1, "").in_group("steering");
+        params.add_float("density", &density, 0, 10, "").in_group("material").bumps(bodies);
+    }
+    EXPECT_EQ(params.find("throttle")->group(), "steering");
+    const unsigned before = bodies.value;
+    params.set_assignment("throttle=0.5");
+    params.find("throttle")->set_number(-0.25);  // the panel's slider
+    EXPECT_EQ(bodies.value, before) << "steering bumped the bodies' counter";
+    params.set_assignment("size=2");
+    EXPECT_EQ(bodies.value, before + 1);
+    params.set_assignment("density=2");
+    EXPECT_EQ(bodies.value, before + 2) << ".bumps() keeps a counter explicitly";
+}
+
+// The ends --list-params prints are accepted, compared in the type they were declared in: 0.2f is
+// 0.200000003 as a double, so "0.2" was refused at the minimum it printed; 0.95f is 0.949999988.
+TEST(ParamRegistry, AFloatRangesPrintedEndsAreAccepted) {
+    ocean::ParamRegistry params;
+    float diameter = 1, ratio = 0.5f;
+    double stored_as_float = 1, full = 1;
+    params.add_float("diameter", &diameter, 0.2f, 5, "");
+    params.add_float("ratio", &ratio, 0.05f, 0.95f, "");
+    params.add_float("stored_as_float", &stored_as_float, 0.1, 0.7, "");
+    params.add_double("full", &full, 0.1, 0.7, "");
+    for (const char* end : {"diameter=0.2", "diameter=5", "ratio=0.05", "ratio=0.95", "stored_as_float=0.1",
+                            "stored_as_float=0.7", "full=0.1", "full=0.7"})
+        EXPECT_EQ(params.set_assignment(end), std::nullopt) << end;
+    EXPECT_EQ(diameter, 5.0f);
+    EXPECT_EQ(ratio, 0.95f);
+    for (const char* outside : {"diameter=0.19", "ratio=0.951", "ratio=0.0499", "full=0.70000001"})
+        EXPECT_NE(params.set_assignment(outside), std::nullopt) << outside;
+    EXPECT_NE(params.find("diameter")->range_text().find("[0.2, 5]"), std::string::npos);
 }
 
 TEST(ParamRegistry, DuplicateNamesAreAProgrammingError) {
