@@ -15,7 +15,8 @@ namespace ocean {
 namespace fs = std::filesystem;
 
 // --record: this frame as DIR/frame_NNNN.png (four digits, more past 9999), read before the
-// buffers swap. The folder is created at the first frame.
+// buffers swap. The folder is created at the first frame. A frame that cannot be written throws
+// (ocean::Error): a recording with a frame missing is no recording.
 void App::record_frame(const std::string& dir, int frame) {
     if (framebuffer_size_.x <= 0 || framebuffer_size_.y <= 0) return;  // minimised: nothing drawn
     char name[32];
@@ -27,10 +28,12 @@ void App::write_outputs(const Options& options, const Image& screenshot, const F
                         int frames) {
     if (!screenshot.rgba.empty()) {
         const std::string path = options.screenshot.empty() ? "screenshots/" + step_name() + ".png" : options.screenshot;
-        std::cout << "screenshot: " << save_screenshot(screenshot, path) << "\n";
+        // Written (or thrown) before a word of the success line: "screenshot: " alone is no success.
+        const std::string written = save_screenshot(screenshot, path);
+        std::cout << "screenshot: " << written << "\n";
     }
     if (!options.export_dir.empty()) {  // run() refused --export where the step offers none
-        export_(prepare_export_dir(options.export_dir));
+        export_(prepare_export_dir(options.export_dir));  // every file, or throws naming the first that failed
         std::cout << "export: " << fs::absolute(options.export_dir).string() << "\n";
     }
     if (options.bench) {

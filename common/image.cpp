@@ -1,5 +1,7 @@
 #include "common/image.hpp"
 
+#include "common/file_output.hpp"
+
 #include <stb_image.h>
 #include <stb_image_write.h>
 
@@ -35,11 +37,23 @@ std::optional<Image> load_image(const std::string& path, std::string* error) {
     return image;
 }
 
+std::string encode_png(const Image& image) {
+    std::string png;
+    const auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+    };
+    if (image.width <= 0 || image.height <= 0 || image.rgba.size() < std::size_t(image.width) * image.height * 4 ||
+        stbi_write_png_to_func(append, &png, image.width, image.height, 4, image.rgba.data(), image.width * 4) == 0)
+        return {};
+    return png;
+}
+
 std::optional<std::string> save_png(const Image& image, const std::string& path) {
-    if (stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(),
-                       image.width * 4) == 0)
-        return "cannot write '" + path + "'";
-    return std::nullopt;
+    const std::string png = encode_png(image);
+    if (png.empty())
+        return "cannot write '" + path + "': cannot encode a " + std::to_string(image.width) + "x" +
+               std::to_string(image.height) + " image as PNG";
+    return write_file(path, png);
 }
 
 Image read_framebuffer(GLuint framebuffer, int width, int height) {
@@ -59,14 +73,15 @@ Image read_framebuffer(GLuint framebuffer, int width, int height) {
     return image;
 }
 
+std::string encode_pfm(const FloatImage& image) {
+    // A negative scale: little-endian floats (the machines we run on).
+    std::string pfm = "Pf\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+    pfm.append(reinterpret_cast<const char*>(image.values.data()), image.values.size() * sizeof(float));
+    return pfm;
+}
+
 std::optional<std::string> save_pfm(const FloatImage& image, const std::string& path) {
-    std::FILE* file = std::fopen(path.c_str(), "wb");
-    if (file == nullptr) return "cannot write '" + path + "': " + std::strerror(errno);
-    std::fprintf(file, "Pf\n%d %d\n-1.0\n", image.width, image.height);  // negative scale: little-endian
-    const std::size_t written = std::fwrite(image.values.data(), sizeof(float), image.values.size(), file);
-    const bool ok = written == image.values.size() && std::fclose(file) == 0;
-    if (!ok) return "cannot write '" + path + "'";
-    return std::nullopt;
+    return write_file(path, encode_pfm(image));
 }
 
 std::optional<FloatImage> load_pfm(const std::string& path, std::string* error) {

@@ -18,6 +18,10 @@ struct Image {
 
 // Any format stb_image reads, converted to RGBA8. Errors: "'path': reason".
 std::optional<Image> load_image(const std::string& path, std::string* error);
+// The PNG file's bytes (empty if stb cannot encode the image).
+std::string encode_png(const Image& image);
+// Writes the PNG whole through write_file (common/file_output.hpp): on failure, "cannot write
+// 'path': reason" and no file, or the older one as it was.
 std::optional<std::string> save_png(const Image& image, const std::string& path);
 // The colour attachment of `framebuffer` (0: the window's back buffer), flipped top-down.
 Image read_framebuffer(GLuint framebuffer, int width, int height);
@@ -28,6 +32,8 @@ struct FloatImage {
     int width = 0, height = 0;
     std::vector<float> values;  // width * height, row 0 first
 };
+std::string encode_pfm(const FloatImage& image);
+// As save_png: written whole or not at all.
 std::optional<std::string> save_pfm(const FloatImage& image, const std::string& path);
 std::optional<FloatImage> load_pfm(const std::string& path, std::string* error);
 

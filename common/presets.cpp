@@ -3,9 +3,9 @@
 // written with every parameter.
 #include "common/params.hpp"
 
+#include "common/file_output.hpp"
 #include "common/text.hpp"
 
-#include <fstream>
 #include <sstream>
 #include <string_view>
 
@@ -64,11 +64,8 @@ std::string ParamRegistry::preset_text(const std::string& header) const {
 
 std::optional<std::string> ParamRegistry::save_preset(const std::string& path,
                                                       const std::string& header) const {
-    std::ofstream file(path);
-    if (!file) return "cannot write preset '" + path + "'";
-    file << preset_text(header);
-    if (!file.flush()) return "cannot write preset '" + path + "'";
-    return std::nullopt;
+    // Whole or not at all: a preset cut short by a full disk would load as a different sea.
+    return write_file(path, preset_text(header), "preset");
 }
 
 }  // namespace ocean

@@ -1,13 +1,14 @@
 #include "step05_fft/export.hpp"
 
 #include "common/error.hpp"
+#include "common/file_output.hpp"
 #include "common/gl.hpp"
 #include "common/image.hpp"
 #include "common/text.hpp"
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 namespace step05 {
 
@@ -16,6 +17,11 @@ std::string exact(double value) {  // all 17 digits: the checker rebuilds the se
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.17g", value);
     return buffer;
+}
+
+// export.txt's line for one map: "file.height = height.pfm    # h, metres".
+std::string file_line(const std::string& file, const std::string& meaning) {
+    return "file." + file.substr(0, file.size() - 4) + " = " + file + "    # " + meaning + "\n";
 }
 }  // namespace
 
@@ -48,8 +54,15 @@ void write_export(const std::string& dir, int n, const std::vector<float>& displ
         maps[4].values[i] = s[1];
         maps[5].values[i] = (1 + s[2]) * (1 + s[3]) - d[3] * d[3];
     }
+    // The maps first and export.txt last, each written whole: a folder with an export.txt holds
+    // every map it names. The first file that cannot be written stops the export.
     const std::filesystem::path folder(dir);
-    std::ofstream text(folder / "export.txt");
+    const auto save = [&folder](const ocean::FloatImage& map, const std::string& file) {
+        if (auto error = ocean::save_pfm(map, (folder / file).string())) throw ocean::Error("--export: " + *error);
+    };
+    for (std::size_t m = 0; m < maps.size(); ++m) save(maps[m], kExportedMaps[m].file);
+    for (const ExtraMap& map : extra) save(ocean::FloatImage{n, n, map.values}, map.file);
+    std::ostringstream text;
     text << "# ocean maps: rows in each PFM go z = 0 first (PFM's bottom row), x = origin_x + i * patch_size / resolution\n";
     for (const auto& p : params.all()) text << p->name() << " = " << p->value_text() << "\n";
     text << "export.patch_size = " << ocean::format_number(patch_size) << "\n"
@@ -57,19 +70,9 @@ void write_export(const std::string& dir, int n, const std::vector<float>& displ
          << "export.time = " << exact(time) << "\n"
          << "export.choppiness = " << ocean::format_number(choppiness) << "\n";
     for (const auto& [key, value] : notes) text << key << " = " << value << "\n";
-    for (std::size_t m = 0; m < maps.size(); ++m) {
-        const std::string name = kExportedMaps[m].file;
-        if (auto error = ocean::save_pfm(maps[m], (folder / name).string())) throw ocean::Error("--export: " + *error);
-        text << "file." << name.substr(0, name.size() - 4) << " = " << name << "    # " << kExportedMaps[m].meaning
-             << "\n";
-    }
-    for (const ExtraMap& map : extra) {
-        if (auto error = ocean::save_pfm(ocean::FloatImage{n, n, map.values}, (folder / map.file).string()))
-            throw ocean::Error("--export: " + *error);
-        text << "file." << map.file.substr(0, map.file.size() - 4) << " = " << map.file << "    # " << map.meaning
-             << "\n";
-    }
-    if (!text.flush()) throw ocean::Error("--export: cannot write " + (folder / "export.txt").string());
+    for (const ExportedMap& map : kExportedMaps) text << file_line(map.file, map.meaning);
+    for (const ExtraMap& map : extra) text << file_line(map.file, map.meaning);
+    if (auto error = ocean::write_file(folder / "export.txt", text.str())) throw ocean::Error("--export: " + *error);
 }
 
 }  // namespace step05

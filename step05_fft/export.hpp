@@ -25,7 +25,9 @@ struct ExtraMap {
 
 // Writes the maps from texel arrays laid out as the textures are, 4 floats a texel:
 // (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz). `notes` are extra
-// `key = value` lines (step06: the grid's origin and spacing). Throws ocean::Error on failure.
+// `key = value` lines (step06: the grid's origin and spacing). Each file is written whole
+// (ocean::write_file), the maps first and export.txt last; the first that cannot be written throws
+// ocean::Error naming it.
 void write_export(const std::string& dir, int n, const std::vector<float>& displacement,
                   const std::vector<float>& slopes, double patch_size, double time, double choppiness,
                   const ocean::ParamRegistry& params, const std::vector<std::pair<std::string, std::string>>& notes,

@@ -15,6 +15,7 @@
 #include "step06_foam_sky/sea_renderer.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "step07_buoyancy/body_mesh.hpp"
+#include "step07_buoyancy/body_params.hpp"
 #include "step07_buoyancy/floating_body.hpp"
 #include "step07_buoyancy/map_readback.hpp"
 #include "step07_buoyancy/query_grid.hpp"
@@ -22,6 +23,7 @@
 #include "step07_buoyancy/sea_query.hpp"
 
 #include "common/error.hpp"
+#include "common/file_output.hpp"
 
 #include <GLFW/glfw3.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -29,9 +31,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 namespace {
 
@@ -53,24 +55,8 @@ public:
         sea_.declare(p);
         renderer_.declare(p);
         look_.declare(p);
-        {
-            // A change to any of these drops the bodies again (bodies_changed_).
-            const auto group = p.group("bodies", &bodies_changed_);
-            p.add_float("buoy_diameter", &buoy_diameter_, 0.2f, 5, "the buoy's diameter, metres");
-            p.add_float("buoy_density", &buoy_density_, 50, 3000, "kg/m^3 (water: 1025)");
-            p.add_float("raft_size", &raft_size_, 1, 200, "the raft's side, metres");
-            p.add_float("raft_density", &raft_density_, 50, 3000, "kg/m^3");
-            p.add_float("boat_length", &boat_length_, 2, 60, "the boat's length (beam a third, depth a sixth), metres");
-            p.add_float("boat_density", &boat_density_, 50, 3000, "kg/m^3 of its closed hull");
-            p.add_float("drag", &drag_, 0, 5, "linear drag, per second per kilogram of water displaced");
-            p.add_float("drop_height", &drop_height_, -2, 10, "metres above the mean level the bodies are dropped from");
-        }
-        // Outside that group: steering and the query load do not drop the bodies again.
-        {
-            const auto group = p.group("steering");
-            p.add_float("boat_throttle", &throttle_, -1, 1, "the boat's thrust, a fraction of its weight / 20");
-            p.add_float("boat_rudder", &rudder_, -1, 1, "the boat's turning force at its stern");
-        }
+        body_params_.declare(p);  // a change drops the bodies again
+        steering_.declare(p);       // read each frame: drops nothing
         queries_.declare(p);
         use_camera(ocean::camera_view("low"), ocean::kOceanReach);
         offer_export([this](const std::string& dir) { export_all(dir); });
@@ -115,8 +101,8 @@ private:
         // none (the read-back still in flight) holds the latest (still water for its drag) rather
         // than replaying the last frame's motion.
         const step07::MapSea& before = arrived ? sea_before_->sea : sea_now_->sea;
-        if (bodies_built_for_ != bodies_changed_.value || bodies_.empty()) {
-            bodies_built_for_ = bodies_changed_.value;
+        if (bodies_built_for_ != body_params_.changed.value || bodies_.empty()) {
+            bodies_built_for_ = body_params_.changed.value;
             drop_bodies();
         }
         steer_boat();
@@ -161,17 +147,18 @@ private:
         const glm::dvec2 side(-ahead.y, ahead.x);
         const auto spot = [&](double forward, double across) {
             const glm::dvec2 p = glm::dvec2(eye.x, eye.z) + forward * ahead + across * side;
-            return glm::dvec3(p.x, drop_height_, p.y);
+            return glm::dvec3(p.x, body_params_.drop_height, p.y);
         };
         step07::BodySettings buoy, raft, boat;
-        buoy.shape = {step07::ShapeKind::Sphere, glm::dvec3(buoy_diameter_)};
-        buoy.density = buoy_density_;
-        raft.shape = {step07::ShapeKind::Box, {raft_size_, 0.4, raft_size_}};
-        raft.density = raft_density_;
-        boat.shape = {step07::ShapeKind::Hull, {boat_length_, boat_length_ / 6, boat_length_ / 3}};
-        boat.density = boat_density_;
+        buoy.shape = {step07::ShapeKind::Sphere, glm::dvec3(body_params_.buoy_diameter)};
+        buoy.density = body_params_.buoy_density;
+        raft.shape = {step07::ShapeKind::Box, {body_params_.raft_size, 0.4, body_params_.raft_size}};
+        raft.density = body_params_.raft_density;
+        const double length = body_params_.boat_length;
+        boat.shape = {step07::ShapeKind::Hull, {length, length / 6, length / 3}};
+        boat.density = body_params_.boat_density;
         for (auto* s : {&buoy, &raft, &boat}) {
-            s->linear_drag = drag_;
+            s->linear_drag = body_params_.drag;
             s->cells_per_side = 6;
         }
         boat.cells_per_side = 8;  // the hull's shape needs a finer grid
@@ -188,8 +175,8 @@ private:
         step07::FloatingBody& boat = bodies_[2];
         const double weight = boat.mass() * ocean::kGravity;
         const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0), across = boat.orientation() * glm::dvec3(0, 0, 1);
-        const double throttle = std::clamp(double(throttle_) + key_throttle_, -1.0, 1.0);
-        const double rudder = std::clamp(double(rudder_) + key_rudder_, -1.0, 1.0);
+        const double throttle = std::clamp(double(steering_.throttle) + key_throttle_, -1.0, 1.0);
+        const double rudder = std::clamp(double(steering_.rudder) + key_rudder_, -1.0, 1.0);
         boat.add_force(throttle * weight / 20 * along, {0, 0, 0});
         boat.add_force(rudder * weight / 100 * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
     }
@@ -289,20 +276,23 @@ private:
         if (ImGui::Button("drop again")) bodies_.clear();
         ImGui::SameLine();
         if (ImGui::Button("push the raft") && bodies_.size() > 1)
-            bodies_[1].push(glm::dvec3(0, 0.5, 2) * bodies_[1].mass(), bodies_[1].to_world({0.3 * raft_size_, 0.2, 0}));
+            bodies_[1].push(glm::dvec3(0, 0.5, 2) * bodies_[1].mass(),
+                            bodies_[1].to_world({0.3 * body_params_.raft_size, 0.2, 0}));
     }
 
     // step06's export (the surface and foam) and each body's trajectory, one row a body a frame.
     void export_all(const std::string& dir) {
         ocean::ProgramFactory programs = program_factory();
         sea_.export_surface(dir, programs, time(), params());
-        std::ofstream out(dir + "/trajectories.csv");
+        std::ostringstream out;
         out << "time,body,x,y,z,qw,qx,qy,qz\n";
         out.precision(10);
         for (const auto& r : trajectory_)
             out << r.time << ',' << r.body << ',' << r.position.x << ',' << r.position.y << ',' << r.position.z << ','
                 << r.orientation.w << ',' << r.orientation.x << ',' << r.orientation.y << ',' << r.orientation.z << '\n';
-        if (!out) throw ocean::Error("cannot write '" + dir + "/trajectories.csv'");
+        // Written whole, after the maps: the export is complete only if this succeeds too.
+        if (auto error = ocean::write_file(std::filesystem::path(dir) / "trajectories.csv", out.str()))
+            throw ocean::Error("--export: " + *error);
     }
 
     struct TrajectoryRow {
@@ -323,11 +313,9 @@ private:
     std::optional<TimedSea> sea_before_, sea_now_;
     step07::MapReadback readback_;
     std::unique_ptr<step07::BodyMeshes> meshes_;
-    ocean::Generation bodies_changed_;
     unsigned bodies_built_for_ = 0;
-    float buoy_diameter_ = 1.2f, buoy_density_ = 350, raft_size_ = 5, raft_density_ = 450;
-    float boat_length_ = 9, boat_density_ = 300, drag_ = 0.5f, drop_height_ = 1.5f;
-    float throttle_ = 0, rudder_ = 0;
+    step07::BodyParams body_params_;
+    step07::Steering steering_;
     double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held
     int latency_frames_ = 0;
     double bodies_ms_ = 0;

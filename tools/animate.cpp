@@ -3,6 +3,7 @@
 // libwebp's WebPAnimEncoder (lossy, QUALITY 0..100; full colour, unlike GIF's 256, and a fraction
 // of the size). --verify decodes a file with WebPAnimDecoder and prints its frame count, size and
 // bytes; both exit non-zero with one line on stderr on any failure.
+#include "common/file_output.hpp"
 #include "common/image.hpp"
 
 #include <webp/demux.h>
@@ -97,11 +98,9 @@ int main(int argc, char** argv) {
                           !WebPAnimEncoderAssemble(encoder, &data)))
         error = "libwebp cannot assemble the animation";
     WebPAnimEncoderDelete(encoder);
-    if (error.empty()) {
-        std::ofstream file(out, std::ios::binary);
-        file.write(reinterpret_cast<const char*>(data.bytes), std::streamsize(data.size));
-        if (!file) error = "cannot write '" + out + "'";
-    }
+    if (error.empty())  // whole or not at all: a WebP cut short by a full disk never takes the name
+        if (auto failure = ocean::write_file(out, {reinterpret_cast<const char*>(data.bytes), data.size}))
+            error = *failure;
     WebPDataClear(&data);
     if (!error.empty()) return fail(error);
     return verify(out);

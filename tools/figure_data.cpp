@@ -3,6 +3,7 @@
 // writes NAME.dat (columns of numbers) and NAME.gp (the gnuplot script that draws NAME.png from
 // them). ./ocean figures runs gnuplot on the scripts.
 #include "common/camera.hpp"
+#include "common/file_output.hpp"
 #include "step02_sine3d/wave_params.hpp"
 #include "step03_lighting/normals.hpp"
 #include "step04_fbm/fbm.hpp"
@@ -19,10 +20,10 @@
 #include <complex>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -46,12 +47,17 @@ set style line 4 lc rgb "#a33b8f" lw 2
 set style line 5 lc rgb "#777777" lw 1.5 dt 2
 )gp";
 
+// A figure's two files, built in memory and written whole once the figure is made.
 struct Figure {
     std::string name;
-    std::ofstream data, script;
-    Figure(const fs::path& dir, const std::string& figure_name)
-        : name(figure_name), data(dir / (figure_name + ".dat")), script(dir / (figure_name + ".gp")) {
+    std::ostringstream data, script;
+    explicit Figure(const std::string& figure_name) : name(figure_name) {
         script << kStyle << "set output '" << name << ".png'\n";
+    }
+    // NAME.dat, then NAME.gp: the first one that cannot be written stops it, with its message.
+    std::optional<std::string> write(const fs::path& dir) const {
+        if (auto error = ocean::write_file(dir / (name + ".dat"), data.str())) return error;
+        return ocean::write_file(dir / (name + ".gp"), script.str());
     }
 };
 
@@ -76,8 +82,8 @@ step05::InitialSpectrum single_mode(int n, int i, int j, double amplitude) {
 std::vector<double> one_mode_profile(double steepness, std::vector<double>* x_out, std::vector<double>* jacobian,
                                      std::vector<double>* rest_x = nullptr);
 
-void wave_profiles(const fs::path& dir) {
-    Figure f(dir, "wave_profiles");
+Figure wave_profiles() {
+    Figure f("wave_profiles");
     f.data << "# theta  sin  step04's sine (scaled)  exp(sin-1)-mean\n";
     for (int i = 0; i <= 400; ++i) {
         const double theta = -2 * kPi + 4 * kPi * i / 400.0;
@@ -113,14 +119,15 @@ plot 'wave_profiles.dat' index 1 using 1:2 with lines ls 1 title "λkA = 0.5", \
      '' index 1 using 5:6 with lines ls 4 title "λkA = 1.3 (folds: J < 0)"
 unset multiplot
 )gp";
+    return f;
 }
 
 // step04's domain warp, along one line of its default sea (two cascades of 20 exp-sine waves,
 // a0 = 1.2 m, at t = 3 s): the height at warp 0, 4 (the default) and 8, from fbm.hpp. Each wave is
 // read at a point the waves before it pushed downhill, so the crests move and lean; the sum of
 // independent sines becomes a pattern whose waves interact.
-void domain_warp(const fs::path& dir) {
-    Figure f(dir, "domain_warp");
+Figure domain_warp() {
+    Figure f("domain_warp");
     step04::CascadeSettings first;
     first.wave_count = 20;
     first.base_amplitude = 1.2;
@@ -142,6 +149,7 @@ plot 'domain_warp.dat' using 1:2 with lines ls 5 title "warp 0: a plain sum of w
      '' using 1:3 with lines ls 1 title "warp 4 (default)", \
      '' using 1:4 with lines ls 2 title "warp 8"
 )gp";
+    return f;
 }
 
 // One travelling mode of wavelength 16 m on a 64 m tile, amplitude 1 m, through step05's CPU
@@ -170,8 +178,8 @@ std::vector<double> one_mode_profile(double steepness, std::vector<double>* x_ou
 // The bridge from step04 (step05's README): one wave is one pair of lattice points, k and -k,
 // holding conjugate numbers; the lattice 2 pi n / L makes every wave fit the tile a whole number
 // of times. The height is step05's simulate_cpu of that single pair on a 64 m tile.
-void spectrum_lattice(const fs::path& dir) {
-    Figure f(dir, "spectrum_lattice");
+Figure spectrum_lattice() {
+    Figure f("spectrum_lattice");
     const int i = 2, j = 1;  // k = (2 pi 2 / 64, 2 pi 1 / 64): two crests across x, one across z
     const step05::InitialSpectrum s = single_mode(16, i, j, 1.0);
     const step05::OceanMaps maps = step05::simulate_cpu(s, 0.0);
@@ -211,11 +219,12 @@ set pm3d map interpolate 4,4
 splot 'spectrum_lattice.dat' index 2 using 1:2:3 with pm3d
 unset multiplot
 )gp";
+    return f;
 }
 
 // The fold itself: where lambda k A > 1 the surface crosses over itself, and J < 0 marks it.
-void jacobian_fold(const fs::path& dir) {
-    Figure f(dir, "jacobian_fold");
+Figure jacobian_fold() {
+    Figure f("jacobian_fold");
     std::vector<double> x, j, rest;
     const std::vector<double> h = one_mode_profile(1.3, &x, &j, &rest);
     f.data << "# rest x  rendered x  height  J (lambda k A = 1.3)\n";
@@ -237,6 +246,7 @@ set yrange [-0.5:3.2]
 plot 'jacobian_fold.dat' using 1:4 with lines ls 1 title "J", 0 with lines ls 5 title "J = 0"
 unset multiplot
 )gp";
+    return f;
 }
 
 // S(omega) for a 14 m/s wind: JONSWAP over 100 km, the same with gamma = 1 (its shape without the
@@ -253,8 +263,8 @@ step05::SpectrumParams figure_sea() {
     return p;
 }
 
-void spectra(const fs::path& dir) {
-    Figure f(dir, "spectra");
+Figure spectra() {
+    Figure f("spectra");
     const step05::SpectrumParams p = figure_sea();
     const double peak = step05::jonswap_peak_omega(p.wind_speed, p.fetch);
     f.data << "# omega  JONSWAP  JONSWAP(gamma=1)  Phillips  Pierson-Moskowitz\n";
@@ -285,11 +295,12 @@ void spectra(const fs::path& dir) {
      '' using 1:5 with lines ls 4 title "Pierson–Moskowitz: fully developed", \
      '' using 1:4 with lines ls 3 title "Phillips (Tessendorf)"
 )gp";
+    return f;
 }
 
 // step06's four cascades over the spectrum they share: each tile carries one band of wavenumbers.
-void cascade_bands(const fs::path& dir) {
-    Figure f(dir, "cascade_bands");
+Figure cascade_bands() {
+    Figure f("cascade_bands");
     const step05::SpectrumParams p = figure_sea();
     const auto sizes = step06::cascade_patch_sizes(p);
     const auto bands = step06::cascade_bands(sizes, p.resolution);
@@ -313,12 +324,13 @@ void cascade_bands(const fs::path& dir) {
     }
     f.script << "plot 'cascade_bands.dat' using 1:2 with lines ls 1 lc rgb 'black' title \"height: k F(k), wind 14 m/s, 100 km\", \\\n"
              << "     '' using 1:3 axes x1y2 with lines ls 5 lc rgb '#aa3333' lw 2 title \"slopes: k³ F(k) (right axis): the light\"\n";
+    return f;
 }
 
 // The sun's glitter: the sea's mean square slope against the wind, step06's (its cascades, and
 // with the short waves beyond them) and what Cox and Munk photographed.
-void glitter_slopes(const fs::path& dir) {
-    Figure f(dir, "glitter_slopes");
+Figure glitter_slopes() {
+    Figure f("glitter_slopes");
     f.data << "# U10  cascades  cascades+short waves  upwind  crosswind  Cox-Munk total  upwind  crosswind\n";
     for (int i = 0; i <= 18; ++i) {
         step05::OceanParams params;
@@ -342,11 +354,12 @@ void glitter_slopes(const fs::path& dir) {
      '' using 1:5 with points ls 3 lc rgb '#1f5fa8' title "step06, crosswind", \
      '' using 1:2 with linespoints ls 4 lc rgb '#aa3333' title "the cascades alone: the short waves left out"
 )gp";
+    return f;
 }
 
 // Schlick's Fresnel against the exact equations for water, and the notes' slip.
-void fresnel(const fs::path& dir) {
-    Figure f(dir, "fresnel");
+Figure fresnel() {
+    Figure f("fresnel");
     const double f0 = step06::normal_incidence_reflectance(step06::kWaterIndex);
     f.data << "# angle from the normal (degrees)  exact  Schlick  notes (1 - cos)^5\n";
     for (int i = 0; i <= 900; ++i) {
@@ -365,14 +378,15 @@ plot 'fresnel.dat' using 1:2 with lines ls 1 title "exact (Fresnel's equations, 
      '' using 1:3 with lines ls 2 title "Schlick, F0 + (1 − F0)(1 − cos θ)^5 (the renderer's)", \
      '' using 1:4 with lines ls 5 title "the notes' (1 − cos θ)^5: forgets F0"
 )gp";
+    return f;
 }
 
 // The data flow of a 16-point inverse FFT as fft.comp runs it: two radix-4 Stockham stages. At the
 // stage of stride p (1, then 4), thread t < N/4 with k = t mod p reads x[t + j N/4], j = 0..3,
 // twiddles them by w^(j k), w = e^{+2 pi i / (4 p)}, and writes the 4-point DFT of the four to
 // y[(t - k) 4 + k + q p], q = 0..3 (radix4_stage). The indices are the shader's own formulas.
-void butterfly(const fs::path& dir) {
-    Figure f(dir, "butterfly");
+Figure butterfly() {
+    Figure f("butterfly");
     const int n = 16, quarter = n / 4;
     f.data << "# x0 y0 x1 y1 (one line segment a row)\n";
     int stage = 0;
@@ -401,6 +415,7 @@ void butterfly(const fs::path& dir) {
              << "plot 'butterfly.dat' index 0 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#9db8d9' lw 1.2, \\\n"
              << "     '' index 1 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#d9822b' lw 3, \\\n"
              << "     '' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#222222', '' index 0 using 3:4 with points pt 7 ps 1.2 lc rgb '#222222'\n";
+    return f;
 }
 
 // The plain radix-2 FFT worked by hand (README section 3): an 8-point inverse transform of a step,
@@ -418,8 +433,8 @@ std::string complex_label(std::complex<double> z) {
     return text;
 }
 
-void radix2_by_hand(const fs::path& dir) {
-    Figure f(dir, "radix2_by_hand");
+Figure radix2_by_hand() {
+    Figure f("radix2_by_hand");
     const int n = 8, bits = 3;
     const std::vector<std::complex<double>> x = {1, 1, 1, 1, 0, 0, 0, 0};
     std::vector<std::vector<std::complex<double>>> columns(1, std::vector<std::complex<double>>(n));
@@ -465,6 +480,7 @@ void radix2_by_hand(const fs::path& dir) {
              << "plot 'radix2_by_hand.dat' index 0 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#9db8d9' lw 1.5, \\\n"
              << "     '' index 1 using 1:2:3 with labels font \",10\" tc rgb '#d9822b', \\\n"
              << "     '' index 2 using 1:2:3 with labels boxed font \",11\" tc rgb '#1f3f68'\n";
+    return f;
 }
 
 // One frame's data path, from a step's own pass table (frame_passes.hpp): the passes down the
@@ -479,8 +495,8 @@ std::vector<std::string> split_resources(std::string_view list) {
 }
 
 template <class Passes>
-void frame_path(const fs::path& dir, const std::string& name, const std::string& title, const Passes& passes) {
-    Figure f(dir, name);
+Figure frame_path(const std::string& name, const std::string& title, const Passes& passes) {
+    Figure f(name);
     std::vector<std::string> resources;
     auto column = [&](const std::string& r) {
         for (std::size_t i = 0; i < resources.size(); ++i)
@@ -522,22 +538,23 @@ void frame_path(const fs::path& dir, const std::string& name, const std::string&
              << ", screen " << 15.0 / height << " left\n"
              << "plot NaN\n";
     f.data << "# drawn from the pass table; no data\n";
+    return f;
 }
 
-void step05_frame(const fs::path& dir) {
-    frame_path(dir, "step05_frame", "step05: one frame's passes and what each reads and writes (frame_passes.hpp)",
+Figure step05_frame() {
+    return frame_path("step05_frame", "step05: one frame's passes and what each reads and writes (frame_passes.hpp)",
                step05::kFramePasses);
 }
 
-void step06_frame(const fs::path& dir) {
-    frame_path(dir, "step06_frame", "step06: one frame's passes and what each reads and writes (frame_passes.hpp)",
+Figure step06_frame() {
+    return frame_path("step06_frame", "step06: one frame's passes and what each reads and writes (frame_passes.hpp)",
                step06::kFramePasses);
 }
 
 // The vectors of the lighting model at a point of a wave (a cut through x, y): T, N from step03's
 // normals.hpp, V to the eye, L to the sun, H halfway, R the reflection of V.
-void lighting_vectors(const fs::path& dir) {
-    Figure f(dir, "lighting_vectors");
+Figure lighting_vectors() {
+    Figure f("lighting_vectors");
     const std::vector<step02::DirectionalWave> waves{{0.0, 12.0, 1.0, 0.0}};  // along +x, 12 m, 1 m high
     f.data << "# x  height\n";
     for (int i = 0; i <= 300; ++i) {
@@ -570,13 +587,14 @@ plot 'lighting_vectors.dat' index 0 using 1:2 with lines ls 1, \
      '' index 1 using 1:2:3:4 with vectors head filled lw 2 lc rgb '#a33b8f', \
      '' index 1 using ($1+$3*1.12):($2+$4*1.12):5 with labels tc rgb '#222222'
 )gp";
+    return f;
 }
 
 // step02: one directional wave seen from above (x to the right, z down the page, as the "top"
 // camera shows it), its height from waves.hpp, its crest lines d.p = lambda (n + 1/4), which are
 // perpendicular to d and lambda = 2 pi / w apart, and its direction d.
-void directional_wave(const fs::path& dir) {
-    Figure f(dir, "directional_wave");
+Figure directional_wave() {
+    Figure f("directional_wave");
     const step02::DirectionalWave wave{30.0, 12.0, 1.0, 0.0};  // d at 30 degrees, 12 m, 1 m high
     const step02::Direction d = step02::direction(wave);
     const double lambda = 2 * kPi / step02::angular_wavenumber(wave);
@@ -615,14 +633,15 @@ void directional_wave(const fs::path& dir) {
      '' index 2 every ::0::0 using 1:2:3:4 with vectors head filled size 1.2,20 lw 3 lc rgb '#a33b8f', \
      '' index 2 every ::1::1 using 1:2:3:4 with vectors heads filled size 0.8,20 lw 2 lc rgb '#222222'
 )gp";
+    return f;
 }
 
 // step02's camera from the side: the vertical plane through the eye and the target of the
 // "overview" view (common/camera.cpp), the frustum's top and bottom edges from the inverse of
 // projection * view, the eye's forward f and up u, and the sea of step02's default waves along the
 // plane. Below: the depth the projection stores against the distance in front of the eye.
-void camera_frustum(const fs::path& dir) {
-    Figure f(dir, "camera_frustum");
+Figure camera_frustum() {
+    Figure f("camera_frustum");
     ocean::ParamRegistry registry;
     ocean::Camera camera;
     camera.declare_params(registry, ocean::camera_view("overview"));
@@ -718,6 +737,7 @@ void camera_frustum(const fs::path& dir) {
              << "\" at " << distance / 1.3 << ", 0.6 right boxed tc rgb '#a33b8f'\n"
              << "plot 'camera_frustum.dat' index 4 using 1:2 with lines ls 1\n"
              << "unset multiplot\n";
+    return f;
 }
 
 // step04's fBm as a spectrum: the amplitude of each wave of its default cascades against its
@@ -725,8 +745,8 @@ void camera_frustum(const fs::path& dir) {
 // slope log(gain) / log(lacunarity). Beside them, step05's JONSWAP sea of the spectra figure
 // (14 m/s over 100 km) as the amplitudes of waves spaced like the fBm's: a = sqrt(2 F(k) k ln 1.18),
 // whose tail falls as k^-1 (F ~ k^-3).
-void fbm_spectrum(const fs::path& dir) {
-    Figure f(dir, "fbm_spectrum");
+Figure fbm_spectrum() {
+    Figure f("fbm_spectrum");
     step04::CascadeSettings first;
     first.wave_count = 20;  // step04's defaults (fbm_params.hpp): 20 waves of 40 m, a0 = 1.2 m, two cascades at 0.37
     first.base_amplitude = 1.2;
@@ -757,6 +777,7 @@ void fbm_spectrum(const fs::path& dir) {
              << ") with lines ls 5 title \"a_0 (w / w_0)^σ, σ = log 0.82 / log 1.18 = −" << std::round(-slope * 100) / 100 << "\", \\\n"
              << "     '' index 2 using 1:2 with lines ls 3 title \"step05: JONSWAP, 14 m/s over 100 km, as waves 1.18 apart\", \\\n"
              << "     " << tail << " / x with lines ls 5 lc rgb '#3a9a5b' title \"slope −1: its tail, F(k) ∝ k^{−3}\"\n";
+    return f;
 }
 
 }  // namespace
@@ -784,10 +805,11 @@ int main(int argc, char** argv) {
     std::error_code error;
     fs::create_directories(dir, error);
     if (error) return std::fprintf(stderr, "figure_data: cannot make %s: %s\n", argv[1], error.message().c_str()), 1;
-    const std::vector<std::function<void(const fs::path&)>> figures{
+    const std::vector<std::function<Figure()>> figures{
         wave_profiles, domain_warp, spectrum_lattice, jacobian_fold, spectra, cascade_bands, glitter_slopes, fresnel, butterfly, radix2_by_hand, lighting_vectors, step05_frame, step06_frame,
         directional_wave, camera_frustum, fbm_spectrum};
-    for (const auto& make : figures) make(dir);
+    for (const auto& make : figures)
+        if (auto failure = make().write(dir)) return std::fprintf(stderr, "figure_data: %s\n", failure->c_str()), 1;
     std::printf("figure_data: %zu figures' data and scripts in %s\n", figures.size(), argv[1]);
     return 0;
 }
