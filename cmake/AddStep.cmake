@@ -11,7 +11,7 @@
 #  - with GPU_TESTS, its GoogleTest files that need GL, built into NAME_gpu_tests with tests/gpu's
 #    headless context (gpu_main.cpp) and run as NAME.<suite>.<test>, labelled gpu and NAME,
 #  - with TEST_SHADERS, the shaders only its GPU tests load (in the lists every shader must pass),
-#  - with EXERCISES, the chapter's exercise list (STEP/exercises.cpp), compiled into tools/exercise,
+#  - with EXERCISES, the chapter's exercise list (STEP/exercises.cpp), compiled into exercises/exercise,
 #  - its smoke test: a headless run compared with GOLDEN (default the folder's golden.png),
 #  - its windowed run under Xvfb,
 #  - OCEAN_STEP set to NAME in the chapter's CMakeLists.txt, for step_test() below,
@@ -93,7 +93,7 @@ function(add_step name)
     set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${label_script}")
   endforeach()
 
-  # The chapter's exercises (./ocean exercise): tools/exercise compiles every chapter's list in.
+  # The chapter's exercises (./ocean exercise): exercises/exercise compiles every chapter's list in.
   foreach(file IN LISTS ARG_EXERCISES)
     set_property(GLOBAL APPEND PROPERTY OCEAN_EXERCISES "${CMAKE_CURRENT_SOURCE_DIR}/${file}")
   endforeach()

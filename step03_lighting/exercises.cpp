@@ -1,12 +1,13 @@
 // step03_lighting's exercises (./ocean exercise step03_lighting N): for each, the file and function
 // it empties, the stub, the task, the hint, the formula (--hint), the flags the step runs with, and
-// the check that holds the learner's function to the chapter's CPU reference. tools/exercise
-// gathers every chapter's (add_step's EXERCISES).
-#include "tools/exercise.hpp"
+// the check that holds the learner's function to the chapter's CPU reference. The exercise tool
+// (exercises/) gathers every chapter's (add_step's EXERCISES).
+#include "exercises/exercise.hpp"
 
-#include "tools/exercise_inputs.hpp"
-#include "step03_lighting/lighting.hpp"
+#include "step02_sine3d/exercise_inputs.hpp"
 #include "step02_sine3d/wave_uniforms.hpp"
+#include "step03_lighting/exercise_vectors.hpp"
+#include "step03_lighting/lighting.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -17,7 +18,7 @@ namespace exercises {
 namespace {
 
 // step03's light with the sun at `sun`, a white sun, the default water and shininess 64.
-step03::Light step03_light(const Vec3& sun) {
+step03::Light step03_light(const step03::Vec3& sun) {
     step03::Light light;
     light.to_sun = sun;
     light.sun = {1, 1, 1};
@@ -29,11 +30,15 @@ step03::Light step03_light(const Vec3& sun) {
 
 // step03's light_terms on the GPU, one term: its uniforms set as step03_light says.
 Verdict check_step03_term(const fs::path& work, const std::string& term, double (*pick)(const step03::LightTerms&)) {
-    static const Vec3 sun = step03::normalize({0.4, 0.5, -0.3});
+    static const step03::Vec3 sun = step03::normalize({0.4, 0.5, -0.3});
+    static const glm::dvec3 fixed_sun(sun.x, sun.y, sun.z);
     const step03::Light light = step03_light(sun);
     return check_glsl(
         work, "lighting.glsl", "light_terms(n, v)." + term,
-        [&](const Vec3& n, const Vec3& v, const Vec3&, double) { return pick(step03::light_terms(n, v, light)); }, 1e-4,
+        [&](const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3&, double) {
+            return pick(step03::light_terms(step03::to_vec3(n), step03::to_vec3(v), light));
+        },
+        1e-4,
         [&](const ocean::ShaderProgram& p) {
             p.set("u_to_sun", glm::vec3(float(sun.x), float(sun.y), float(sun.z)));
             p.set("u_sun_color", glm::vec3(1.0f));
@@ -41,7 +46,7 @@ Verdict check_step03_term(const fs::path& work, const std::string& term, double 
             p.set("u_ambient_color", glm::vec3(float(light.ambient.r), float(light.ambient.g), float(light.ambient.b)));
             p.set("u_shininess", float(light.shininess));
         },
-        &sun);
+        &fixed_sun);
 }
 
 std::vector<Exercise> chapter() {

@@ -1,10 +1,10 @@
 // step04_fbm's exercises (./ocean exercise step04_fbm N): for each, the file and function
 // it empties, the stub, the task, the hint, the formula (--hint), the flags the step runs with, and
-// the check that holds the learner's function to the chapter's CPU reference. tools/exercise
-// gathers every chapter's (add_step's EXERCISES).
-#include "tools/exercise.hpp"
+// the check that holds the learner's function to the chapter's CPU reference. The exercise tool
+// (exercises/) gathers every chapter's (add_step's EXERCISES).
+#include "exercises/exercise.hpp"
 
-#include "tools/exercise_inputs.hpp"
+#include "step02_sine3d/exercise_inputs.hpp"
 #include "step04_fbm/fbm.hpp"
 #include "step04_fbm/fbm_uniforms.hpp"
 #include "step03_lighting/normals.hpp"

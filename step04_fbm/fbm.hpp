@@ -19,6 +19,7 @@
 
 #include "step02_sine3d/waves.hpp"
 #include "step03_lighting/normals.hpp"
+#include "common/random.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -70,22 +71,12 @@ struct CascadeSettings {
     std::uint64_t seed = 1;
 };
 
-// A small, portable generator (splitmix64): the same seed gives the same sea on every machine,
-// which std::uniform_real_distribution does not promise.
-inline double uniform01(std::uint64_t& state) {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return double(z >> 11) * (1.0 / 9007199254740992.0);  // 53 bits -> [0, 1)
-}
-
 inline std::vector<FbmWave> fbm_waves(const CascadeSettings& s) {
     std::vector<FbmWave> waves;
     std::uint64_t state = s.seed;
     double amplitude = s.base_amplitude, wavenumber = kTwoPi / s.base_wavelength;
     for (int i = 0; i < s.wave_count; ++i) {
-        const double angle = kTwoPi * uniform01(state);
+        const double angle = kTwoPi * ocean::uniform01(state);  // the same sea on every machine
         waves.push_back({std::cos(angle), std::sin(angle), wavenumber, amplitude,
                          s.speed_scale * std::sqrt(kGravity * wavenumber)});
         amplitude *= s.gain;

@@ -1,8 +1,10 @@
 // step05_fft's exercises (./ocean exercise step05_fft N): for each, the file and function
 // it empties, the stub, the task, the hint, and the check that holds the learner's function to
-// the chapter's CPU reference. tools/exercise gathers every chapter's (add_step's EXERCISES).
-#include "tools/exercise.hpp"
+// the chapter's CPU reference. The exercise tool (exercises/) gathers every chapter's (add_step's
+// EXERCISES).
+#include "exercises/exercise.hpp"
 
+#include "step05_fft/exercise_fft.hpp"
 #include "step05_fft/gerstner.hpp"
 #include "step05_fft/ocean_maps.hpp"
 #include "step05_fft/spectrum.hpp"

@@ -1,15 +1,17 @@
 // step06_foam_sky's exercises (./ocean exercise step06_foam_sky N): for each, the file and function
 // it empties, the stub, the task, the hint, the formula (--hint), the flags the step runs with, and
-// the check that holds the learner's function to the chapter's CPU reference. tools/exercise
-// gathers every chapter's (add_step's EXERCISES).
-#include "tools/exercise.hpp"
+// the check that holds the learner's function to the chapter's CPU reference. The exercise tool
+// (exercises/) gathers every chapter's (add_step's EXERCISES).
+#include "exercises/exercise.hpp"
 
+#include "step03_lighting/exercise_vectors.hpp"
 #include "step06_foam_sky/cascade_bands.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/fog.hpp"
 #include "step06_foam_sky/shading.hpp"
 #include "step06_foam_sky/tessellation.hpp"
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include <string>
@@ -87,8 +89,8 @@ std::vector<Exercise> chapter() {
          {},
          [](const fs::path& work) {
              return check_glsl(work, "shading.glsl", "fresnel_schlick(dot(n, v), 0.02)",
-                                  [](const Vec3& n, const Vec3& v, const Vec3&, double) {
-                                      return step06::fresnel_schlick(step03::dot(n, v), 0.02);
+                                  [](const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3&, double) {
+                                      return step06::fresnel_schlick(glm::dot(n, v), 0.02);
                                   },
                                   1e-4);
          }},
@@ -115,9 +117,10 @@ std::vector<Exercise> chapter() {
          [](const fs::path& work) {
              return check_glsl(work, "shading.glsl",
                                "specular_term(n, v, l, wind_roughness(n, alpha, 0.5 * alpha, vec2(0.6, 0.8)), 0.02, vec3(1.0)).x",
-                               [](const Vec3& n, const Vec3& v, const Vec3& l, double alpha) {
-                                   return step06::specular_factor(n, v, l, {alpha, 0.5 * alpha, 0.6, 0.8}, 0.02,
-                                                                  Microfacet::Ggx);
+                               [](const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& l, double alpha) {
+                                   return step06::specular_factor(step03::to_vec3(n), step03::to_vec3(v),
+                                                                  step03::to_vec3(l), {alpha, 0.5 * alpha, 0.6, 0.8},
+                                                                  0.02, Microfacet::Ggx);
                                },
                                1e-4);
          }},
@@ -195,9 +198,9 @@ std::vector<Exercise> chapter() {
          {},
          [](const fs::path& work) {
              return check_glsl(work, "shading.glsl", "ggx_distribution(max(dot(n, normalize(v + l)), 0.0), alpha)",
-                               [](const Vec3& n, const Vec3& v, const Vec3& l, double alpha) {
-                                   const Vec3 h = step03::normalize({v.x + l.x, v.y + l.y, v.z + l.z});
-                                   return step06::microfacet_distribution(std::max(step03::dot(n, h), 0.0), alpha,
+                               [](const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& l, double alpha) {
+                                   const glm::dvec3 h = glm::normalize(v + l);
+                                   return step06::microfacet_distribution(std::max(glm::dot(n, h), 0.0), alpha,
                                                                           step06::Microfacet::Ggx);
                                },
                                1e-4);

@@ -1,6 +1,6 @@
 #include "step06_foam_sky/foam_pattern.hpp"
 
-#include "step04_fbm/fbm.hpp"  // uniform01: splitmix64, the same pattern on every machine
+#include "common/random.hpp"  // uniform01: splitmix64, the same pattern on every machine
 
 #include <algorithm>
 #include <cmath>
@@ -15,9 +15,9 @@ std::vector<float> foam_pattern(const FoamPatternSettings& s) {
     std::uint64_t state = s.seed;
     std::vector<double> point_x(std::size_t(cells) * cells), point_y(point_x.size()), shade(point_x.size());
     for (std::size_t i = 0; i < point_x.size(); ++i) {
-        point_x[i] = step04::uniform01(state);
-        point_y[i] = step04::uniform01(state);
-        shade[i] = step04::uniform01(state);
+        point_x[i] = ocean::uniform01(state);
+        point_y[i] = ocean::uniform01(state);
+        shade[i] = ocean::uniform01(state);
     }
     std::vector<float> out(std::size_t(s.size) * s.size);
     const double cell_per_texel = double(cells) / s.size;
@@ -56,7 +56,7 @@ std::vector<float> foam_noise(const FoamPatternSettings& s) {
         const int cells = s.noise_cells << octave;
         const double weight = octave == 0 ? 1.0 : 0.5;
         std::vector<double> lattice(std::size_t(cells) * cells);
-        for (double& v : lattice) v = step04::uniform01(state);
+        for (double& v : lattice) v = ocean::uniform01(state);
         const auto at = [&](int i, int j) { return lattice[std::size_t(((j % cells) + cells) % cells) * cells + ((i % cells) + cells) % cells]; };
         for (int y = 0; y < s.size; ++y)
             for (int x = 0; x < s.size; ++x) {

@@ -1,6 +1,6 @@
 // The cases exercise 2's check runs (exercises.cpp): a small hull at a random tilt, half in the
 // water, with its water lines. Header-only and deterministic, so that the check's program
-// (compiled with the learner's hull_forces.cpp) and the reference (in tools/exercise) see the same.
+// (compiled with the learner's hull_forces.cpp) and the reference (in the exercise tool) see the same.
 #pragma once
 
 #include "step07_buoyancy/hull_forces.hpp"

@@ -1,8 +1,8 @@
 // step07_buoyancy's exercises (./ocean exercise step07_buoyancy N): the Newton step that finds the
 // water drawn above a point (GLSL, held to sea_query.cpp's newton_step), and Archimedes over a
-// hull's cells (C++, held to hull_forces.cpp's buoyancy). tools/exercise gathers every chapter's
-// (add_step's EXERCISES).
-#include "tools/exercise.hpp"
+// hull's cells (C++, held to hull_forces.cpp's buoyancy). The exercise tool (exercises/) gathers every
+// chapter's (add_step's EXERCISES).
+#include "exercises/exercise.hpp"
 
 #include "step07_buoyancy/exercise_cases.hpp"
 #include "step07_buoyancy/hull_forces.hpp"

@@ -12,6 +12,8 @@ sources=("$repo/tests/fuzz/$target.cpp" "$repo/common/text.cpp")
 case "$target" in
   fuzz_params) sources+=("$repo/common/params.cpp" "$repo/common/presets.cpp") ;;
   fuzz_cli) sources+=("$repo/common/cli.cpp") ;;
+  fuzz_exercise_args) sources+=("$repo/exercises/arguments.cpp") ;;
+  fuzz_exercise_output) sources+=("$repo/exercises/program_output.cpp") ;;
 esac
 if ! clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
      -I "$repo" "${sources[@]}" -o "$out/$target" 2> "$out/build.log"; then
