@@ -3,15 +3,34 @@
 # one command written here beside it, so a README's image can be reproduced and cannot quietly
 # drift from the code. Headless, on a fixed clock (t = 5 s reached by 0.1 s steps, so foam has
 # grown), 640x360 (step05's map views 480x300, room for their legends; the spectrum 300x300).
-# Takes about a minute on llvmpipe.
+# Takes about a minute on llvmpipe. A failure ends with one line "readme_images: error: ...".
 set -euo pipefail
+die() { printf 'readme_images: error: %s\n' "$*" >&2; exit 1; }
+[ $# -le 1 ] || die "give at most one argument, the build folder"
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
+for program in step01_sine2d/step01_sine2d step02_sine3d/step02_sine3d step03_lighting/step03_lighting \
+               step04_fbm/step04_fbm step05_fft/step05_fft step06_foam_sky/step06_foam_sky tools/image_panel; do
+  [ -x "$build/$program" ] || die "$build/$program is not built"
+done
+# The intermediate pictures, removed however the script ends.
+scratch=$(mktemp -d -t readme_images.XXXXXX) || die "cannot make a temporary folder in ${TMPDIR:-/tmp}"
+trap 'rm -rf -- "$scratch"' EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
+
+# shot STEP OUT.png [flags...]: one headless picture; the step's own error line, then ours.
+shot() {
+  local step=$1 png=$2
+  shift 2
+  "$build/$step/$step" --headless --screenshot "$png" "$@" > /dev/null || die "$step failed drawing ${png##*/}"
+}
+# panel OUT.png CELL COLUMNS TILE...: tools/image_panel's figure.
+panel() { "$build/tools/image_panel" "$@" || die "image_panel failed drawing ${1#"$root"/}"; }
 run() {  # run STEP IMAGE [flags...]
   local step=$1 image=$2
   shift 2
-  "$build/$step/$step" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 \
-    --screenshot "$root/$step/$image" "$@" > /dev/null
+  shot "$step" "$root/$step/$image" --size 640x360 --frames 11 --time 4 --dt 0.1 "$@"
   echo "$step/$image"
 }
 run step01_sine2d screenshot.png
@@ -37,35 +56,30 @@ run step06_foam_sky foam.png --set view=foam --camera overview
 
 # The foam from 40 m straight down at Beaufort 5 and 8 after 10 s of foam (the census's clock,
 # tests/whitecaps.sh): whitecaps and their lace, then streaks.
-beaufort_scratch=$(mktemp -d)
 for wind in 10 20; do
-  "$build/step06_foam_sky/step06_foam_sky" --headless --size 400x400 --frames 41 --time 0 --dt 0.25 \
+  shot step06_foam_sky "$scratch/beaufort$wind.png" --size 400x400 --frames 41 --time 0 --dt 0.25 \
     --set camera_pitch=89 --set camera_distance=40 --set camera_target_y=0 --set camera_fov=80 \
-    --set "wind_speed=$wind" --screenshot "$beaufort_scratch/$wind.png" > /dev/null
+    --set "wind_speed=$wind"
 done
-"$build/tools/image_panel" "$root/step06_foam_sky/streaks_beaufort.png" 400x400 2 \
-  "10 m/s (Beaufort 5): whitecaps and their lace|$beaufort_scratch/10.png" \
-  "20 m/s (Beaufort 8): streaks along the wind|$beaufort_scratch/20.png"
-rm -rf "$beaufort_scratch"
+panel "$root/step06_foam_sky/streaks_beaufort.png" 400x400 2 \
+  "10 m/s (Beaufort 5): whitecaps and their lace|$scratch/beaufort10.png" \
+  "20 m/s (Beaufort 8): streaks along the wind|$scratch/beaufort20.png"
 echo step06_foam_sky/streaks_beaufort.png
 run step06_foam_sky tessellation.png --set wireframe=true --camera overview
 
 # The combed streaks and what removed them: the same mid-distance strip (no bloom) filtered four
 # ways, the last rendered at 4 x 4 the pixels and box-averaged down (what a pixel should show).
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
 strip() {  # strip NAME [flags...]
   local name=$1
   shift
-  "$build/step06_foam_sky/step06_foam_sky" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 \
-    --set show_bloom=false --screenshot "$scratch/$name.png" "$@" > /dev/null
+  shot step06_foam_sky "$scratch/$name.png" --size 640x360 --frames 11 --time 4 --dt 0.1 --set show_bloom=false "$@"
 }
 strip isotropic --set anisotropy=1
 strip two --set anisotropy=2
 strip four --set anisotropy=4
 strip reference --set anisotropy=16 --size 2560x1440
 crop=0,0.3,0.625,0.6
-"$build/tools/image_panel" "$root/step06_foam_sky/streaks.png" 600x162 2 \
+panel "$root/step06_foam_sky/streaks.png" 600x162 2 \
   "before: one trilinear fetch|$scratch/isotropic.png|$crop" "2 pieces|$scratch/two.png|$crop" \
   "4 pieces (the default)|$scratch/four.png|$crop" "reference: 16x supersampled|$scratch/reference.png|$crop"
 echo step06_foam_sky/streaks.png
@@ -78,8 +92,7 @@ echo step06_foam_sky/streaks.png
 piece() {  # piece NAME [flags...]
   local name=$1
   shift
-  "$build/step06_foam_sky/step06_foam_sky" --headless --size 640x360 --frames 11 --time 4 --dt 0.1 \
-    --screenshot "$scratch/$name.png" "$@" > /dev/null
+  shot step06_foam_sky "$scratch/$name.png" --size 640x360 --frames 11 --time 4 --dt 0.1 "$@"
 }
 piece cascades --camera overview --set view=jacobian
 piece mesh --set wireframe=true
@@ -92,28 +105,28 @@ piece bloom
 piece thick_fog_off --set fog_density=0.006 --set show_fog=false --set show_bloom=false
 piece thick_fog_on --set fog_density=0.006 --set show_bloom=false
 piece no_reflection --set show_reflection_term=false
-"$build/tools/image_panel" "$root/step06_foam_sky/build_it_yourself.png" 320x180 4 \
+panel "$root/step06_foam_sky/build_it_yourself.png" 320x180 4 \
   "1. cascades (view=jacobian)|$scratch/cascades.png" "2. the mesh (wireframe=true)|$scratch/mesh.png" \
   "3. lit: ambient and scatter|$scratch/lit.png" "4. + sky reflection, sun|$scratch/sky.png" \
   "5. + foam|$scratch/foam.png" "6. + fog|$scratch/fog.png" "7. + bloom: the final picture|$scratch/bloom.png"
 echo step06_foam_sky/build_it_yourself.png
-"$build/tools/image_panel" "$root/step06_foam_sky/build_it_yourself_closeup.png" 320x180 2 \
+panel "$root/step06_foam_sky/build_it_yourself_closeup.png" 320x180 2 \
   "6. fog off (density 0.006)|$scratch/thick_fog_off.png|0,0.2,0.5,0.7" \
   "6. fog on (density 0.006)|$scratch/thick_fog_on.png|0,0.2,0.5,0.7" \
   "7. bloom off (2x)|$scratch/fog.png|0.7,0.33,0.95,0.58" "7. bloom on (2x)|$scratch/bloom.png|0.7,0.33,0.95,0.58"
 echo step06_foam_sky/build_it_yourself_closeup.png
-"$build/tools/image_panel" "$root/step06_foam_sky/reflection_on_off.png" 320x180 2 \
+panel "$root/step06_foam_sky/reflection_on_off.png" 320x180 2 \
   "the sky's reflection on|$scratch/bloom.png" "off (show_reflection_term=false)|$scratch/no_reflection.png"
 echo step06_foam_sky/reflection_on_off.png
 
 # step05's one Gerstner wave at three steepnesses Q k A (sea=gerstner), crests across the view.
 gerstner() {  # gerstner STEEPNESS
-  "$build/step05_fft/step05_fft" --headless --size 480x270 --frames 2 --time 3 --set sea=gerstner \
-    --set wind_direction=120 --set gerstner_steepness="$1" --screenshot "$scratch/gerstner$1.png" > /dev/null
+  shot step05_fft "$scratch/gerstner$1.png" --size 480x270 --frames 2 --time 3 --set sea=gerstner \
+    --set wind_direction=120 --set gerstner_steepness="$1"
 }
 gerstner 0
 gerstner 0.8
 gerstner 1.3
-"$build/tools/image_panel" "$root/step05_fft/gerstner.png" 480x270 3 "Q k A = 0: a sine|$scratch/gerstner0.png" \
+panel "$root/step05_fft/gerstner.png" 480x270 3 "Q k A = 0: a sine|$scratch/gerstner0.png" \
   "0.8|$scratch/gerstner0.8.png" "1.3: folded crests|$scratch/gerstner1.3.png"
 echo step05_fft/gerstner.png

@@ -4,16 +4,26 @@
 # 150 m, read by tests/picture_check) and on the active foam map (foam > 0.3, tests/physics_check),
 # beside Monahan and O'Muircheartaigh's and Callaghan et al.'s laws; and the picture's active
 # whitecaps (stage A) beside Monahan and Lu's share of them. About five minutes on llvmpipe.
-set -eu
-build=$(cd "$1" && pwd) out=$2
+# A failure ends with one line "whitecap_figure: error: ...".
+set -euo pipefail
+die() { printf 'whitecap_figure: error: %s\n' "$*" >&2; exit 1; }
+[ $# -eq 2 ] || die "give the build folder and the output folder: whitecap_figure.sh BUILD_DIR OUT_DIR"
+[ -n "$2" ] || die "the output folder's name is empty"
+build=$(cd -- "$1" 2> /dev/null && pwd) || die "no build folder '$1'"
+out=$2
 root=$(cd "$(dirname "$0")/.." && pwd)
+for program in step06_foam_sky/step06_foam_sky tests/picture_check tests/physics_check; do
+  [ -x "$build/$program" ] || die "$build/$program is not built"
+done
+command -v gnuplot > /dev/null || die "gnuplot not found (Debian: apt-get install gnuplot-nox)"
 work="$build/figures/whitecaps"
-mkdir -p "$work" "$out"
-winds="4 6 8 10 12 14 16 18 20 22 24"
+mkdir -p -- "$work" "$out" || die "cannot make $work or $out"
+winds=(4 6 8 10 12 14 16 18 20 22 24)
+# The laws' limits do not hold at every wind (whitecaps.sh then fails): the figure shows them all.
 bash "$root/step06_foam_sky/tests/whitecaps.sh" "$build/step06_foam_sky/step06_foam_sky" "$build/tests/picture_check" \
-  "$work" $winds > "$work/picture.txt" || true  # the laws' limits do not hold at every wind: the figure shows them all
+  "$work" "${winds[@]}" > "$work/picture.txt" || true
 echo "# U10  picture %  foam map %  active (stage A) in the picture %" > "$work/whitecaps.dat"
-for wind in $winds; do
+for wind in "${winds[@]}"; do
   picture=$(sed -n "s|.*150m_wind_$wind: U = *[0-9.]* m/s, whitecaps cover *\([0-9.]*\) %.*|\1|p" "$work/picture.txt")
   map=$("$build/tests/physics_check" whitecaps "$work/150m_wind_$wind" | sed -n 's|.*whitecaps *\([0-9.]*\) % of the sea.*|\1|p' || true)
   active=$(sed -n "s|.*150m_wind_$wind: U = *[0-9.]* m/s, whitecaps W .*active W_A *\([0-9.]*\) %.*|\1|p" "$work/picture.txt")
@@ -39,6 +49,6 @@ plot monahan(x) with lines lw 3 lc rgb '#888888' title "Monahan and O'Muircheart
      '' using 1:($4 > 0 ? $4 : 1/0) with linespoints lw 2 pt 5 lc rgb '#2a9d5c' title "step06, active whitecaps in the picture (stage A: more than 0.6 of the way)", \
      monahan(x) / 10.7 with lines lw 2 lc rgb '#2a9d5c' dt 3 title "Monahan and Lu's stage A (W / 10.7)"
 GP
-(cd "$work" && gnuplot whitecaps.gp)
-cp "$work/whitecaps.png" "$out/whitecaps.png"
+(cd "$work" && gnuplot whitecaps.gp) || die "gnuplot failed on $work/whitecaps.gp"
+cp -- "$work/whitecaps.png" "$out/whitecaps.png" || die "cannot copy whitecaps.png to $out"
 echo "whitecap_figure: $out/whitecaps.png"
