@@ -121,7 +121,8 @@ function(add_step name)
   add_test(NAME ${name}.windowed
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/windowed.sh" $<TARGET_FILE:${name}>)
   # RESOURCE_LOCK: two `xvfb-run -a` starting at once can race for the same display number.
+  # XDG_CONFIG_HOME: a folder of the build's, so that a learner's saved panel is never read.
   set_tests_properties(${name}.windowed PROPERTIES LABELS "windowed;gpu;${name}" TIMEOUT 300 RESOURCE_LOCK xvfb
-    SKIP_RETURN_CODE 77)
+    SKIP_RETURN_CODE 77 ENVIRONMENT "XDG_CONFIG_HOME=${CMAKE_BINARY_DIR}/test-output/config")
 endfunction()
 

@@ -172,7 +172,11 @@ int App::run_loop(const Options& options) {
 void App::frame(const TestProbes& probes, int frame, double dt, double real_dt) {
     framebuffer_size_ = probes.framebuffer_size(*context_, frame, context_->framebuffer_size());
     begin_imgui_frame(dt);  // reads the keys and the mouse for ImGui
-    if (camera_enabled_) camera_.apply(read_camera_input(), float(real_dt));
+    read_input();           // after it: this frame's capture flags judge the queued events
+    if (camera_enabled_) {
+        camera_.apply(read_camera_input(), float(real_dt));
+        if (frame_input_.drag_ended) report_camera();
+    }
 
     update(time_, dt);
     const bool drawable = framebuffer_size_.x > 0 && framebuffer_size_.y > 0;  // zero while minimised
@@ -191,7 +195,9 @@ void App::frame(const TestProbes& probes, int frame, double dt, double real_dt) 
     }
     draw_panel(float(real_dt * 1000.0));
     end_imgui_frame();
-    if (drawable && panel_visible_ && imgui_renderer_ready_) {
+    // The panel, or with the panel hidden the split view's labels (which side is which).
+    const bool overlay = panel_visible_ || (split_view_ && split_variants_);
+    if (drawable && overlay && imgui_renderer_ready_) {
         bind_target();
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }

@@ -12,7 +12,8 @@
 //   OCEAN_MAIN(Chapter)
 //
 // One frame, in this order (App::frame in app.cpp):
-//   1. input: window events; the camera moves (mouse, keys);
+//   1. input: the window's events since the last frame, each press in order (F1, Esc, F5, C act
+//      here, input_events.hpp); the camera moves (mouse, keys); frame_input() holds the rest;
 //   2. update(time, dt): once, GPU passes included;
 //   3. render(): into the target; twice with the split view, once per variant (split_view.hpp);
 //   4. the panel: the framework's widgets, then ui(), showing this frame's state; what the user
@@ -28,6 +29,7 @@
 #include "common/gpu_timer.hpp"
 #include "common/grid.hpp"
 #include "common/hand_over.hpp"
+#include "common/input_events.hpp"
 #include "common/params.hpp"
 #include "common/program_library.hpp"
 #include "common/shader.hpp"
@@ -130,6 +132,17 @@ protected:
     // Declares the camera_* parameters and turns on mouse/keyboard camera control.
     void use_camera(const CameraView& view, double reach = kNearReach);
     Camera& camera() { return camera_; }
+    // This frame's mouse, for a step's own controls (step01 pans its plot, step07 pushes a body),
+    // read in update() or ui(); empty when headless. The camera, where a step uses one, has
+    // already moved with `drag` and `scroll`.
+    struct FrameInput {
+        std::vector<InputEvent> presses;  // the mouse-button presses ImGui did not take, in order
+        glm::vec2 drag{0.0f};             // pixels moved with the left button down (not on the panel)
+        float scroll = 0;                 // wheel steps (not over the panel)
+        glm::dvec2 cursor{0.0};           // the cursor now, window pixels from the top left
+        bool drag_ended = false;          // the left button came up this frame, ending a drag
+    };
+    const FrameInput& frame_input() const { return frame_input_; }
     GpuTimers& timers() { return timers_; }
 
     glm::ivec2 framebuffer_size() const { return framebuffer_size_; }
@@ -158,9 +171,16 @@ private:
     void end_imgui_frame();
     void shutdown_imgui();
     void draw_panel(float frame_ms);
-    // Window input (app_input.cpp).
-    CameraInput read_camera_input();
+    // Window input (app_input.cpp): the GLFW callbacks queue the events (installed before
+    // ImGui's, which chain to them); read_input takes them once a frame, after ImGui's NewFrame.
+    void read_input();
+    void act_on_key(KeyAction action);
+    void report_camera() const;  // after a drag: the view as --set flags
+    CameraInput read_camera_input() const;
     static void on_scroll(struct GLFWwindow* window, double dx, double dy);
+    static void on_cursor_pos(struct GLFWwindow* window, double x, double y);
+    static void on_key(struct GLFWwindow* window, int key, int scancode, int action, int mods);
+    static void on_mouse_button(struct GLFWwindow* window, int button, int action, int mods);
 
     StepInfo info_;
     StepLocation where_;
@@ -179,7 +199,10 @@ private:
     bool imgui_ready_ = false;
     bool imgui_renderer_ready_ = false;  // ImGui's OpenGL 3 backend, only where the panel is drawn
     float scroll_accumulated_ = 0;
-    glm::dvec2 last_mouse_{0.0};
+    InputQueue input_queue_;  // filled by the callbacks between frames
+    DragTracker drag_;
+    glm::dvec2 cursor_{0.0};  // where the events being delivered happened (on_cursor_pos)
+    FrameInput frame_input_;
     std::string preset_path_ = "preset.txt";
     double last_reload_check_ = 0;
     bool split_view_ = false;

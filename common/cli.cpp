@@ -163,8 +163,11 @@ usage: )" + step + R"( [flags]
                         frame (the steps that simulate maps)
   --help                this text
 
-Keys (windowed): drag to orbit, wheel to zoom, C switches orbit/fly camera (WASD, Q/E in fly),
-F1 hides the panel, F5 reloads shaders now (they also reload when their file changes), Esc quits.
+Mouse and keys (windowed): in step01, drag pans the plot and the wheel zooms it about the
+cursor; in the 3D steps, drag orbits the camera, the wheel zooms, C switches orbit/fly camera
+(WASD, Q/E, shift in fly); in step07, the arrows steer the boat and a right click pushes a body.
+Every step: F1 hides the panel, F5 reloads shaders now (they also reload when their file
+changes), Esc quits.
 )";
 }
 

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -41,6 +42,12 @@ int run_next_step(int status, const std::vector<std::string>& command) {
     std::vector<char*> argv;
     for (const auto& a : command) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
+    // execv replaces the process without running its exit: what is still buffered (stdout to a
+    // file or a pipe is fully buffered) would vanish. Flush the C++ streams, then C's.
+    std::cout.flush();
+    std::cerr.flush();
+    std::clog.flush();
+    std::fflush(nullptr);
     execv(argv[0], argv.data());
     std::cerr << "error: cannot start " << command[0] << ": " << std::strerror(errno) << std::endl;
     return kExitRuntimeError;

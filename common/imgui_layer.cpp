@@ -2,15 +2,18 @@
 #include "common/app.hpp"
 
 #include "common/error.hpp"
+#include "common/panel_state.hpp"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <iostream>
+
 namespace ocean {
 
-// ImGui frames run in every run (the keys F1, F5, Esc are read through them), but the panel is
+// ImGui frames run in every run (its capture flags judge the keys, app_input.cpp), but the panel is
 // only drawn in a window or with --ui. ImGui's OpenGL 3 backend is started only then: in 1.86 it loads its GL
 // functions through libGL.so.1 and GLX, which a GPU server rendering through EGL may not have.
 void App::init_imgui(bool draw_panel) {
@@ -21,7 +24,13 @@ void App::init_imgui(bool draw_panel) {
     imgui_ready_ = true;
     if (GLFWwindow* window = context_->window()) {
         glfwSetWindowUserPointer(window, this);
-        glfwSetScrollCallback(window, &App::on_scroll);  // before ImGui, which chains to it
+        // Ours before ImGui's backend, which chains to them (imgui_impl_glfw.cpp): the presses
+        // reach the App's queue as they happen (app_input.cpp).
+        glfwGetCursorPos(window, &cursor_.x, &cursor_.y);
+        glfwSetCursorPosCallback(window, &App::on_cursor_pos);
+        glfwSetScrollCallback(window, &App::on_scroll);
+        glfwSetKeyCallback(window, &App::on_key);
+        glfwSetMouseButtonCallback(window, &App::on_mouse_button);
         ImGui_ImplGlfw_InitForOpenGL(window, true);
     }
     if (!draw_panel) {
@@ -53,7 +62,11 @@ void App::shutdown_imgui() {
     if (!imgui_ready_) return;
     if (imgui_renderer_ready_) ImGui_ImplOpenGL3_Shutdown();
     imgui_renderer_ready_ = false;
-    if (context_ && context_->window() != nullptr) ImGui_ImplGlfw_Shutdown();
+    if (context_ && context_->window() != nullptr) {
+        ImGui_ImplGlfw_Shutdown();  // puts our callbacks back; they find no App from now on
+        glfwSetWindowUserPointer(context_->window(), nullptr);
+    }
+    flush_panel_state(std::cerr);  // a change made in the last second before closing, too
     ImGui::DestroyContext();
     imgui_ready_ = false;
 }

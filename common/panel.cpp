@@ -2,13 +2,16 @@
 // from the registry, so a new parameter needs no UI code), presets, shader errors, and then
 // the step's own ui() hook.
 #include "common/app.hpp"
+#include "common/panel_state.hpp"
 #include "common/panel_widgets.hpp"
+#include "common/param_groups.hpp"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <algorithm>
 #include <array>
+#include <iostream>
 
 namespace ocean {
 
@@ -76,43 +79,72 @@ bool param_widget(Param& p) {
 
 bool param_widgets(ParamRegistry& params) {
     bool changed = false;
-    std::string open_group;
-    bool group_open = true;
-    const auto& all = params.all();
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        const auto& p = all[i];
-        if (p->group() != open_group) {
-            open_group = p->group();
-            // A group whose parameters are all hidden (wave 7 of 3) gets no header at all.
-            bool any_visible = false;
-            for (std::size_t j = i; j < all.size() && all[j]->group() == open_group; ++j)
-                any_visible = any_visible || all[j]->visible();
-            // Ungrouped parameters are always shown; groups start folded to keep the panel short.
-            group_open = open_group.empty() || (any_visible && ImGui::CollapsingHeader(open_group.c_str()));
-        }
-        if (!group_open || !p->visible()) continue;
-        if (param_widget(*p)) changed = true;
+    // One header per group, in the order the groups first appear, with every parameter of the
+    // group under it wherever it was declared (param_groups.hpp).
+    for (const ParamGroup& group : group_params(params.all())) {
+        // A group whose parameters are all hidden (wave 7 of 3) gets no header at all.
+        const bool any_visible = std::any_of(group.params.begin(), group.params.end(),
+                                             [](const Param* p) { return p->visible(); });
+        if (!any_visible) continue;
+        // Ungrouped parameters are always shown; groups start folded to keep the panel short.
+        if (!group.name.empty() && !ImGui::CollapsingHeader(group.name.c_str())) continue;
+        for (Param* p : group.params)
+            if (p->visible() && param_widget(*p)) changed = true;
     }
     return changed;
 }
 
-void App::draw_panel(float frame_ms) {
-    GLFWwindow* window = context_->window();
-    if (window != nullptr && !ImGui::GetIO().WantCaptureKeyboard) {
-        if (ImGui::IsKeyPressed(GLFW_KEY_F1)) panel_visible_ = !panel_visible_;
-        if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) context_->request_close();
-        if (ImGui::IsKeyPressed(GLFW_KEY_F5))
-            programs_.rebuild_all();
-        if (camera_enabled_ && ImGui::IsKeyPressed(GLFW_KEY_C)) {
-            camera_.mode = camera_.mode == Camera::Orbit ? Camera::Fly : Camera::Orbit;
+// The split view beside the panel: the halves divide at the middle of the widest part of the
+// window the panel leaves free (from the next frame's render on), so that both variants show as
+// much; the labels sit at the bottom of each half, over everything. A folded panel, or one that
+// leaves less than a third free, changes nothing: the middle.
+static void split_beside_panel(SplitView& split, const SplitVariants& variants, glm::ivec2 framebuffer_size,
+                               ImVec2 panel_pos, ImVec2 panel_size, bool expanded) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    if (display.x < 1 || framebuffer_size.x < 1) return;
+    float from = 0, to = display.x;  // the free span, ImGui's coordinates
+    if (expanded) {
+        const float left_free = std::max(0.0f, panel_pos.x);
+        const float right_free = display.x - (panel_pos.x + panel_size.x);
+        if (std::max(left_free, right_free) >= display.x / 3) {
+            if (right_free >= left_free) from = panel_pos.x + panel_size.x;
+            else to = panel_pos.x;
         }
     }
-    if (!panel_visible_) return;
+    const float divide = 0.5f * (from + to);
+    const float scale = float(framebuffer_size.x) / display.x;  // framebuffer pixels per ImGui unit
+    split.set_divide(int(divide * scale + 0.5f));
+    draw_split_labels(variants, divide);
+}
 
-    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    // As tall as the screen allows; the panel scrolls when a step has more to show.
-    ImGui::SetNextWindowSize(ImVec2(390, ImGui::GetIO().DisplaySize.y - 20), ImGuiCond_FirstUseEver);
-    ImGui::Begin(step_name().c_str());
+void App::draw_panel(float frame_ms) {
+    // The keys (F1, Esc, F5, C) are handled before this, from the window's events (app_input.cpp).
+    if (!panel_visible_) {
+        // The split view's labels stay (at the window's middle, where the line is without the
+        // panel); they show where App::frame renders ImGui's draw data with the panel hidden.
+        if (split_view_ && split_variants_)
+            draw_split_labels(split_variants_(), 0.5f * ImGui::GetIO().DisplaySize.x);
+        return;
+    }
+
+    // A window a learner moves, resizes and folds, kept on screen (panel_state.hpp); a windowed
+    // run starts it where the last one left it and remembers it (never a headless run: its
+    // pictures stay reproducible).
+    PanelState* state = nullptr;
+    if (context_->window() != nullptr) state = &panel_state_of_current_context(step_name());
+    if (state != nullptr) state->load(std::cerr);
+    const bool expanded = begin_panel_window(step_name());
+    const ImVec2 panel_pos = ImGui::GetWindowPos(), panel_size = ImGui::GetWindowSize();
+    if (!expanded) {
+        ImGui::End();
+        if (state != nullptr) state->save_if_wanted(std::cerr);
+        if (split_view_ && split_variants_)
+            split_beside_panel(split_, split_variants_(), framebuffer_size_, panel_pos, panel_size, false);
+        return;
+    }
+    ImGui::TextDisabled("%s", kPanelHint);
+    // Widgets leave room for their labels (snake_case names up to 15 characters or so).
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);
     // Previous / next chapter, at the same moment and with the same view (bgfx's example dialog).
     const auto& steps = all_steps();
     const auto here = std::find(steps.begin(), steps.end(), step_name());
@@ -150,14 +182,9 @@ void App::draw_panel(float frame_ms) {
         const SplitVariants variants = split_variants_();
         ImGui::Checkbox("split view", &split_view_);
         if (split_view_) {
-            ImGui::SameLine();
+            ImGui::PushTextWrapPos(0);
             ImGui::TextDisabled("left: %s | right: %s", variants.left_label.c_str(), variants.right_label.c_str());
-            // Labels on the picture itself, at the top of each half.
-            ImDrawList* draw = ImGui::GetBackgroundDrawList();
-            const float middle = 0.5f * float(framebuffer_size_.x);
-            draw->AddText(ImVec2(middle - 8 - ImGui::CalcTextSize(variants.left_label.c_str()).x, 8),
-                          IM_COL32(255, 255, 255, 255), variants.left_label.c_str());
-            draw->AddText(ImVec2(middle + 8, 8), IM_COL32(255, 255, 255, 255), variants.right_label.c_str());
+            ImGui::PopTextWrapPos();
         }
     }
     ImGui::Separator();
@@ -187,7 +214,12 @@ void App::draw_panel(float frame_ms) {
         ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", message->c_str());
         ImGui::PopTextWrapPos();
     }
+    ImGui::PopItemWidth();
     ImGui::End();
+    if (state != nullptr) state->save_if_wanted(std::cerr);
+    if (split_view_ && split_variants_)
+        split_beside_panel(split_, split_variants_(), framebuffer_size_, panel_pos, panel_size, true);
 }
+
 
 }  // namespace ocean

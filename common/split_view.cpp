@@ -2,7 +2,17 @@
 
 #include "common/text.hpp"
 
+#include <imgui.h>
+
+#include <algorithm>
+#include <iostream>
+
 namespace ocean {
+
+int SplitView::divide(int width) const {
+    if (!divide_ || width < 3) return width / 2;
+    return std::clamp(*divide_, 1, width - 1);
+}
 
 std::optional<std::string> SplitView::render(ParamRegistry& params, const SplitVariants& variants, glm::ivec2 size,
                                              GLuint target, const std::function<void()>& render_frame) {
@@ -13,6 +23,12 @@ std::optional<std::string> SplitView::render(ParamRegistry& params, const SplitV
             if (Param* p = params.find(trim(assignment.substr(0, assignment.find('=')))))
                 saved.emplace_back(p, p->value());
     std::optional<std::string> message;
+    // Which side is which, said once where the picture cannot (headless runs, the panel hidden).
+    const std::string labels = "split view: left " + variants.left_label + " | right " + variants.right_label;
+    if (labels != printed_labels_) {
+        std::cout << labels << "\n";
+        printed_labels_ = labels;
+    }
     if (size_ != size) {
         colour_ = make_renderbuffer();
         glNamedRenderbufferStorage(colour_.id(), GL_RGBA8, size.x, size.y);
@@ -20,7 +36,9 @@ std::optional<std::string> SplitView::render(ParamRegistry& params, const SplitV
         glNamedFramebufferRenderbuffer(left_half_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.id());
         size_ = size;
     }
-    const int middle = size.x / 2;
+    const int middle = divide(size.x);
+    divide_.reset();
+    last_divide_ = middle;
     for (int side = 0; side < 2; ++side) {
         for (const auto& assignment : side == 0 ? variants.left : variants.right)
             if (auto error = params.set_assignment(assignment)) message = "split view: " + *error;
@@ -41,6 +59,24 @@ std::optional<std::string> SplitView::render(ParamRegistry& params, const SplitV
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
     return message;
+}
+
+void draw_split_labels(const SplitVariants& variants, float divide) {
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    const float bottom = ImGui::GetIO().DisplaySize.y - 8;
+    const auto label = [&](const std::string& text, float x, float row) {
+        const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+        const ImVec2 at(x, bottom - size.y - row * (size.y + 6));
+        draw->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2),
+                            IM_COL32(0, 0, 0, 160), 3);
+        draw->AddText(at, IM_COL32(255, 255, 255, 255), text.c_str());
+    };
+    // Each against its side of the line: the left one ends 8 pixels before it, the right one starts after.
+    const float left_width = ImGui::CalcTextSize(variants.left_label.c_str()).x;
+    // A left half too narrow for its label: the label goes a row up, clear of the right one.
+    const float left_x = divide - 8 - left_width;
+    label(variants.left_label, std::max(4.0f, left_x), left_x < 4 ? 1.0f : 0.0f);
+    label(variants.right_label, divide + 8, 0);
 }
 
 }  // namespace ocean

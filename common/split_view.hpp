@@ -26,6 +26,16 @@ struct SplitVariants {
 
 class SplitView {
 public:
+    // Where the next render() divides the halves, in pixels from the left: the panel sets it each
+    // frame it is drawn (the middle of the part of the window it leaves free, so that both
+    // variants show as much); a frame without it (no panel: headless runs, F1) divides at the
+    // middle. Used once.
+    void set_divide(int x) { divide_ = x; }
+    // The divide of a target `width` wide: the one set, kept a pixel inside, or the middle.
+    int divide(int width) const;
+    // Where the halves were divided in the last render (0 before any).
+    int last_divide() const { return last_divide_; }
+
     // Renders `render_frame` once per variant into `target` (of `size`), composed left | right.
     // Returns the message for a variant assignment the registry refuses (the frame is still drawn).
     std::optional<std::string> render(ParamRegistry& params, const SplitVariants& variants, glm::ivec2 size,
@@ -35,6 +45,14 @@ private:
     Renderbuffer colour_;
     Framebuffer left_half_;
     glm::ivec2 size_{0};
+    std::optional<int> divide_;
+    int last_divide_ = 0;
+    std::string printed_labels_;  // the labels last told on stdout
 };
+
+// The variants' labels on the picture, at the bottom of each half, against the divide at `divide`
+// (ImGui's coordinates), below the panel's default rectangle: drawn over everything, on a dark
+// band, so that no window hides them.
+void draw_split_labels(const SplitVariants& variants, float divide);
 
 }  // namespace ocean

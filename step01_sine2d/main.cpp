@@ -3,15 +3,18 @@
 // New: everything (this is the first step). Each wave is a_i sin(x w_i - t phi_i) with
 // w = 2 pi / wavelength and phi = speed * 2 pi / wavelength; the plot shows each wave in its
 // own colour and their sum in white, evaluated per pixel in plot.frag.
-// Controls: the panel's sliders (per-wave wavelength, amplitude, speed), add/remove buttons.
+// Controls: the panel's sliders (per-wave wavelength, amplitude, speed), add/remove buttons; in
+// the window, drag pans the plot and the wheel zooms it about the cursor (x_min, x_span).
 #include "common/app.hpp"
 #include "step01_sine2d/sine_sum.hpp"
 #include "step01_sine2d/wave_params.hpp"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
 
 namespace {
 
@@ -55,6 +58,31 @@ public:
 private:
 
     void init() override { plot_ = program("plot", {"fullscreen.vert", "plot.frag"}); }
+
+    void update(double /*time*/, double /*dt*/) override { pan_and_zoom(); }
+
+    // The mouse moves the plot's window on x (a 2D step has no camera): a drag carries the curve
+    // with the cursor, a wheel step zooms by 10% keeping the point under the cursor in place.
+    // Through the registry, so the ranges hold and the panel's view sliders follow.
+    void pan_and_zoom() {
+        const FrameInput& input = frame_input();
+        const double width = double(ImGui::GetIO().DisplaySize.x);  // window pixels, as the mouse's
+        if (width <= 0 || (input.drag.x == 0 && input.scroll == 0 && !input.drag_ended)) return;
+        ocean::Param& x_min = *params().find("x_min");
+        ocean::Param& x_span = *params().find("x_span");
+        const double metres_per_pixel = double(x_span_) / width;
+        if (input.drag.x != 0) x_min.set_number(double(x_min_) - double(input.drag.x) * metres_per_pixel);
+        if (input.scroll != 0) {
+            const double fixed = double(x_min_) + input.cursor.x * metres_per_pixel;  // under the cursor
+            const double before = double(x_span_);
+            x_span.set_number(before * std::pow(0.9, double(input.scroll)));
+            x_min.set_number(fixed - (fixed - double(x_min_)) * double(x_span_) / before);
+        }
+        // Where a drag or a wheel step left the plot, as the flags that start there.
+        if (input.drag_ended || input.scroll != 0)
+            std::cout << "plot: x from " << x_min_ << " to " << x_min_ + x_span_ << " m (--set x_min=" << x_min_
+                      << " --set x_span=" << x_span_ << ")" << std::endl;
+    }
 
     std::vector<step01::Wave> waves() const {
         std::vector<step01::Wave> out;

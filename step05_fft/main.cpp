@@ -78,8 +78,13 @@ public:
             return times.figures();
         });
         offer_warm_up([this] { return Backend(backend_) == Backend::Auto && (!gpu_ || gpu_->auto_deciding()); });
+        // Above the DFT's resolution the left half is the GPU FFT too (backend() falls back): its
+        // label says so, as the picture shows it.
         offer_split_view([this] {
-            return SplitVariants{"naive DFT", "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
+            const std::string left = ocean_params_.spectrum.resolution > step05::kMaxDftSize
+                                         ? "naive DFT (off above " + std::to_string(step05::kMaxDftSize) + ": GPU FFT)"
+                                         : "naive DFT";
+            return SplitVariants{left, "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
         });
     }
 

@@ -5,7 +5,7 @@
 // directly, or from the GPU through map_readback.hpp, a frame late), the height above each hull
 // cell is found by inverting the choppy displacement (sea_query.hpp), and a buoy, a raft and a
 // boat move under buoyancy and drag (floating_body.hpp).
-// Controls: step06's; the arrows steer the boat, a right click pushes the body under the cursor;
+// Controls: step06's; the arrows (held) steer the boat, a right click pushes the body under the cursor;
 // the panel sets each body's size and density, drops them again, and sets the boat's throttle
 // and rudder.
 #include "common/app.hpp"
@@ -31,6 +31,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -105,6 +107,7 @@ private:
             bodies_built_for_ = body_params_.changed.value;
             drop_bodies();
         }
+        read_input();
         steer_boat();
         const double sea_interval = sea_now_->time - sea_before_->time;
         for (auto& body : bodies_) body.step(before, sea_now_->sea, dt, sea_interval);
@@ -169,16 +172,28 @@ private:
         bodies_.emplace_back(boat, spot(22, -9), glm::angleAxis(-heading + 1.1, glm::dvec3(0, 1, 0)));
     }
 
-    // Thrust along the boat's length at its middle, the rudder's sideways force at its stern.
+    // Thrust along the boat's length at its middle, the rudder's sideways force at its stern: the
+    // panel's throttle and rudder, and the arrows on top while held.
+    //
+    // The arrows' numbers, for a change a learner sees within a second at the defaults (9 m boat,
+    // drag c = 0.5/s). Floating, the boat displaces its own mass of water, so the hull's drag is
+    // about m c v: a thrust k m g reaches k g / c and covers k g (1 - (1 - e^-c) / c) / c = 0.43 k g
+    // metres in the first second. k = 0.4 (a fast motor boat's thrust to weight): 1.7 m in the first
+    // second, 7 m/s after five (the panel's throttle, a twentieth of the weight, gives 0.2 m and
+    // 0.9 m/s: holding the arrows, a learner saw nothing move). The rudder's force r m g at the
+    // stern against the yaw inertia m (L^2 + B^2) / 12 and the drag of the hull's cells: r = 0.1
+    // turns the boat 16 degrees in the first second and about 50 degrees a second after (before:
+    // r = 0.01, a degree or two). Both measured with FloatingBody on a flat sea at these defaults.
+    static constexpr double kArrowThrust = 0.4, kArrowRudder = 0.1;  // fractions of the weight
     void steer_boat() {
         if (bodies_.size() < 3) return;
         step07::FloatingBody& boat = bodies_[2];
         const double weight = boat.mass() * ocean::kGravity;
         const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0), across = boat.orientation() * glm::dvec3(0, 0, 1);
-        const double throttle = std::clamp(double(steering_.throttle) + key_throttle_, -1.0, 1.0);
-        const double rudder = std::clamp(double(steering_.rudder) + key_rudder_, -1.0, 1.0);
-        boat.add_force(throttle * weight / 20 * along, {0, 0, 0});
-        boat.add_force(rudder * weight / 100 * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
+        const double thrust = double(steering_.throttle) / 20 + kArrowThrust * key_throttle_;
+        const double turn = double(steering_.rudder) / 100 + kArrowRudder * key_rudder_;
+        boat.add_force(thrust * weight * along, {0, 0, 0});
+        boat.add_force(turn * weight * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
     }
 
     // step06's frame with the bodies and the query dots drawn into the scene between the sea (its
@@ -237,17 +252,24 @@ private:
         glDisable(GL_DEPTH_TEST);
     }
 
-    // The keys and the mouse (windowed; ui() runs once a frame): the arrows steer the boat, a
-    // right click pushes the body under the cursor away from the camera.
+    // The keys and the mouse (windowed; each frame in update(), the panel shown or not): the arrows,
+    // held, steer the boat; each right click pushes the body under the cursor away from the camera.
     void read_input() {
         const ImGuiIO& io = ImGui::GetIO();
+        key_throttle_ = key_rudder_ = 0;
         if (!io.WantCaptureKeyboard) {
             key_throttle_ = double(ImGui::IsKeyDown(GLFW_KEY_UP)) - double(ImGui::IsKeyDown(GLFW_KEY_DOWN));
             key_rudder_ = double(ImGui::IsKeyDown(GLFW_KEY_RIGHT)) - double(ImGui::IsKeyDown(GLFW_KEY_LEFT));
         }
-        if (io.WantCaptureMouse || !ImGui::IsMouseClicked(ImGuiMouseButton_Right) || io.DisplaySize.x <= 0) return;
+        for (const ocean::InputEvent& press : frame_input().presses)
+            if (press.code == ocean::input::kMouseRight) push_at(glm::vec2(press.at));
+    }
+
+    void push_at(glm::vec2 cursor) {
+        const ImGuiIO& io = ImGui::GetIO();
+        if (io.DisplaySize.x <= 0 || io.DisplaySize.y <= 0 || bodies_.empty()) return;
         // The cursor's ray, from the world origin near the camera, then the body closest to it.
-        const glm::vec2 ndc(2 * io.MousePos.x / io.DisplaySize.x - 1, 1 - 2 * io.MousePos.y / io.DisplaySize.y);
+        const glm::vec2 ndc(2 * cursor.x / io.DisplaySize.x - 1, 1 - 2 * cursor.y / io.DisplaySize.y);
         const glm::mat4 inverse = glm::inverse(camera().projection(aspect()) * camera().view(sea_.world_origin()));
         const glm::vec4 near = inverse * glm::vec4(ndc, -1, 1), far = inverse * glm::vec4(ndc, 1, 1);
         const glm::dvec3 from = sea_.world_origin() + glm::dvec3(glm::vec3(near) / near.w);
@@ -260,19 +282,36 @@ private:
             const double miss = glm::length(body.position() - closest) / glm::length(body.settings().shape.size);
             if (miss < 1.0 && (hit == nullptr || miss < best)) hit = &body, best = miss, at = closest;
         }
+        static const char* names[3] = {"buoy", "raft", "boat"};
+        if (hit == nullptr) {
+            std::cout << "push: no body under the cursor" << std::endl;
+            return;
+        }
+        // A push a learner sees: the body moves about its own size (3 to 6 m) in the first second.
+        // Under the linear drag c a speed v covers v (1 - e^-c) / c in a second, so v = d c / (1 - e^-c)
+        // (6.4 m/s for the 5 m raft at c = 0.5/s: 5 m in the first second on a flat sea; the 2 m/s before
+        // moved it 0.8 m, invisible from 26 m). 6 m at most: the 9 m boat gets 7.6 m/s, not 11.
+        const glm::dvec3 size = hit->settings().shape.size;
+        const double d = std::clamp(std::max(size.x, size.z), 3.0, 6.0);
+        const double c = hit->settings().linear_drag;
+        const double speed = c > 1e-6 ? d * c / (1 - std::exp(-c)) : d;
         const glm::dvec3 push = glm::normalize(glm::dvec3(ray.x, 0.0, ray.z) + glm::dvec3(1e-9, 0, 0));
-        if (hit != nullptr) hit->push(2.0 * hit->mass() * push, at);  // 2 m/s away from the camera
+        hit->push(speed * hit->mass() * push, at);  // at the point hit: it tilts as well
+        std::cout << "push: the " << names[std::size_t(hit - bodies_.data()) % 3] << ", "
+                  << std::round(speed * 10) / 10 << " m/s away from the camera" << std::endl;
     }
 
     void ui() override {
-        read_input();
         ImGui::Separator();
-        ImGui::Text("bodies and queries: %.2f ms a frame; the maps %s", bodies_ms_,
-                    latency_frames_ == 0 ? "of this frame (FFTW)" : "read back, a frame late");
+        // Wrapped at the panel's edge, however narrow it is.
+        ImGui::TextWrapped("bodies and queries: %.2f ms a frame; the maps %s", bodies_ms_,
+                           latency_frames_ == 0 ? "of this frame (FFTW)" : "read back, a frame late");
+        ImGui::TextWrapped("arrows: steer the boat; right click: push a body");
         static const char* names[3] = {"buoy", "raft", "boat"};
         for (std::size_t b = 0; b < bodies_.size(); ++b)
-            ImGui::Text("%s: %.2f m above the mean level, %.0f%% under water", names[b % 3], bodies_[b].position().y,
-                        100 * bodies_[b].submerged_volume() / bodies_[b].volume());
+            ImGui::TextWrapped("%s: %.2f m above the mean level, %.0f%% under water, %.1f m/s", names[b % 3],
+                               bodies_[b].position().y, 100 * bodies_[b].submerged_volume() / bodies_[b].volume(),
+                               glm::length(bodies_[b].velocity()));
         if (ImGui::Button("drop again")) bodies_.clear();
         ImGui::SameLine();
         if (ImGui::Button("push the raft") && bodies_.size() > 1)

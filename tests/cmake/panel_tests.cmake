@@ -1,0 +1,21 @@
+# The panel as a learner uses it (issue: the window as a learner uses it). The unit tests
+# (tests/unit/test_panel_*.cpp, in unit_tests: unit.PanelGroups.*, unit.PanelWindow.*,
+# unit.PanelStateFile.*, unit.PanelStatePath.*) check the groups, the panel's first-use rectangle
+# at 960x540 and 640x360, and its state carried between runs; here, what a run draws and prints.
+
+# step05's split view at the default resolution 256, where its left half is the GPU FFT too, says
+# so; at 64 it is the naive DFT (tests/smoke/panel_split_labels.sh).
+if(TARGET step05_fft)
+  add_test(NAME step05_fft.split_labels
+    COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/smoke/panel_split_labels.sh" $<TARGET_FILE:step05_fft>)
+  set_tests_properties(step05_fft.split_labels PROPERTIES LABELS "gpu;split;step05_fft" TIMEOUT 300)
+endif()
+
+# The panel a headless run draws (--ui), measured on its screenshot against the same frame without
+# it: at 960x540 and 640x360 it covers at most a third of the window and lies inside it
+# (gpu.PanelScreen.*; its own executable, as app_tests: App makes its own context).
+add_executable(panel_screen_tests unit/test_panel_screen.cpp)
+target_link_libraries(panel_screen_tests PRIVATE ocean_common GTest::gtest_main)
+target_compile_definitions(panel_screen_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+ocean_warnings(panel_screen_tests)
+gtest_discover_tests(panel_screen_tests TEST_PREFIX "gpu." PROPERTIES LABELS gpu DISCOVERY_TIMEOUT 60)

@@ -1,0 +1,19 @@
+# window_input: a step's real window driven by xdotool on Xvfb (tests/smoke/window_input.sh): key
+# taps shorter than a frame act (F1 toggles the panel on every tap, Esc quits), a drag turns the
+# camera from where the button went down, step01's mouse pans and zooms its plot, step07's arrows
+# leave F1 working and a right click pushes the raft. Skipped (77) without xvfb-run or xdotool.
+set(_window_input "${CMAKE_CURRENT_SOURCE_DIR}/smoke/window_input.sh")
+foreach(_case IN ITEMS "step01_sine2d;keys" "step04_fbm;keys" "step07_buoyancy;steer_push"
+                       "step04_fbm;drag" "step01_sine2d;plot")
+  list(GET _case 0 _step)
+  list(GET _case 1 _kind)
+  set(_flags)
+  if(_kind STREQUAL "drag")
+    set(_flags --set camera_yaw=0 --set camera_pitch=20)
+  endif()
+  set(_name ${_step}.window_input.${_kind})
+  add_test(NAME ${_name} COMMAND bash "${_window_input}" ${_kind} $<TARGET_FILE:${_step}> ${_flags})
+  set_tests_properties(${_name} PROPERTIES LABELS "windowed;gpu;${_step}" TIMEOUT 120 SKIP_RETURN_CODE 77
+                                           RUN_SERIAL TRUE
+                                           ENVIRONMENT "XDG_CONFIG_HOME=${CMAKE_BINARY_DIR}/test-output/config")
+endforeach()

@@ -1,0 +1,169 @@
+#!/usr/bin/env bash
+# window_input.sh CASE STEP_EXE [STEP FLAGS...]: drives a step's real GLFW window on a virtual X server (Xvfb) with
+# xdotool, as a person would, and checks what the step does (the lines it prints when a key or the
+# mouse acts, its exit). A "tap within one frame" is made certain, not left to timing: the step is
+# stopped (SIGSTOP), the press and release are sent, and it goes on (SIGCONT), so both wait for the
+# same frame, as a quick tap does at a low frame rate. Cases:
+#   keys   F1 tapped once, then twice within one frame: three toggles (panel hidden, shown,
+#          hidden); then Esc tapped within one frame closes the window: exit 0 long before
+#          --frames runs out.
+#   steer_push  (step07) keys, with the up and right arrows held first (the boat), and, the panel
+#          hidden, a right click on the raft within one frame pushes it (its "push:" line).
+#   drag   (a 3D step) the cursor jumps across the window and the left button goes down within one
+#          frame, then drags 80 px right: the yaw turns by 80 x 0.25 = 20 degrees, not by the jump.
+#   plot   (step01) a drag 64 px left pans the plot by 64 / 640 of its 32 m span (x_min -4 -> -0.8),
+#          then one wheel step zooms it to 0.9 of the span about the cursor.
+# Exit 77 (ctest: skipped) with the reason printed when xvfb-run or xdotool is missing.
+set -u
+case_name=$1
+exe=$2
+shift 2
+if [ -z "${WINDOW_INPUT_INNER:-}" ]; then
+  for tool in xvfb-run xdotool; do
+    if ! command -v "$tool" > /dev/null; then
+      echo "SKIP: $tool not found, the window's input was not tested (apt-get install xvfb xauth xdotool)"
+      exit 77
+    fi
+  done
+  WINDOW_INPUT_INNER=1 exec xvfb-run -a -s "-screen 0 1024x768x24" bash "$0" "$case_name" "$exe" "$@"
+fi
+
+out=$(mktemp -d)
+pid=
+cleanup() {
+  [ -n "$pid" ] && kill -CONT "$pid" 2> /dev/null && kill -TERM "$pid" 2> /dev/null
+  rm -rf "$out"
+}
+trap cleanup EXIT
+fail() {
+  echo "--- the step's output:"
+  cat "$out/log"
+  echo "FAIL: $*"
+  exit 1
+}
+# Waits up to $2 seconds for a line of the log matching $1 (grep -E); prints it.
+wait_for() {
+  for _ in $(seq 1 $(($2 * 10))); do
+    grep -E -- "$1" "$out/log" && return 0
+    sleep 0.1
+  done
+  return 1
+}
+# Runs "$@" (xdotool commands) while the step is stopped: all of it reaches one frame.
+within_one_frame() {
+  kill -STOP "$pid"
+  "$@"
+  sleep 0.2  # the X server has queued the events for the stopped client
+  kill -CONT "$pid"
+}
+
+"$exe" --frames 100000 --size 640x360 "$@" > "$out/log" 2>&1 &
+pid=$!
+# The window, then a frame drawn (the first frames compile the shaders).
+window=
+for _ in $(seq 1 300); do
+  window=$(xdotool search --onlyvisible --name "^$(basename "$exe")" 2> /dev/null | head -n 1)
+  [ -n "$window" ] && break
+  kill -0 "$pid" 2> /dev/null || fail "the step exited before its window showed"
+  sleep 0.1
+done
+[ -n "$window" ] || fail "no window in 30 s"
+sleep 2
+# The pointer on the picture, right of the panel (390 px wide from x 10), with the keyboard focus.
+xdotool mousemove --window "$window" 520 200 windowfocus --sync "$window" 2> /dev/null ||
+  xdotool mousemove --window "$window" 520 200
+sleep 0.5
+
+case "$case_name" in
+  keys | steer_push)
+    if [ "$case_name" = steer_push ]; then  # held long enough to move the boat, as a learner does
+      xdotool keydown Up keydown Right
+      sleep 1
+      xdotool keyup Up keyup Right
+      sleep 0.3
+    fi
+    within_one_frame xdotool key F1
+    wait_for "^panel: hidden" 10 || fail "F1 tapped within one frame did not hide the panel"
+    within_one_frame xdotool key F1 key F1
+    for _ in $(seq 1 100); do
+      [ "$(grep -c '^panel: ' "$out/log")" -ge 3 ] && break
+      sleep 0.1
+    done
+    [ "$(grep -c '^panel: ' "$out/log")" -eq 3 ] || fail "two taps of F1 within one frame did not toggle twice"
+    [ "$(grep '^panel: ' "$out/log" | tail -n 1 | cut -c1-13)" = "panel: hidden" ] || fail "the panel did not end hidden"
+    if [ "$case_name" = steer_push ]; then  # the raft, 26 m ahead and 5 m right of the "low" camera
+      within_one_frame xdotool mousemove --window "$window" 400 190 click 3
+      wait_for "^push: " 10 || fail "a right click within one frame pushed nothing (no push line)"
+      grep -q "^push: the raft" "$out/log" || fail "the right click on the raft did not push the raft"
+    fi
+    within_one_frame xdotool key Escape
+    for _ in $(seq 1 100); do
+      kill -0 "$pid" 2> /dev/null || break
+      sleep 0.1
+    done
+    kill -0 "$pid" 2> /dev/null && fail "Esc tapped within one frame did not close the window in 10 s"
+    wait "$pid"
+    status=$?
+    pid=
+    [ "$status" -eq 0 ] || fail "closed with Esc, the step exited with status $status"
+    grep -q '^GL ' "$out/log" && fail "the GL reported errors or warnings"
+    echo "ok: F1 toggled the panel on every tap, Esc quit"
+    ;;
+  drag)
+    yaw0=$(grep -oE -- "--set camera_yaw=[-0-9.e]+" "$out/log" | tail -n 1)
+    [ -z "$yaw0" ] || fail "a camera line before any drag"
+    # The cursor far left, then in one frame: to the start of the drag and the button down there.
+    xdotool mousemove --window "$window" 420 250
+    sleep 0.5
+    within_one_frame xdotool mousemove --window "$window" 620 250 mousedown 1
+    for x in 630 640 650 660 670 680 690 700; do
+      xdotool mousemove --window "$window" "$x" 250
+      sleep 0.1
+    done
+    sleep 0.3
+    xdotool mouseup 1
+    line=$(wait_for "^camera: --set camera_yaw=" 10) || fail "no camera line when the drag ended"
+    echo "$line"
+    # Started with --set camera_yaw=0 --set camera_pitch=20 (the CTest command).
+    yaw=$(echo "$line" | sed -E 's/.*camera_yaw=([-0-9.e]+).*/\1/')
+    pitch=$(echo "$line" | sed -E 's/.*camera_pitch=([-0-9.e]+).*/\1/')
+    awk -v y="$yaw" 'BEGIN { exit !(y > 19 && y < 21) }' ||
+      fail "an 80 px drag turned the camera by $yaw degrees, not 20 (0.25 degrees a pixel, from the press)"
+    awk -v p="$pitch" 'BEGIN { exit !(p > 19 && p < 21) }' || fail "a level drag changed the pitch to $pitch"
+    echo "ok: the drag turned the camera by $yaw degrees for 80 px"
+    ;;
+  plot)
+    within_one_frame xdotool mousemove --window "$window" 560 200 mousedown 1
+    for x in 552 544 536 528 520 512 504 496; do
+      xdotool mousemove --window "$window" "$x" 200
+      sleep 0.1
+    done
+    sleep 0.3
+    xdotool mouseup 1
+    line=$(wait_for "^plot: " 10) || fail "a drag did not pan the plot (no plot line)"
+    echo "$line"
+    x_min=$(echo "$line" | sed -E 's/.*x_min=([-0-9.e]+).*/\1/')
+    awk -v x="$x_min" 'BEGIN { exit !(x > -0.9 && x < -0.7) }' ||
+      fail "a 64 px drag left moved x_min from -4 to $x_min, not -0.8"
+    # One wheel step up (button 4) at x 320, the middle: the span 32 -> 28.8 about x_min + 16.
+    xdotool mousemove --window "$window" 320 200
+    sleep 0.3
+    xdotool click 4
+    for _ in $(seq 1 100); do
+      [ "$(grep -c '^plot: ' "$out/log")" -ge 2 ] && break
+      sleep 0.1
+    done
+    line=$(grep '^plot: ' "$out/log" | sed -n 2p)
+    [ -n "$line" ] || fail "a wheel step did not zoom the plot (no second plot line)"
+    echo "$line"
+    span=$(echo "$line" | sed -E 's/.*x_span=([-0-9.e]+).*/\1/')
+    x_min=$(echo "$line" | sed -E 's/.*x_min=([-0-9.e]+).*/\1/')
+    awk -v s="$span" -v x="$x_min" 'BEGIN { exit !(s > 28.7 && s < 28.9 && x > 0.7 && x < 0.9) }' ||
+      fail "a wheel step at the middle gave x_min $x_min, span $span, not 0.8 and 28.8"
+    echo "ok: drag pans the plot, the wheel zooms it about the cursor"
+    ;;
+  *)
+    echo "unknown case '$case_name'"
+    exit 2
+    ;;
+esac
