@@ -179,11 +179,11 @@ private:
     // drag c = 0.5/s). Floating, the boat displaces its own mass of water, so the hull's drag is
     // about m c v: a thrust k m g reaches k g / c and covers k g (1 - (1 - e^-c) / c) / c = 0.43 k g
     // metres in the first second. k = 0.4 (a fast motor boat's thrust to weight): 1.7 m in the first
-    // second, 7 m/s after five (the panel's throttle, a twentieth of the weight, gives 0.2 m and
-    // 0.9 m/s: holding the arrows, a learner saw nothing move). The rudder's force r m g at the
-    // stern against the yaw inertia m (L^2 + B^2) / 12 and the drag of the hull's cells: r = 0.1
-    // turns the boat 16 degrees in the first second and about 50 degrees a second after (before:
-    // r = 0.01, a degree or two). Both measured with FloatingBody on a flat sea at these defaults.
+    // second, 7 m/s after five (the panel's throttle, a twentieth of the weight, is for cruising:
+    // 0.2 m and 0.9 m/s, too little to see from the camera). The rudder's force r m g at the stern
+    // against the yaw inertia m (L^2 + B^2) / 12 and the drag of the hull's cells: r = 0.1 turns
+    // the boat 16 degrees in the first second and about 50 degrees a second after. Both measured
+    // with FloatingBody on a flat sea at these defaults.
     static constexpr double kArrowThrust = 0.4, kArrowRudder = 0.1;  // fractions of the weight
     void steer_boat() {
         if (bodies_.size() < 3) return;
@@ -289,8 +289,8 @@ private:
         }
         // A push a learner sees: the body moves about its own size (3 to 6 m) in the first second.
         // Under the linear drag c a speed v covers v (1 - e^-c) / c in a second, so v = d c / (1 - e^-c)
-        // (6.4 m/s for the 5 m raft at c = 0.5/s: 5 m in the first second on a flat sea; the 2 m/s before
-        // moved it 0.8 m, invisible from 26 m). 6 m at most: the 9 m boat gets 7.6 m/s, not 11.
+        // (6.4 m/s for the 5 m raft at c = 0.5/s: 5 m in the first second on a flat sea, plain from the
+        // camera 26 m away). 6 m at most: the 9 m boat gets 7.6 m/s, not 11; the 1.2 m buoy 3.8 m/s.
         const glm::dvec3 size = hit->settings().shape.size;
         const double d = std::clamp(std::max(size.x, size.z), 3.0, 6.0);
         const double c = hit->settings().linear_drag;

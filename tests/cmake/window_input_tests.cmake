@@ -1,15 +1,20 @@
 # window_input: a step's real window driven by xdotool on Xvfb (tests/smoke/window_input.sh): key
 # taps shorter than a frame act (F1 toggles the panel on every tap, Esc quits), a drag turns the
 # camera from where the button went down, step01's mouse pans and zooms its plot, step07's arrows
-# leave F1 working and a right click pushes the raft. Skipped (77) without xvfb-run or xdotool.
+# leave F1 working and a right click pushes the raft, step01's Next button hands over to step02
+# with both steps' lines in a log file, step04's --split names both variants. Skipped (77) without
+# xvfb-run or xdotool.
 set(_window_input "${CMAKE_CURRENT_SOURCE_DIR}/smoke/window_input.sh")
 foreach(_case IN ITEMS "step01_sine2d;keys" "step04_fbm;keys" "step07_buoyancy;steer_push"
-                       "step04_fbm;drag" "step01_sine2d;plot")
+                       "step04_fbm;drag" "step01_sine2d;plot" "step01_sine2d;next"
+                       "step04_fbm;split")
   list(GET _case 0 _step)
   list(GET _case 1 _kind)
   set(_flags)
   if(_kind STREQUAL "drag")
     set(_flags --set camera_yaw=0 --set camera_pitch=20)
+  elseif(_kind STREQUAL "split")
+    set(_flags --split)
   endif()
   set(_name ${_step}.window_input.${_kind})
   add_test(NAME ${_name} COMMAND bash "${_window_input}" ${_kind} $<TARGET_FILE:${_step}> ${_flags})

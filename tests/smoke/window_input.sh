@@ -13,6 +13,13 @@
 #          frame, then drags 80 px right: the yaw turns by 80 x 0.25 = 20 degrees, not by the jump.
 #   plot   (step01) a drag 64 px left pans the plot by 64 / 640 of its 32 m span (x_min -4 -> -0.8),
 #          then one wheel step zooms it to 0.9 of the span about the cursor.
+#   next   (step01) a click on the panel's Next button ("step02_sine3d >", first row below "F1 hides
+#          this panel"; the panel at its first-use place, a fresh XDG_CONFIG_HOME) hands over: the
+#          process becomes step02 (exec, same pid) in a 640x360 window. The log (stdout and stderr to
+#          a file) holds step01's renderer line, then step02's (lost before the streams were flushed
+#          before exec); F1 in step02 hides its panel, Esc quits with 0.
+#   split  (step04, --split) the split view's line names both variants ("left sine | right
+#          exp(sin - 1)"), before F1 tapped within one frame hides the panel; Esc quits with 0.
 # Exit 77 (ctest: skipped) with the reason printed when xvfb-run or xdotool is missing.
 set -u
 case_name=$1
@@ -30,6 +37,8 @@ fi
 
 out=$(mktemp -d)
 pid=
+# next clicks the panel where it first shows: no state remembered from an earlier run moves it.
+[ "$case_name" = next ] && export XDG_CONFIG_HOME="$out/config"
 cleanup() {
   [ -n "$pid" ] && kill -CONT "$pid" 2> /dev/null && kill -TERM "$pid" 2> /dev/null
   rm -rf "$out"
@@ -56,6 +65,22 @@ within_one_frame() {
   sleep 0.2  # the X server has queued the events for the stopped client
   kill -CONT "$pid"
 }
+# Esc tapped within one frame: the step must close within 10 s and exit 0, with no GL error lines.
+quit_with_esc() {
+  within_one_frame xdotool key Escape
+  for _ in $(seq 1 100); do
+    kill -0 "$pid" 2> /dev/null || break
+    sleep 0.1
+  done
+  kill -0 "$pid" 2> /dev/null && fail "Esc tapped within one frame did not close the window in 10 s"
+  wait "$pid"
+  status=$?
+  pid=
+  [ "$status" -eq 0 ] || fail "closed with Esc, the step exited with status $status"
+  grep -q '^GL ' "$out/log" && fail "the GL reported errors or warnings"
+}
+# The line number of the first log line matching $1 (grep -E); empty when none.
+line_of() { grep -n -E -- "$1" "$out/log" | head -n 1 | cut -d: -f1; }
 
 "$exe" --frames 100000 --size 640x360 "$@" > "$out/log" 2>&1 &
 pid=$!
@@ -161,6 +186,52 @@ case "$case_name" in
     awk -v s="$span" -v x="$x_min" 'BEGIN { exit !(s > 28.7 && s < 28.9 && x > 0.7 && x < 0.9) }' ||
       fail "a wheel step at the middle gave x_min $x_min, span $span, not 0.8 and 28.8"
     echo "ok: drag pans the plot, the wheel zooms it about the cursor"
+    ;;
+  next)
+    [ "$(basename "$exe")" = step01_sine2d ] || fail "the next case is step01's (its Next is step02_sine3d)"
+    # The Next button: panel at (10, 10), title bar 13 + 2 x 3 = 19, window padding 8, the hint
+    # line 13, item spacing 4: the first row's buttons span y 54-72; "< (first)" spans x 18-89,
+    # "step02_sine3d >" x 97-208 (measured on a --screenshot of 640x360). Its middle:
+    xdotool mousemove --window "$window" 150 63
+    sleep 0.5  # hovered for some frames before the press
+    xdotool mousedown 1
+    sleep 0.3
+    xdotool mouseup 1
+    window2=
+    for _ in $(seq 1 300); do
+      window2=$(xdotool search --onlyvisible --name "^step02_sine3d" 2> /dev/null | head -n 1)
+      [ -n "$window2" ] && break
+      kill -0 "$pid" 2> /dev/null || fail "the step exited after the click, no step02 window showed"
+      sleep 0.1
+    done
+    [ -n "$window2" ] || fail "a click on Next (150, 63) showed no step02_sine3d window in 30 s"
+    geometry=$(xdotool getwindowgeometry "$window2" | grep -oE '[0-9]+x[0-9]+$')
+    [ "$geometry" = 640x360 ] || fail "step02's window is $geometry, not step01's 640x360"
+    xdotool mousemove --window "$window2" 520 200 windowfocus --sync "$window2" 2> /dev/null ||
+      xdotool mousemove --window "$window2" 520 200
+    sleep 0.3
+    # step02 takes input (and F1's line flushes its renderer line to the log).
+    within_one_frame xdotool key F1
+    wait_for "^panel: hidden" 15 || fail "F1 tapped within one frame in step02 did not hide its panel"
+    quit_with_esc
+    first=$(line_of "^step01_sine2d: ")
+    second=$(line_of "^step02_sine3d: ")
+    [ -n "$first" ] || fail "step01's renderer line is not in the log (its buffered stdout lost at the exec?)"
+    [ -n "$second" ] || fail "step02's renderer line is not in the log"
+    [ "$first" -lt "$second" ] || fail "step01's line (line $first) is not before step02's (line $second)"
+    [ "$second" -lt "$(line_of "^panel: hidden")" ] || fail "the panel line is not step02's"
+    echo "ok: Next handed over to step02 in a 640x360 window, both steps' lines in the log, Esc quit"
+    ;;
+  split)
+    within_one_frame xdotool key F1
+    wait_for "^panel: hidden" 10 || fail "F1 tapped within one frame did not hide the panel"
+    split=$(line_of "^split view: left ")
+    [ -n "$split" ] || fail "no 'split view: left ... | right ...' line with --split"
+    grep -F -x -q "split view: left sine | right exp(sin - 1)" "$out/log" ||
+      fail "the split view's line does not name the variants sine and exp(sin - 1)"
+    [ "$split" -lt "$(line_of "^panel: hidden")" ] || fail "the split view's line came only after F1"
+    quit_with_esc
+    echo "ok: the split view named sine | exp(sin - 1), F1 hid the panel, Esc quit"
     ;;
   *)
     echo "unknown case '$case_name'"
