@@ -5,9 +5,15 @@
 # with both steps' lines in a log file, step04's --split names both variants. Skipped (77) without
 # xvfb-run or xdotool.
 set(_window_input "${CMAKE_CURRENT_SOURCE_DIR}/smoke/window_input.sh")
-foreach(_case IN ITEMS "step01_sine2d;keys" "step04_fbm;keys" "step07_buoyancy;steer_push"
-                       "step04_fbm;drag" "step01_sine2d;plot" "step01_sine2d;next"
-                       "step04_fbm;split")
+# Every chapter's keys (step07's through steer_push, which taps them too), then what users do most.
+set(_cases)
+foreach(_step IN LISTS OCEAN_STEPS)
+  if(NOT _step STREQUAL "step07_buoyancy")
+    list(APPEND _cases "${_step}\;keys")
+  endif()
+endforeach()
+foreach(_case IN LISTS _cases ITEMS "step07_buoyancy;steer_push" "step04_fbm;drag" "step01_sine2d;plot"
+                                    "step01_sine2d;next" "step04_fbm;split")
   list(GET _case 0 _step)
   list(GET _case 1 _kind)
   set(_flags)
