@@ -32,7 +32,16 @@ if [ -z "${WINDOW_INPUT_INNER:-}" ]; then
       exit 77
     fi
   done
-  WINDOW_INPUT_INNER=1 exec xvfb-run -a -s "-screen 0 1024x768x24" bash "$0" "$case_name" "$exe" "$@"
+  # xvfb-run -a can hand out a display whose server is still going away (the last test's): the
+  # step then cannot open it (the inner run exits 75). A fresh server, up to three times.
+  for attempt in 1 2 3; do
+    WINDOW_INPUT_INNER=1 xvfb-run -a -s "-screen 0 1024x768x24" bash "$0" "$case_name" "$exe" "$@"
+    status=$?
+    [ "$status" -eq 75 ] || exit "$status"
+    echo "attempt $attempt: the X server went away before the step could open it; a fresh one"
+  done
+  echo "FAIL: no X server the step could open in three tries"
+  exit 1
 fi
 
 out=$(mktemp -d)
@@ -89,7 +98,10 @@ window=
 for _ in $(seq 1 300); do
   window=$(xdotool search --onlyvisible --name "^$(basename "$exe")" 2> /dev/null | head -n 1)
   [ -n "$window" ] && break
-  kill -0 "$pid" 2> /dev/null || fail "the step exited before its window showed"
+  if ! kill -0 "$pid" 2> /dev/null; then
+    grep -q "GLFW cannot start" "$out/log" && exit 75  # the display, not the step: the outer run retries
+    fail "the step exited before its window showed"
+  fi
   sleep 0.1
 done
 [ -n "$window" ] || fail "no window in 30 s"
