@@ -31,7 +31,7 @@ struct Steering {
     void declare(ocean::ParamRegistry& p) {
         const auto group = p.group("steering");
         p.add_float("boat_throttle", &throttle, -1, 1, "the boat's thrust, a fraction of its weight / 20");
-        p.add_float("boat_rudder", &rudder, -1, 1, "the boat's turning force at its stern");
+        p.add_float("boat_rudder", &rudder, -1, 1, "the rudder: positive turns the boat to its right (starboard)");
     }
 };
 

@@ -14,6 +14,7 @@
 #include "step06_foam_sky/sea.hpp"
 #include "step06_foam_sky/sea_renderer.hpp"
 #include "step06_foam_sky/sky.hpp"
+#include "step07_buoyancy/bodies.hpp"
 #include "step07_buoyancy/body_mesh.hpp"
 #include "step07_buoyancy/body_params.hpp"
 #include "step07_buoyancy/floating_body.hpp"
@@ -142,58 +143,17 @@ private:
 
     // The three bodies, in front of the camera (anywhere on the ocean: positions in double).
     void drop_bodies() {
-        bodies_.clear();
         trajectory_.clear();
-        const glm::dvec3 eye = camera().eye_world();
         const glm::vec3 f = camera().forward();
         const glm::dvec2 ahead = glm::normalize(glm::dvec2(f.x, f.z) + glm::dvec2(1e-9, 0));
-        const glm::dvec2 side(-ahead.y, ahead.x);
-        const auto spot = [&](double forward, double across) {
-            const glm::dvec2 p = glm::dvec2(eye.x, eye.z) + forward * ahead + across * side;
-            return glm::dvec3(p.x, body_params_.drop_height, p.y);
-        };
-        step07::BodySettings buoy, raft, boat;
-        buoy.shape = {step07::ShapeKind::Sphere, glm::dvec3(body_params_.buoy_diameter)};
-        buoy.density = body_params_.buoy_density;
-        raft.shape = {step07::ShapeKind::Box, {body_params_.raft_size, 0.4, body_params_.raft_size}};
-        raft.density = body_params_.raft_density;
-        const double length = body_params_.boat_length;
-        boat.shape = {step07::ShapeKind::Hull, {length, length / 6, length / 3}};
-        boat.density = body_params_.boat_density;
-        for (auto* s : {&buoy, &raft, &boat}) {
-            s->linear_drag = body_params_.drag;
-            s->cells_per_side = 6;
-        }
-        boat.cells_per_side = 8;  // the hull's shape needs a finer grid
-        boat.ballast = {0, -0.25 * boat.shape.size.y, 0};  // an engine and a keel: upright (the tests)
-        const double heading = std::atan2(ahead.y, ahead.x);
-        bodies_.emplace_back(buoy, spot(14, -3));
-        bodies_.emplace_back(raft, spot(26, 5), glm::angleAxis(0.4, glm::dvec3(0, 1, 0)));
-        bodies_.emplace_back(boat, spot(22, -9), glm::angleAxis(-heading + 1.1, glm::dvec3(0, 1, 0)));
+        bodies_ = step07::drop_bodies(body_params_, camera().eye_world(), ahead);
     }
 
-    // Thrust along the boat's length at its middle, the rudder's sideways force at its stern: the
-    // panel's throttle and rudder, and the arrows on top while held.
-    //
-    // The arrows' numbers, for a change a learner sees within a second at the defaults (9 m boat,
-    // drag c = 0.5/s). Floating, the boat displaces its own mass of water, so the hull's drag is
-    // about m c v: a thrust k m g reaches k g / c and covers k g (1 - (1 - e^-c) / c) / c = 0.43 k g
-    // metres in the first second. k = 0.4 (a fast motor boat's thrust to weight): 1.7 m in the first
-    // second, 7 m/s after five (the panel's throttle, a twentieth of the weight, is for cruising:
-    // 0.2 m and 0.9 m/s, too little to see from the camera). The rudder's force r m g at the stern
-    // against the yaw inertia m (L^2 + B^2) / 12 and the drag of the hull's cells: r = 0.1 turns
-    // the boat 16 degrees in the first second and about 50 degrees a second after. Both measured
-    // with FloatingBody on a flat sea at these defaults.
-    static constexpr double kArrowThrust = 0.4, kArrowRudder = 0.1;  // fractions of the weight
+    // The panel's throttle and rudder, plus the arrows' share while they are held (bodies.hpp).
     void steer_boat() {
-        if (bodies_.size() < 3) return;
-        step07::FloatingBody& boat = bodies_[2];
-        const double weight = boat.mass() * ocean::kGravity;
-        const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0), across = boat.orientation() * glm::dvec3(0, 0, 1);
-        const double thrust = double(steering_.throttle) / 20 + kArrowThrust * key_throttle_;
-        const double turn = double(steering_.rudder) / 100 + kArrowRudder * key_rudder_;
-        boat.add_force(thrust * weight * along, {0, 0, 0});
-        boat.add_force(turn * weight * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
+        if (bodies_.size() <= step07::kBoat) return;
+        step07::steer(bodies_[step07::kBoat], double(steering_.throttle) / 20 + step07::kArrowThrust * key_throttle_,
+                      double(steering_.rudder) / 100 + step07::kArrowRudder * key_rudder_);
     }
 
     // step06's frame with the bodies and the query dots drawn into the scene between the sea (its
@@ -282,22 +242,14 @@ private:
             const double miss = glm::length(body.position() - closest) / glm::length(body.settings().shape.size);
             if (miss < 1.0 && (hit == nullptr || miss < best)) hit = &body, best = miss, at = closest;
         }
-        static const char* names[3] = {"buoy", "raft", "boat"};
         if (hit == nullptr) {
             std::cout << "push: no body under the cursor" << std::endl;
             return;
         }
-        // A push a learner sees: the body moves about its own size (3 to 6 m) in the first second.
-        // Under the linear drag c a speed v covers v (1 - e^-c) / c in a second, so v = d c / (1 - e^-c)
-        // (6.4 m/s for the 5 m raft at c = 0.5/s: 5 m in the first second on a flat sea, plain from the
-        // camera 26 m away). 6 m at most: the 9 m boat gets 7.6 m/s, not 11; the 1.2 m buoy 3.8 m/s.
-        const glm::dvec3 size = hit->settings().shape.size;
-        const double d = std::clamp(std::max(size.x, size.z), 3.0, 6.0);
-        const double c = hit->settings().linear_drag;
-        const double speed = c > 1e-6 ? d * c / (1 - std::exp(-c)) : d;
+        const double speed = step07::push_speed(*hit);  // about its own size in the first second
         const glm::dvec3 push = glm::normalize(glm::dvec3(ray.x, 0.0, ray.z) + glm::dvec3(1e-9, 0, 0));
         hit->push(speed * hit->mass() * push, at);  // at the point hit: it tilts as well
-        std::cout << "push: the " << names[std::size_t(hit - bodies_.data()) % 3] << ", "
+        std::cout << "push: the " << step07::kBodyNames[std::size_t(hit - bodies_.data()) % 3] << ", "
                   << std::round(speed * 10) / 10 << " m/s away from the camera" << std::endl;
     }
 
@@ -307,9 +259,8 @@ private:
         ImGui::TextWrapped("bodies and queries: %.2f ms a frame; the maps %s", bodies_ms_,
                            latency_frames_ == 0 ? "of this frame (FFTW)" : "read back, a frame late");
         ImGui::TextWrapped("arrows: steer the boat; right click: push a body");
-        static const char* names[3] = {"buoy", "raft", "boat"};
         for (std::size_t b = 0; b < bodies_.size(); ++b)
-            ImGui::TextWrapped("%s: %.2f m above the mean level, %.0f%% under water, %.1f m/s", names[b % 3],
+            ImGui::TextWrapped("%s: %.2f m above the mean level, %.0f%% under water, %.1f m/s", step07::kBodyNames[b % 3],
                                bodies_[b].position().y, 100 * bodies_[b].submerged_volume() / bodies_[b].volume(),
                                glm::length(bodies_[b].velocity()));
         if (ImGui::Button("drop again")) bodies_.clear();

@@ -10,7 +10,7 @@ die() { printf 'readme_images: error: %s\n' "$*" >&2; exit 1; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
 for program in step01_sine2d/step01_sine2d step02_sine3d/step02_sine3d step03_lighting/step03_lighting \
-               step04_fbm/step04_fbm step05_fft/step05_fft step06_foam_sky/step06_foam_sky tools/image_panel; do
+               step04_fbm/step04_fbm step05_fft/step05_fft step06_foam_sky/step06_foam_sky step07_buoyancy/step07_buoyancy tools/image_panel; do
   [ -x "$build/$program" ] || die "$build/$program is not built"
 done
 # The intermediate pictures, removed however the script ends.
@@ -118,6 +118,11 @@ echo step06_foam_sky/build_it_yourself_closeup.png
 panel "$root/step06_foam_sky/reflection_on_off.png" 320x180 2 \
   "the sky's reflection on|$scratch/bloom.png" "off (show_reflection_term=false)|$scratch/no_reflection.png"
 echo step06_foam_sky/reflection_on_off.png
+
+# step07's bodies 6 s after they were dropped (0.1 s steps from t = 0): afloat, in the part of the
+# view the panel leaves free.
+shot step07_buoyancy "$root/step07_buoyancy/screenshot.png" --size 640x360 --frames 61 --time 0 --dt 0.1
+echo step07_buoyancy/screenshot.png
 
 # step05's one Gerstner wave at three steepnesses Q k A (sea=gerstner), crests across the view.
 gerstner() {  # gerstner STEEPNESS
