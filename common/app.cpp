@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/gl_debug.hpp"
 #include "common/image.hpp"
+#include "common/panel_state.hpp"  // App owns one: its destructor needs the type
 #include "common/run_support.hpp"
 #include "common/text.hpp"
 

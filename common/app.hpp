@@ -45,6 +45,8 @@
 
 namespace ocean {
 
+class PanelState;  // panel_state.hpp
+
 struct StepInfo {
     std::string title;          // "Sum of sines in 3D"
     std::string notes_sections;  // "1.2.2"; empty for a chapter beyond the notes
@@ -196,6 +198,8 @@ private:
     double time_ = 0;
     bool paused_ = false;
     bool panel_visible_ = true;
+    std::unique_ptr<PanelState> panel_state_;  // windowed runs only: headless pictures stay reproducible
+    bool panel_overflow_reported_ = false;    // panel.cpp's check, once a run
     bool imgui_ready_ = false;
     bool imgui_renderer_ready_ = false;  // ImGui's OpenGL 3 backend, only where the panel is drawn
     float scroll_accumulated_ = 0;

@@ -32,6 +32,7 @@ void App::init_imgui(bool draw_panel) {
         glfwSetKeyCallback(window, &App::on_key);
         glfwSetMouseButtonCallback(window, &App::on_mouse_button);
         ImGui_ImplGlfw_InitForOpenGL(window, true);
+        panel_state_ = std::make_unique<PanelState>(panel_state_path(step_name()));
     }
     if (!draw_panel) {
         ImGui::GetIO().Fonts->Build();  // what the renderer's NewFrame would do; no texture needed
@@ -66,7 +67,8 @@ void App::shutdown_imgui() {
         ImGui_ImplGlfw_Shutdown();  // puts our callbacks back; they find no App from now on
         glfwSetWindowUserPointer(context_->window(), nullptr);
     }
-    flush_panel_state(std::cerr);  // a change made in the last second before closing, too
+    if (panel_state_) panel_state_->flush(std::cerr);  // a change made in the last second before closing, too
+    panel_state_.reset();
     ImGui::DestroyContext();
     imgui_ready_ = false;
 }

@@ -8,6 +8,7 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // the window's extent this frame (report_overflow)
 
 #include <algorithm>
 #include <array>
@@ -17,6 +18,17 @@ namespace ocean {
 
 bool param_widget(Param& p) {
     const char* label = p.name().c_str();
+    // A widget's label sits at its right, in the room the panel's item width leaves; a name longer
+    // than that goes on its own line above the widget, where a narrow panel does not cut it.
+    std::string hidden_label;
+    if (p.type() != ParamType::Bool) {
+        const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x;
+        if (ImGui::CalcTextSize(label).x > room) {
+            ImGui::TextUnformatted(label);
+            hidden_label = "##" + p.name();
+            label = hidden_label.c_str();
+        }
+    }
     bool changed = false;
     switch (p.type()) {
         // The widgets edit a copy; set_number clamps it to the registry's range (typed values,
@@ -117,6 +129,21 @@ static void split_beside_panel(SplitView& split, const SplitVariants& variants, 
     draw_split_labels(variants, divide);
 }
 
+// What reaches past the panel's right edge is cut off there (ImGui clips it; the panel has no
+// horizontal scrolling): a status line that ends mid-word. A headless --ui run (the screenshots,
+// the tests), whose panel has its first-use width, names the first part of the panel that does, as
+// a warning for the chapter's author; a learner who narrows the panel in a window is not warned.
+// ImGui's window keeps the furthest point its items reached this frame (DC.CursorMaxPos) and the
+// right edge of its work area (WorkRect): a part overflows when the first passes the second.
+static bool report_overflow(const char* part) {
+    const ImGuiWindow* window = ImGui::GetCurrentWindow();
+    const float overflow = window->DC.CursorMaxPos.x - window->WorkRect.Max.x;
+    if (overflow <= 1) return false;
+    std::cerr << "warning: panel: " << part << " reaches " << int(overflow + 0.5f)
+              << " px past the panel's right edge and is cut off there\n";
+    return true;
+}
+
 void App::draw_panel(float frame_ms) {
     // The keys (F1, Esc, F5, C) are handled before this, from the window's events (app_input.cpp).
     if (!panel_visible_) {
@@ -130,8 +157,7 @@ void App::draw_panel(float frame_ms) {
     // A window a learner moves, resizes and folds, kept on screen (panel_state.hpp); a windowed
     // run starts it where the last one left it and remembers it (never a headless run: its
     // pictures stay reproducible).
-    PanelState* state = nullptr;
-    if (context_->window() != nullptr) state = &panel_state_of_current_context(step_name());
+    PanelState* state = panel_state_.get();
     if (state != nullptr) state->load(std::cerr);
     const bool expanded = begin_panel_window(step_name());
     const ImVec2 panel_pos = ImGui::GetWindowPos(), panel_size = ImGui::GetWindowSize();
@@ -142,6 +168,11 @@ void App::draw_panel(float frame_ms) {
             split_beside_panel(split_, split_variants_(), framebuffer_size_, panel_pos, panel_size, false);
         return;
     }
+    // Each part checked as it is drawn (headless runs only, once a run).
+    const auto check = [&](const char* part) {
+        if (context_->window() == nullptr && !panel_overflow_reported_)
+            panel_overflow_reported_ = report_overflow(part);
+    };
     ImGui::TextDisabled("%s", kPanelHint);
     // Widgets leave room for their labels (snake_case names up to 15 characters or so).
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);
@@ -153,9 +184,15 @@ void App::draw_panel(float frame_ms) {
         if (!has_previous) ImGui::BeginDisabled();
         if (ImGui::Button(has_previous ? ("< " + *(here - 1)).c_str() : "< (first)")) hand_over_to(*(here - 1));
         if (!has_previous) ImGui::EndDisabled();
-        ImGui::SameLine();
+        // Beside it where it fits, else below: a narrow panel cuts no button.
+        const std::string next_label = has_next ? *(here + 1) + " >" : "(last) >";
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const float next_width = ImGui::CalcTextSize(next_label.c_str()).x + 2 * style.FramePadding.x;
+        if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + next_width <=
+            ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+            ImGui::SameLine();
         if (!has_next) ImGui::BeginDisabled();
-        if (ImGui::Button(has_next ? (*(here + 1) + " >").c_str() : "(last) >")) hand_over_to(*(here + 1));
+        if (ImGui::Button(next_label.c_str())) hand_over_to(*(here + 1));
         if (!has_next) ImGui::EndDisabled();
     }
     ImGui::TextUnformatted(info_.title.c_str());
@@ -163,14 +200,15 @@ void App::draw_panel(float frame_ms) {
     ImGui::PushTextWrapPos(0);
     ImGui::TextUnformatted(info_.description.c_str());
     ImGui::PopTextWrapPos();
+    check("the chapter's buttons and description");
     ImGui::Separator();
 
     static constexpr int kHistory = 120;
     static std::array<float, kHistory> history{};  // ImGui's plot wants a plain array
     static int cursor = 0;
     history[std::size_t(cursor++ % kHistory)] = frame_ms;
-    ImGui::Text("%.2f ms/frame (%.0f fps), %dx%d", double(frame_ms),
-                frame_ms > 0 ? 1000.0 / double(frame_ms) : 0.0, framebuffer_size_.x, framebuffer_size_.y);
+    ImGui::TextWrapped("%.2f ms/frame (%.0f fps), %dx%d", double(frame_ms),
+                       frame_ms > 0 ? 1000.0 / double(frame_ms) : 0.0, framebuffer_size_.x, framebuffer_size_.y);
     // ImGui 1.86's plots take no negative width ("fill"): pass the width that is left.
     ImGui::PlotLines("##frame_ms", history.data(), kHistory, cursor % kHistory, nullptr, 0, 50,
                      ImVec2(ImGui::GetContentRegionAvail().x, 40));
@@ -187,6 +225,7 @@ void App::draw_panel(float frame_ms) {
             ImGui::PopTextWrapPos();
         }
     }
+    check("the frame line or the split view's labels");
     ImGui::Separator();
     param_widgets(params_);
     if (ImGui::Button("reset to defaults")) params_.reset_all();
@@ -203,7 +242,11 @@ void App::draw_panel(float frame_ms) {
         show_message(error ? *error : "saved " + preset_path_);
     }
 
+    check("the parameters or the preset buttons");
+    ImGui::PushTextWrapPos(0);  // the step's lines wrap at the panel's edge, however narrow it is
     ui();
+    ImGui::PopTextWrapPos();
+    check("the step's own lines (its ui())");
 
     // Two channels: the shaders' build problems (ProgramLibrary's own state, cleared when they
     // build again) and the framework's last message (show_message).
@@ -214,6 +257,7 @@ void App::draw_panel(float frame_ms) {
         ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", message->c_str());
         ImGui::PopTextWrapPos();
     }
+    check("a message");
     ImGui::PopItemWidth();
     ImGui::End();
     if (state != nullptr) state->save_if_wanted(std::cerr);

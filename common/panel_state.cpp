@@ -143,30 +143,4 @@ void PanelState::write(const std::string& text, std::ostream& warnings) {
     }
 }
 
-namespace {
-struct CurrentState {
-    ImGuiContext* context = nullptr;
-    std::unique_ptr<PanelState> state;
-};
-CurrentState& current() {
-    static CurrentState holder;
-    return holder;
-}
-}  // namespace
-
-PanelState& panel_state_of_current_context(const std::string& step) {
-    CurrentState& holder = current();
-    if (holder.context != ImGui::GetCurrentContext() || !holder.state) {
-        holder.context = ImGui::GetCurrentContext();
-        holder.state = std::make_unique<PanelState>(panel_state_path(step));
-    }
-    return *holder.state;
-}
-
-void flush_panel_state(std::ostream& warnings) {
-    CurrentState& holder = current();
-    if (holder.state && holder.context == ImGui::GetCurrentContext() && holder.context != nullptr)
-        holder.state->flush(warnings);
-}
-
 }  // namespace ocean

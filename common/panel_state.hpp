@@ -46,7 +46,8 @@ std::optional<std::filesystem::path> panel_state_path(const std::string& step);
 // printable, at most 64 KiB).
 bool is_panel_state_text(const std::string& text);
 
-// The panel's persistence in a windowed run, one per ImGui context.
+// The panel's persistence in a windowed run (App makes one with its ImGui context, in windowed
+// runs only, and flushes it before destroying the context).
 class PanelState {
 public:
     explicit PanelState(std::optional<std::filesystem::path> file) : file_(std::move(file)) {}
@@ -67,12 +68,5 @@ private:
     std::optional<std::string> baseline_, written_;
     bool loaded_ = false, warned_ = false;
 };
-
-// The current ImGui context's PanelState, made for `step` on first use (App::draw_panel, in
-// windowed runs only).
-PanelState& panel_state_of_current_context(const std::string& step);
-// Writes the current context's panel state if the user changed it since the last write (for the
-// end of a windowed run, before ImGui::DestroyContext); nothing where none was made.
-void flush_panel_state(std::ostream& warnings);
 
 }  // namespace ocean

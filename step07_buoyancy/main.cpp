@@ -99,6 +99,7 @@ private:
             sea_before_ = sea_now_ ? std::move(sea_now_) : std::optional<TimedSea>(*sea);
             sea_now_ = std::move(sea);
         }
+        read_input();  // every frame: a click before the first sea arrives is answered, not lost
         if (!sea_now_) return;
         // The sea moved from before to now over this frame only if a new one came; a frame with
         // none (the read-back still in flight) holds the latest (still water for its drag) rather
@@ -108,7 +109,6 @@ private:
             bodies_built_for_ = body_params_.changed.value;
             drop_bodies();
         }
-        read_input();
         steer_boat();
         const double sea_interval = sea_now_->time - sea_before_->time;
         for (auto& body : bodies_) body.step(before, sea_now_->sea, dt, sea_interval);
@@ -227,7 +227,11 @@ private:
 
     void push_at(glm::vec2 cursor) {
         const ImGuiIO& io = ImGui::GetIO();
-        if (io.DisplaySize.x <= 0 || io.DisplaySize.y <= 0 || bodies_.empty()) return;
+        if (io.DisplaySize.x <= 0 || io.DisplaySize.y <= 0) return;
+        if (bodies_.empty()) {
+            std::cout << "push: the bodies are not dropped yet (they wait for the first sea)" << std::endl;
+            return;
+        }
         // The cursor's ray, from the world origin near the camera, then the body closest to it.
         const glm::vec2 ndc(2 * cursor.x / io.DisplaySize.x - 1, 1 - 2 * cursor.y / io.DisplaySize.y);
         const glm::mat4 inverse = glm::inverse(camera().projection(aspect()) * camera().view(sea_.world_origin()));

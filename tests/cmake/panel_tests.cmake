@@ -19,3 +19,12 @@ target_link_libraries(panel_screen_tests PRIVATE ocean_common GTest::gtest_main)
 target_compile_definitions(panel_screen_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 ocean_warnings(panel_screen_tests)
 gtest_discover_tests(panel_screen_tests TEST_PREFIX "gpu." PROPERTIES LABELS gpu DISCOVERY_TIMEOUT 60)
+
+# Every chapter's panel at its first-use width in 640x360 and 960x540: nothing in it is cut off at
+# its edge (tests/smoke/panel_fits.sh; the status lines wrap, a long parameter name goes above its
+# widget, the next chapter's button below the previous one's where they do not fit side by side).
+foreach(_step IN LISTS OCEAN_STEPS)
+  add_test(NAME ${_step}.panel_fits
+    COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/smoke/panel_fits.sh" $<TARGET_FILE:${_step}>)
+  set_tests_properties(${_step}.panel_fits PROPERTIES LABELS "gpu;${_step}" TIMEOUT 300)
+endforeach()

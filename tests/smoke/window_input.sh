@@ -91,7 +91,9 @@ quit_with_esc() {
 # The line number of the first log line matching $1 (grep -E); empty when none.
 line_of() { grep -n -E -- "$1" "$out/log" | head -n 1 | cut -d: -f1; }
 
-"$exe" --frames 100000 --size 640x360 "$@" > "$out/log" 2>&1 &
+extra=()
+[ "$case_name" = steer_push ] && extra=(--export "$out/export")  # the bodies' trajectories, at exit
+"$exe" --frames 100000 --size 640x360 "${extra[@]}" "$@" > "$out/log" 2>&1 &
 pid=$!
 # The window, then a frame drawn (the first frames compile the shaders).
 window=
@@ -134,6 +136,26 @@ case "$case_name" in
       grep -q "^push: the raft" "$out/log" || fail "the right click on the raft did not push the raft"
     fi
     quit_with_esc
+    if [ "$case_name" = steer_push ]; then
+      # The boat (body 2) from its first row to its last, against the buoy (body 0), which nothing
+      # steered: how far each moved, and how far the boat turned to its right (its heading's
+      # angle in x-z, from the bow's direction q (1, 0, 0)).
+      motion=$(awk -F, '
+        NR > 1 && ($2 == 0 || $2 == 2) {
+          b = $2; if (!(b in x0)) { x0[b] = $3; z0[b] = $5; h0[b] = heading($6, $7, $8, $9) }
+          x1[b] = $3; z1[b] = $5; h1[b] = heading($6, $7, $8, $9)
+        }
+        function heading(w, x, y, z) { return atan2(2 * (x * z - w * y), 1 - 2 * (y * y + z * z)) }
+        END {
+          turn = (h1[2] - h0[2]) * 180 / 3.14159265; if (turn > 180) turn -= 360; if (turn < -180) turn += 360
+          printf "%.2f %.2f %.1f\n", sqrt((x1[2] - x0[2])^2 + (z1[2] - z0[2])^2), sqrt((x1[0] - x0[0])^2 + (z1[0] - z0[0])^2), turn
+        }' "$out/export/trajectories.csv") || fail "no trajectories were exported"
+      read -r boat buoy turn <<< "$motion"
+      echo "the arrows held 1 s: the boat moved $boat m and turned $turn degrees; the buoy drifted $buoy m"
+      awk -v b="$boat" -v d="$buoy" 'BEGIN { exit !(b >= 2 && b >= 2 * d) }' ||
+        fail "the up arrow held 1 s moved the boat $boat m (the buoy drifted $buoy m): not visibly"
+      awk -v t="$turn" 'BEGIN { exit !(t >= 8) }' || fail "the right arrow held 1 s turned the boat $turn degrees, not to its right"
+    fi
     echo "ok: F1 toggled the panel on every tap, Esc quit"
     ;;
   drag)

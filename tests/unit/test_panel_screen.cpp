@@ -8,10 +8,13 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
 
 #include "common/app.hpp"
 #include "common/image.hpp"
 #include "common/panel_state.hpp"
+
+#include <imgui.h>
 
 namespace fs = std::filesystem;
 
@@ -98,6 +101,43 @@ TEST(PanelScreen, DefaultPanelCoversAtMostAThirdOfTheWindowAndLiesInside) {
         EXPECT_NEAR(box.x1 - box.x0 + 1, want.width, 3);
         EXPECT_NEAR(box.y1 - box.y0 + 1, want.height, 3);
     }
+}
+
+// The panel's first line tells a learner how to hide it: under the title bar, grey text (ImGui's
+// "disabled" colour, 128 of 255, over the panel's near-black) as wide as ImGui sets kPanelHint,
+// from the window's left padding. Without the hint that row holds the chapter buttons (blue).
+TEST(PanelScreen, TheFirstLineSaysHowToHideThePanel) {
+    const ocean::Image panel = screenshot("960x540", true);
+    ASSERT_EQ(panel.width, 960);
+    float hint_width = 0, title_height = 0, padding = 0;
+    {
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
+        ImGui::GetIO().Fonts->Build();
+        ImGui::GetIO().DisplaySize = ImVec2(960, 540);
+        ImGui::NewFrame();
+        hint_width = ImGui::CalcTextSize(ocean::kPanelHint).x;
+        title_height = ImGui::GetFontSize() + 2 * ImGui::GetStyle().FramePadding.y;
+        padding = ImGui::GetStyle().WindowPadding.x;
+        ImGui::EndFrame();
+        ImGui::DestroyContext();
+    }
+    const ocean::PanelRect r = ocean::default_panel_rect(960, 540);
+    // The first text row: from below the title bar, one line of text and its spacing.
+    const int top = int(r.y + title_height), bottom = int(r.y + title_height + padding + 16);
+    int first = 1 << 30, last = -1;
+    for (int y = top; y <= bottom; ++y)
+        for (int x = int(r.x); x < int(r.x + r.width); ++x) {
+            const std::size_t i = 4 * (std::size_t(y) * 960 + std::size_t(x));
+            const int red = panel.rgba[i], green = panel.rgba[i + 1], blue = panel.rgba[i + 2];
+            const bool grey_text = red > 90 && red < 170 && std::abs(red - green) < 6 && std::abs(red - blue) < 6;
+            if (grey_text) first = std::min(first, x), last = std::max(last, x);
+        }
+    ASSERT_GE(last, 0) << "no grey text in the panel's first row";
+    std::cout << "the first row's grey text spans x " << first << " to " << last << "; the hint is "
+              << hint_width << " px wide\n";
+    EXPECT_NEAR(first, r.x + padding, 3) << "from the window's left padding";
+    EXPECT_NEAR(last - first + 1, hint_width, 4) << "as wide as the hint";
 }
 
 // The split view beside the panel: the line between the variants at the middle of the part of the
