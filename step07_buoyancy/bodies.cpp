@@ -42,10 +42,11 @@ std::vector<FloatingBody> drop_bodies(const BodyParams& params, glm::dvec3 eye, 
 }
 
 // The thrust accelerates the boat against its drag (0.5/s of the water it displaces, about its own
-// mass afloat); the turning force acts at half a length behind the middle, against the yaw inertia
-// m (L^2 + B^2) / 12 and the drag of the hull's cells.
-void steer(FloatingBody& boat, double thrust, double turn) {
+// mass afloat); the turning force acts at half a length behind the middle.
+void steer(FloatingBody& boat, double throttle, double rudder) {
     const double weight = boat.mass() * ocean::kGravity;
+    const double thrust = kFullThrust * std::clamp(throttle, -1.0, 1.0);
+    const double turn = kFullRudder * std::clamp(rudder, -1.0, 1.0);
     const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
     const glm::dvec3 across = boat.orientation() * glm::dvec3(0, 0, 1);  // to starboard (its right)
     boat.add_force(thrust * weight * along, {0, 0, 0});

@@ -26,22 +26,21 @@ std::array<BodySettings, 3> body_settings(const BodyParams& params);
 // left) leaves free; the boat broadside, so its length shows.
 std::vector<FloatingBody> drop_bodies(const BodyParams& params, glm::dvec3 eye, glm::dvec2 ahead);
 
-// What the arrows add, as fractions of the boat's weight m g: a thrust along its length at its
-// middle, and a rudder's sideways force at its stern, sized for a change a learner sees within a
-// second at the defaults (9 m boat, drag c = 0.5/s). Afloat, the boat displaces its own mass of
-// water, so the hull's drag is about m c v: a thrust k m g reaches k g / c and covers
-// k g (1 - (1 - e^-c) / c) / c = 0.43 k g metres in the first second. k = 0.4 (a fast motor
-// boat's thrust to weight): 1.7 m in the first second, 7 m/s after five (the panel's throttle, a
-// twentieth of the weight, is for cruising: 0.2 m and 0.9 m/s, too little to see from the
-// camera). The rudder's force r m g at the stern turns the boat against the yaw inertia
+// The boat's engine and rudder at full (the throttle or the rudder at 1, or an arrow held), as
+// fractions of its weight m g: a thrust along its length at its middle, and a rudder's sideways
+// force at its stern, sized for a change a learner sees within a second at the defaults (9 m boat,
+// drag c = 0.5/s). Afloat, the boat displaces its own mass of water, so the hull's drag is about
+// m c v: a thrust k m g reaches k g / c and covers k g (1 - (1 - e^-c) / c) / c = 0.43 k g metres
+// in the first second. k = 0.4 (a fast motor boat's thrust to weight): 1.7 m in the first second,
+// 7 m/s after five. The rudder's force r m g at the stern turns the boat against the yaw inertia
 // m (L^2 + B^2) / 12 and the drag of the hull's cells: r = 0.1 turns it 16 degrees in the first
 // second. tests/test_bodies.cpp holds FloatingBody on a flat sea to these numbers.
-inline constexpr double kArrowThrust = 0.4, kArrowRudder = 0.1;
+inline constexpr double kFullThrust = 0.4, kFullRudder = 0.1;
 
-// Applies this frame's steering to the boat: `thrust` and `turn` in fractions of its weight
-// (the panel's throttle / 20 and rudder / 100, plus the arrows' share while they are held); a
-// positive turn to starboard (the boat's right: the right arrow).
-void steer(FloatingBody& boat, double thrust, double turn);
+// Applies this frame's steering to the boat: `throttle` and `rudder` from -1 to 1 (the panel's
+// plus the arrows' while they are held, clamped to that range); a positive rudder turns it to
+// starboard (its right: the right arrow).
+void steer(FloatingBody& boat, double throttle, double rudder);
 
 // The speed a right click gives `body`: enough to carry it about its own size d (its longer
 // horizontal side, between 3 and 6 m) in the first second against its linear drag c, on a flat

@@ -30,8 +30,8 @@ struct Steering {
 
     void declare(ocean::ParamRegistry& p) {
         const auto group = p.group("steering");
-        p.add_float("boat_throttle", &throttle, -1, 1, "the boat's thrust, a fraction of its weight / 20");
-        p.add_float("boat_rudder", &rudder, -1, 1, "the rudder: positive turns the boat to its right (starboard)");
+        p.add_float("boat_throttle", &throttle, -1, 1, "the boat's engine: 1 is full ahead (as the up arrow held), a thrust of 0.4 of its weight");
+        p.add_float("boat_rudder", &rudder, -1, 1, "the boat's rudder: 1 is hard to starboard, its right (as the right arrow held)");
     }
 };
 

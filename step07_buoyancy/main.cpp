@@ -149,11 +149,11 @@ private:
         bodies_ = step07::drop_bodies(body_params_, camera().eye_world(), ahead);
     }
 
-    // The panel's throttle and rudder, plus the arrows' share while they are held (bodies.hpp).
+    // The panel's throttle and rudder, plus the arrows while they are held (bodies.hpp).
     void steer_boat() {
         if (bodies_.size() <= step07::kBoat) return;
-        step07::steer(bodies_[step07::kBoat], double(steering_.throttle) / 20 + step07::kArrowThrust * key_throttle_,
-                      double(steering_.rudder) / 100 + step07::kArrowRudder * key_rudder_);
+        step07::steer(bodies_[step07::kBoat], double(steering_.throttle) + key_throttle_,
+                      double(steering_.rudder) + key_rudder_);
     }
 
     // step06's frame with the bodies and the query dots drawn into the scene between the sea (its

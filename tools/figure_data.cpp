@@ -807,15 +807,15 @@ Figure push_and_steer() {
     }
     // The boat for 5 s: the up arrow alone, then the up and right arrows held together; in its own
     // frame at the start (ahead, and to its right: starboard).
-    for (const double turn : {0.0, step07::kArrowRudder}) {
+    for (const double rudder : {0.0, 1.0}) {
         step07::FloatingBody boat = bodies[step07::kBoat];
         const glm::dvec3 start = boat.position();
         const glm::dvec3 ahead = boat.orientation() * glm::dvec3(1, 0, 0), right = boat.orientation() * glm::dvec3(0, 0, 1);
-        f.data << "# the boat, up arrow" << (turn > 0 ? " and right arrow" : "") << ": ahead, right (m) every 0.5 s\n";
+        f.data << "# the boat, up arrow" << (rudder > 0 ? " and right arrow" : "") << ": ahead, right (m) every 0.5 s\n";
         for (int i = 0; i <= 5 * 60; ++i) {
             const glm::dvec3 moved = boat.position() - start;
             if (i % 30 == 0) f.data << glm::dot(moved, ahead) << ' ' << glm::dot(moved, right) << '\n';
-            step07::steer(boat, step07::kArrowThrust, turn);
+            step07::steer(boat, 1, rudder);
             boat.step(calm, calm, dt);
         }
         f.data << "\n\n";
@@ -828,7 +828,7 @@ Figure push_and_steer() {
     };
     f.script << "set terminal pngcairo size 1000,440 font \"DejaVu Sans,12\" linewidth 1.5\nset output 'push_and_steer.png'\n"
              << "set multiplot layout 1,2 title \"step07's controls on a flat sea, at the defaults (bodies.hpp)\"\n"
-             << "set title \"a right click: each body pushed about its size in 1 s\"\n"
+             << "set title \"a right click: each body pushed its size (3 to 6 m) in 1 s\"\n"
              << "set xlabel \"time after the push (s)\"\nset ylabel \"distance (m)\"\nset xrange [0:3]\nset key bottom right\n"
              << "plot 'push_and_steer.dat' index 0 with lines ls 1 title \"buoy (1.2 m)\", \\\n"
              << "     '' index 1 with lines ls 2 title \"raft (5 m)\", \\\n"

@@ -36,10 +36,10 @@ double heading(const FloatingBody& body) {
     return std::atan2(along.z, along.x);
 }
 
-// Runs `seconds` with the steering held (fractions of the weight, as the arrows give).
-void steer_for(FloatingBody& boat, double seconds, double thrust, double turn) {
+// Runs `seconds` with the throttle and rudder held (1: full, as an arrow held).
+void steer_for(FloatingBody& boat, double seconds, double throttle, double rudder) {
     for (int i = 0; i < int(std::lround(seconds / kDt)); ++i) {
-        step07::steer(boat, thrust, turn);
+        step07::steer(boat, throttle, rudder);
         boat.step(kCalm, kCalm, kDt);
     }
 }
@@ -100,9 +100,9 @@ TEST(Bodies, TheUpArrowMovesTheBoatVisiblyWithinASecond) {
     // README: 1.7 m in the first second, 7 m/s after five (k g (1 - (1 - e^-c) / c) / c at k = 0.4).
     FloatingBody boat = settled_bodies()[step07::kBoat];
     const glm::dvec3 start = boat.position();
-    steer_for(boat, 1, step07::kArrowThrust, 0);
+    steer_for(boat, 1, 1, 0);
     const double first_second = glm::length(flat(boat.position() - start));
-    steer_for(boat, 4, step07::kArrowThrust, 0);
+    steer_for(boat, 4, 1, 0);
     const double speed = glm::length(flat(boat.velocity()));
     std::cout << "up arrow: " << first_second << " m in the first second, " << speed << " m/s after five\n";
     EXPECT_NEAR(first_second, 1.7, 0.35);
@@ -117,7 +117,7 @@ TEST(Bodies, TheSideArrowTurnsTheBoatVisiblyWithinASecond) {
     // along +x has its starboard at +z (x cross y), so its heading's angle in x-z grows.
     FloatingBody boat = settled_bodies()[step07::kBoat];
     const double before = heading(boat);
-    steer_for(boat, 1, 0, step07::kArrowRudder);
+    steer_for(boat, 1, 0, 1);
     const double turned = std::remainder(heading(boat) - before, 2 * 3.14159265358979323846) * kDegrees;
     std::cout << "right arrow: " << turned << " degrees in the first second\n";
     EXPECT_GT(turned, 0.0) << "the right arrow swings the bow to starboard";
@@ -139,6 +139,23 @@ TEST(Bodies, APushCarriesEachBodyAboutItsOwnSizeInTheFirstSecond) {
         EXPECT_NEAR(speed, expected_speed[i], 0.05) << step07::kBodyNames[i];
         EXPECT_NEAR(moved, expected_distance[i], 0.2 * expected_distance[i]) << step07::kBodyNames[i];
     }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Bodies, ThePanelAndAnArrowTogetherGiveNoMoreThanFull) {
+    // The panel's throttle at 1 plus the up arrow held is still full ahead (steer clamps the sum).
+    const FloatingBody start = settled_bodies()[step07::kBoat];
+    FloatingBody full = start, doubled = start, half = start;
+    steer_for(full, 1, 1, 0);
+    steer_for(doubled, 1, 2, 0);
+    steer_for(half, 1, 0.5, 0);
+    const double d_full = glm::length(flat(full.position() - start.position()));
+    EXPECT_NEAR(glm::length(flat(doubled.position() - start.position())), d_full, 1e-12);
+    EXPECT_NEAR(glm::length(flat(half.position() - start.position())), 0.5 * d_full, 0.1 * d_full)
+        << "half the throttle, about half the distance (the drag is linear)";
 }
 
 }  // namespace
