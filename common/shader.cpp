@@ -6,6 +6,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cctype>
+#include <map>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -20,10 +23,31 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The first lines of a shader in each profile, in place of its `#version 450 core`. GLSL ES has
+// no default precision for floats in fragment shaders nor for most sampler types: all highp.
+// Before 4.5 there are no coarse derivatives by name: the plain ones (which an implementation may
+// compute coarsely anyway) stand in, the one built-in the shaders use that 4.1 lacks.
+std::string version_header(GlProfile profile) {
+    const std::string portable = "#define OCEAN_GL_PORTABLE 1\n#define dFdxCoarse dFdx\n#define dFdyCoarse dFdy\n";
+    switch (profile) {
+        case GlProfile::Core45: return "#version 450 core\n";
+        case GlProfile::Core41: return "#version 410 core\n" + portable;
+        case GlProfile::Es30:
+            return "#version 300 es\n"
+                   "precision highp float;\nprecision highp int;\nprecision highp sampler2D;\n"
+                   "precision highp sampler2DArray;\nprecision highp sampler3D;\nprecision highp samplerCube;\n"
+                   "precision highp usampler2D;\nprecision highp isampler2D;\n" + portable;
+    }
+    return "";
+}
+
 struct Preprocessor {
     std::vector<std::string> include_dirs;
     std::vector<std::string> defines;
+    GlProfile profile = GlProfile::Core45;
     std::vector<std::string> files;
+    std::map<std::string, int> numbers;      // names #defined as a whole number (texture units)
+    std::vector<UniformBinding> bindings;    // taken out of layout qualifiers (profiles before 4.2)
     std::set<std::string> expanding;  // the files whose expansion is under way (an include cycle stops there)
     std::ostringstream out;
 
@@ -41,6 +65,46 @@ struct Preprocessor {
         for (const auto& c : candidates)
             if (fs::is_regular_file(c)) return fs::weakly_canonical(c).string();
         return "";
+    }
+
+    // `#define NAME 42`: remembered, so that `binding = NAME` can be read.
+    void note_number(const std::string& line) {
+        static const std::regex define_re(R"(^\s*#\s*define\s+(\w+)\s+(-?\d+)\s*(//.*)?$)");
+        std::smatch m;
+        if (std::regex_match(line, m, define_re)) numbers[m[1].str()] = std::stoi(m[2].str());
+    }
+
+    // In `layout(..., binding = N) uniform TYPE NAME;` or `layout(..., binding = N) uniform BLOCK {`
+    // takes `binding = N` out (the whole layout when nothing else is in it) and records it.
+    std::string take_binding(const std::string& line, const std::string& where) {
+        static const std::regex layout_re(R"(layout\s*\(([^)]*)\)\s*uniform\s+(\w+)(\s*)(\w*))");
+        static const std::regex binding_re(R"(^\s*binding\s*=\s*(\w+)\s*$)");
+        std::smatch m;
+        if (!std::regex_search(line, m, layout_re)) return line;
+        std::vector<std::string> kept;
+        std::optional<std::string> value;
+        for (const std::string& item : split(m[1].str(), ',')) {
+            std::smatch b;
+            if (std::regex_match(item, b, binding_re)) value = b[1].str();
+            else kept.push_back(trim(item));
+        }
+        if (!value) return line;
+        int unit = 0;
+        if (std::all_of(value->begin(), value->end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+            unit = std::stoi(*value);
+        else if (auto found = numbers.find(*value); found != numbers.end())
+            unit = found->second;
+        else
+            throw Error(where + ": binding = " + *value + " is neither a number nor a name #defined as one");
+        // A block: `uniform Name {` (nothing after its name on the line, or the brace); a sampler:
+        // `uniform sampler2D u_name`.
+        const bool block = m[4].str().empty();
+        bindings.push_back({block ? m[2].str() : m[4].str(), unit, block});
+        std::string qualifiers;
+        for (const std::string& k : kept) qualifiers += (qualifiers.empty() ? "" : ", ") + k;
+        const std::string replaced = (qualifiers.empty() ? "" : "layout(" + qualifiers + ") ") + "uniform " +
+                                     m[2].str() + m[3].str() + m[4].str();
+        return m.prefix().str() + replaced + m.suffix().str();
     }
 
     void expand(const std::string& path, bool is_main) {
@@ -67,8 +131,11 @@ struct Preprocessor {
                 if (!is_main)
                     throw Error(path + ":" + std::to_string(line_number) +
                                 ": an included file must not have #version");
-                out << line << "\n";
-                for (const auto& define : defines) out << "#define " << define << "\n";
+                out << (profile == GlProfile::Core45 ? line + "\n" : version_header(profile));
+                for (const auto& define : defines) {
+                    out << "#define " << define << "\n";
+                    note_number("#define " + define);
+                }
                 out << "#line " << line_number + 1 << " " << number << "\n";
                 version_seen = true;
             } else if (std::regex_match(line, match, include_re)) {
@@ -79,7 +146,11 @@ struct Preprocessor {
                 if (expanding.count(target) == 0) expand(target, false);
                 out << "#line " << line_number + 1 << " " << number << "\n";
             } else {
-                out << line << "\n";
+                note_number(line);
+                if (profile != GlProfile::Core45 && line.find("binding") != std::string::npos)
+                    out << take_binding(line, path + ":" + std::to_string(line_number)) << "\n";
+                else
+                    out << line << "\n";
             }
         }
         expanding.erase(path);
@@ -96,13 +167,14 @@ std::vector<std::string> default_include_dirs() {
 }
 
 ShaderSource preprocess_shader(const std::string& path, const std::vector<std::string>& include_dirs,
-                               const std::vector<std::string>& defines) {
+                               const std::vector<std::string>& defines, GlProfile profile) {
     Preprocessor pre;
     pre.include_dirs = include_dirs;
     pre.defines = defines;
+    pre.profile = profile;
     const std::string main_path = fs::exists(path) ? fs::weakly_canonical(path).string() : path;
     pre.expand(main_path, true);
-    return {pre.out.str(), pre.files};
+    return {pre.out.str(), pre.files, pre.bindings};
 }
 
 std::string map_log_to_files(const std::string& log, const std::vector<std::string>& files) {
@@ -171,6 +243,23 @@ Shader compile_shader_stage(GLenum stage, const ShaderSource& source, std::strin
     return Shader();
 }
 
+// What layout(binding = N) does in GLSL 4.2 and later, done by the host once the program is linked:
+// each sampler reads its texture unit, each uniform block its binding point.
+void apply_bindings(GLuint program, const std::vector<UniformBinding>& bindings) {
+    GLint previous = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
+    glUseProgram(program);
+    for (const UniformBinding& b : bindings) {
+        if (b.block) {
+            const GLuint index = glGetUniformBlockIndex(program, b.name.c_str());
+            if (index != GL_INVALID_INDEX) glUniformBlockBinding(program, index, GLuint(b.unit));
+        } else if (const GLint location = glGetUniformLocation(program, b.name.c_str()); location >= 0) {
+            glUniform1i(location, b.unit);
+        }
+    }
+    glUseProgram(GLuint(previous));
+}
+
 ShaderProgram::ShaderProgram(std::string name, std::vector<std::string> stage_paths,
                              std::vector<std::string> feedback_varyings, std::vector<std::string> defines)
     : name_(std::move(name)), stage_paths_(std::move(stage_paths)),
@@ -178,6 +267,7 @@ ShaderProgram::ShaderProgram(std::string name, std::vector<std::string> stage_pa
 
 std::optional<std::string> ShaderProgram::build() {
     std::vector<Shader> stages;
+    std::vector<UniformBinding> bindings;  // the shaders' layout(binding = N), set here before 4.2
     std::vector<std::pair<std::string, fs::file_time_type>> watched;
     auto fail = [&](const std::string& message) {
         last_error_ = message;
@@ -203,6 +293,8 @@ std::optional<std::string> ShaderProgram::build() {
         Shader shader = compile_shader_stage(stage, source, &error);
         if (!shader) return fail(error);
         stages.push_back(std::move(shader));
+        for (const UniformBinding& b : source.bindings)
+            if (std::find(bindings.begin(), bindings.end(), b) == bindings.end()) bindings.push_back(b);
     }
     Program program(glCreateProgram());
     for (const auto& s : stages) glAttachShader(program.id(), s.id());
@@ -222,6 +314,7 @@ std::optional<std::string> ShaderProgram::build() {
         glGetProgramInfoLog(program.id(), length, nullptr, log.data());
         return fail(name_ + ": link failed: " + trim(log.c_str()));
     }
+    if (!bindings.empty()) apply_bindings(program.id(), bindings);
     program_ = std::move(program);
     watched_ = std::move(watched);
     locations_.clear();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/gl.hpp"
+#include "common/gl_profile.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -19,9 +20,19 @@
 
 namespace ocean {
 
+// A sampler's texture unit or a uniform block's binding point, which GLSL 4.2 and later write in
+// the shader (layout(binding = N)) and an older profile sets from the host after linking.
+struct UniformBinding {
+    std::string name;    // the sampler uniform, or the uniform block
+    int unit = 0;
+    bool block = false;  // a uniform block (glUniformBlockBinding), else a sampler (glUniform1i)
+    bool operator==(const UniformBinding& o) const { return name == o.name && unit == o.unit && block == o.block; }
+};
+
 struct ShaderSource {
     std::string text;                // what the driver compiles, with #line directives
     std::vector<std::string> files;  // source-string number (in #line) -> file path
+    std::vector<UniformBinding> bindings;  // taken out of the text (profiles before 4.2 only)
 };
 
 // Expands `#include "name"` (looked up beside the including file, then in include_dirs), each
@@ -29,8 +40,14 @@ struct ShaderSource {
 // messages can be mapped back. Throws ocean::Error naming file:line on a missing include.
 // `defines` ("NAME VALUE" or "NAME") become #define lines right after #version: how a step
 // builds compile-time variants of one shader.
+//
+// For a profile other than 4.5 core, the shader's `#version 450 core` becomes that profile's
+// header (`#version 410 core`, or `#version 300 es` with its precision statements), followed by
+// `#define OCEAN_GL_PORTABLE 1`; and each `binding = N` in a uniform's layout is taken out and
+// returned in `bindings` (N a number or a name #defined as one, such as step06's texture_units.h).
 ShaderSource preprocess_shader(const std::string& path, const std::vector<std::string>& include_dirs,
-                               const std::vector<std::string>& defines = {});
+                               const std::vector<std::string>& defines = {},
+                               GlProfile profile = kBuildProfile);
 
 // Rewrites driver messages ("0:12(5): error" from Mesa, "0(12) : error" from NVIDIA) into
 // "path:12:5: error" using the file table of preprocess_shader.
@@ -89,6 +106,10 @@ private:
 // errors in the panel); tests build directly (tests/gpu/program_cache.hpp).
 using ProgramFactory = std::function<ShaderProgram*(const std::string& name, const std::vector<std::string>& files,
                                                     const std::vector<std::string>& defines)>;
+
+// Sets each binding in `program` (linked) from the host: what layout(binding = N) does in the
+// shader in GLSL 4.2 and later (ShaderProgram::build calls it for the older profiles).
+void apply_bindings(GLuint program, const std::vector<UniformBinding>& bindings);
 
 // Compiles one stage from source; on failure returns the mapped log in *error.
 Shader compile_shader_stage(GLenum stage, const ShaderSource& source, std::string* error);

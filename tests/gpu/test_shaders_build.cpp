@@ -112,3 +112,41 @@ TEST_F(ShaderBuild, AVariantThatDoesNotBuildSaysWhichProgramIsDrawnInstead) {
 }
 
 }  // namespace
+
+// The portable profiles move layout(binding = N) to the host (apply_bindings): compiled as GL 4.1
+// core (which this 4.5 context also takes), step06's sky pass reads the sky from unit UNIT_SKY (4),
+// as its 4.5 text says, not from unit 0 where a sampler starts.
+TEST_F(ShaderBuild, AProgramInTheGL41ProfileGetsItsBindingsFromTheHost) {
+    const auto compile = [](const std::string& file) {
+        const ocean::ShaderSource source = ocean::preprocess_shader(
+            std::string(OCEAN_SOURCE_DIR) + "/" + file, ocean::default_include_dirs(), {}, ocean::GlProfile::Core41);
+        std::string error;
+        ocean::Shader shader = ocean::compile_shader_stage(ocean::shader_stage_for(file), source, &error);
+        EXPECT_TRUE(shader) << file << ": " << error;
+        return std::pair(std::move(shader), source.bindings);
+    };
+    auto [vertex, none] = compile("common/shaders/fullscreen.vert");
+    auto [fragment, bindings] = compile("step06_foam_sky/shaders/sky.frag");
+    ASSERT_TRUE(vertex && fragment);
+    ASSERT_EQ(bindings.size(), 1u);
+    EXPECT_EQ(bindings[0].name, "u_sky");
+    EXPECT_EQ(bindings[0].unit, 4);
+    ocean::Program program(glCreateProgram());
+    glAttachShader(program.id(), vertex.id());
+    glAttachShader(program.id(), fragment.id());
+    glLinkProgram(program.id());
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
+    ASSERT_EQ(linked, GL_TRUE);
+    const GLint location = glGetUniformLocation(program.id(), "u_sky");
+    ASSERT_GE(location, 0);
+    GLint unit = -1;
+    glGetUniformiv(program.id(), location, &unit);
+    EXPECT_EQ(unit, 0) << "without the host, a sampler starts on unit 0";
+    ocean::apply_bindings(program.id(), bindings);
+    glGetUniformiv(program.id(), location, &unit);
+    EXPECT_EQ(unit, 4) << "UNIT_SKY, from step06's texture_units.h";
+    GLint current = -1;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    EXPECT_EQ(current, 0) << "apply_bindings leaves the program that was in use";
+}

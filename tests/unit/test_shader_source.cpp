@@ -114,3 +114,66 @@ TEST(ShaderStage, FromExtension) {
 }
 
 }  // namespace
+
+// The portable profiles (common/gl_profile.hpp): the shader's #version 450 core becomes the
+// profile's header, and each layout(binding = N) on a uniform moves to the host, N a number or a
+// name #defined as one (step06's texture_units.h), wherever the #define came from.
+namespace {
+
+struct ProfileFiles : ::testing::Test {
+    fs::path dir = fs::temp_directory_path() / ("ocean_profile_test_" + std::to_string(::getpid()));
+    ProfileFiles() { fs::create_directories(dir); }
+    ~ProfileFiles() override { fs::remove_all(dir); }
+    std::string write(const std::string& name, const std::string& text) {
+        std::ofstream(dir / name) << text;
+        return fs::canonical(dir / name).string();
+    }
+    std::string shader() {
+        write("units.h", "#define UNIT_SKY 4   // the sky\n");
+        return write("main.frag",
+                     "#version 450 core\n#include \"units.h\"\n"
+                     "layout(binding = UNIT_SKY) uniform samplerCube u_sky;\n"
+                     "layout(std140, binding = 2) uniform Waves {\n  vec4 w[4];\n};\n"
+                     "layout(location = 0) out vec4 colour;\n"
+                     "void main() { colour = texture(u_sky, w[0].xyz); }\n");
+    }
+};
+
+TEST_F(ProfileFiles, TheDefaultProfileLeavesTheShaderAsWritten) {
+    const auto source = ocean::preprocess_shader(shader(), {}, {}, ocean::GlProfile::Core45);
+    EXPECT_EQ(source.text.rfind("#version 450 core\n", 0), 0u);
+    EXPECT_NE(source.text.find("layout(binding = UNIT_SKY) uniform samplerCube u_sky;"), std::string::npos);
+    EXPECT_TRUE(source.bindings.empty());
+}
+
+TEST_F(ProfileFiles, GL41TakesTheBindingsOutAndNamesThem) {
+    const auto source = ocean::preprocess_shader(shader(), {}, {"EXTRA 1"}, ocean::GlProfile::Core41);
+    EXPECT_EQ(source.text.rfind("#version 410 core\n#define OCEAN_GL_PORTABLE 1\n", 0), 0u) << source.text;
+    EXPECT_NE(source.text.find("#define EXTRA 1"), std::string::npos) << "the step's defines still follow";
+    EXPECT_NE(source.text.find("\nuniform samplerCube u_sky;\n"), std::string::npos) << source.text;
+    EXPECT_NE(source.text.find("\nlayout(std140) uniform Waves {\n"), std::string::npos) << source.text;
+    EXPECT_NE(source.text.find("layout(location = 0) out vec4 colour;"), std::string::npos) << "other layouts stay";
+    EXPECT_EQ(source.text.find("binding"), std::string::npos);
+    const std::vector<ocean::UniformBinding> expected{{"u_sky", 4, false}, {"Waves", 2, true}};
+    EXPECT_EQ(source.bindings, expected);
+}
+
+TEST_F(ProfileFiles, ES30AddsPrecisionAndCoarseDerivativesBecomePlainOnes) {
+    const auto source = ocean::preprocess_shader(shader(), {}, {}, ocean::GlProfile::Es30);
+    EXPECT_EQ(source.text.rfind("#version 300 es\nprecision highp float;\n", 0), 0u) << source.text;
+    EXPECT_NE(source.text.find("precision highp samplerCube;"), std::string::npos);
+    EXPECT_NE(source.text.find("#define dFdxCoarse dFdx"), std::string::npos);
+    EXPECT_EQ(source.bindings.size(), 2u);
+}
+
+TEST_F(ProfileFiles, ABindingThatIsNotANumberNamesItsLine) {
+    const auto main = write("bad.frag", "#version 450 core\nlayout(binding = UNIT_NOWHERE) uniform sampler2D u_a;\nvoid main() {}\n");
+    try {
+        ocean::preprocess_shader(main, {}, {}, ocean::GlProfile::Core41);
+        FAIL() << "accepted a binding it cannot read";
+    } catch (const ocean::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.frag:2: binding = UNIT_NOWHERE"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace

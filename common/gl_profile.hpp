@@ -1,0 +1,27 @@
+// The OpenGL profile a build targets, fixed when it is compiled:
+//   Core45  GL 4.5 core, the default build: compute shaders, direct state access, tessellation.
+//   Core41  GL 4.1 core, the `portable` build (OCEAN_GL_PORTABLE): what macOS offers. Its loader
+//           (glad, gl:core=4.1) declares nothing newer, so a 4.5 call does not even compile.
+//   Es30    OpenGL ES 3.0, what WebGL 2 offers (a WebAssembly build, __EMSCRIPTEN__).
+// The shaders are written once, as `#version 450 core`; preprocess_shader (shader.hpp) rewrites
+// their header for the build's profile and moves their `layout(binding = N)` to the host.
+#pragma once
+
+namespace ocean {
+
+enum class GlProfile { Core45, Core41, Es30 };
+
+#if defined(__EMSCRIPTEN__)
+inline constexpr GlProfile kBuildProfile = GlProfile::Es30;
+#elif defined(OCEAN_GL_PORTABLE)
+inline constexpr GlProfile kBuildProfile = GlProfile::Core41;
+#else
+inline constexpr GlProfile kBuildProfile = GlProfile::Core45;
+#endif
+
+// "4.5 core", "4.1 core", "ES 3.0": for messages.
+constexpr const char* profile_name(GlProfile profile) {
+    return profile == GlProfile::Core45 ? "4.5 core" : profile == GlProfile::Core41 ? "4.1 core" : "ES 3.0";
+}
+
+}  // namespace ocean
