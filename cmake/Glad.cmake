@@ -1,4 +1,5 @@
-# glad generates the GL 4.5 core and EGL 1.5 loaders at configure time, into the build tree.
+# glad generates the GL 4.5 core (4.1 core in the portable build) and EGL 1.5 loaders at configure
+# time, into the build tree.
 # --reproducible makes it use the spec shipped with the package (no download: we are offline).
 set(OCEAN_GLAD_DIR "${CMAKE_BINARY_DIR}/glad")
 set(OCEAN_GLAD_EXTENSIONS
@@ -7,7 +8,13 @@ set(OCEAN_GLAD_EXTENSIONS
   EGL_EXT_device_query EGL_MESA_platform_surfaceless EGL_KHR_create_context
   EGL_KHR_surfaceless_context EGL_KHR_no_config_context)
 string(REPLACE ";" "," _glad_ext "${OCEAN_GLAD_EXTENSIONS}")
-set(_glad_args --quiet --reproducible --api gl:core=4.5,egl=1.5 --extensions ${_glad_ext}
+# The portable build's loader stops at GL 4.1 core: a 4.5 call does not compile there.
+if(OCEAN_GL_PORTABLE)
+  set(_glad_gl gl:core=4.1)
+else()
+  set(_glad_gl gl:core=4.5)
+endif()
+set(_glad_args --quiet --reproducible --api ${_glad_gl},egl=1.5 --extensions ${_glad_ext}
     --out-path "${OCEAN_GLAD_DIR}" c --loader)
 set(_glad_stamp "${OCEAN_GLAD_DIR}/args.txt")
 
@@ -27,4 +34,7 @@ endif()
 add_library(glad STATIC "${OCEAN_GLAD_DIR}/src/gl.c" "${OCEAN_GLAD_DIR}/src/egl.c")
 target_include_directories(glad SYSTEM PUBLIC "${OCEAN_GLAD_DIR}/include")
 target_link_libraries(glad PUBLIC ${CMAKE_DL_LIBS})
+if(OCEAN_GL_PORTABLE)
+  target_compile_definitions(glad PUBLIC OCEAN_GL_PORTABLE)  # everything that includes GL sees it
+endif()
 set_target_properties(glad PROPERTIES POSITION_INDEPENDENT_CODE ON)

@@ -3,6 +3,7 @@
 // llvmpipe. Rendering goes into an offscreen framebuffer of the requested size.
 #include "common/context.hpp"
 #include "common/error.hpp"
+#include "common/gl_profile.hpp"
 
 #include <glad/egl.h>
 
@@ -50,13 +51,13 @@ public:
         EGLint count = 0;
         eglChooseConfig(display_, config_attribs, &config, 1, &count);
         const EGLint context_attribs[] = {
-            EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+            EGL_CONTEXT_MAJOR_VERSION, kBuildGlMajor, EGL_CONTEXT_MINOR_VERSION, kBuildGlMinor,
             EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
             EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
         context_ = eglCreateContext(display_, count > 0 ? config : EGL_NO_CONFIG_KHR,
                                     EGL_NO_CONTEXT, context_attribs);
         if (context_ == EGL_NO_CONTEXT)
-            throw Error("EGL cannot create an OpenGL 4.5 core context (" + platform + ")");
+            throw Error(std::string("EGL cannot create an OpenGL ") + profile_name(kBuildProfile) + " context (" + platform + ")");
         if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE)
             throw Error("EGL cannot make the context current without a surface (" + platform + ")");
         if (gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)) == 0)
@@ -109,13 +110,12 @@ private:
             throw Error("--size " + std::to_string(size_.x) + "x" + std::to_string(size_.y) +
                         " exceeds this GPU's limit of " + std::to_string(max_side) + " pixels a side");
         color_ = make_renderbuffer();
-        glNamedRenderbufferStorage(color_.id(), GL_RGBA8, size_.x, size_.y);
+        renderbuffer_storage(color_, GL_RGBA8, size_.x, size_.y);
         depth_ = make_renderbuffer();
-        glNamedRenderbufferStorage(depth_.id(), GL_DEPTH24_STENCIL8, size_.x, size_.y);
+        renderbuffer_storage(depth_, GL_DEPTH24_STENCIL8, size_.x, size_.y);
         framebuffer_ = make_framebuffer();
-        glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
-        glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
-        if (glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        attach_renderbuffer(framebuffer_, GL_COLOR_ATTACHMENT0, color_);
+        if (!attach_renderbuffer(framebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depth_))
             throw Error("the offscreen framebuffer of " + std::to_string(size_.x) + "x" +
                         std::to_string(size_.y) + " is incomplete (too large for this GPU?)");
     }

@@ -1,6 +1,7 @@
 // Windowed GL through GLFW: a GL 4.5 core debug context, vsync on.
 #include "common/context.hpp"
 #include "common/error.hpp"
+#include "common/gl_profile.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -17,8 +18,8 @@ public:
     explicit GlfwContext(const ContextOptions& options) {
         glfwSetErrorCallback(nullptr);  // failures are reported below, in one line
         if (glfwInit() != GLFW_TRUE) throw Error("GLFW cannot start (is DISPLAY set to a running X server?)");
-        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, kBuildGlMajor);  // the build's profile (gl_profile.hpp)
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, kBuildGlMinor);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
         glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
@@ -72,14 +73,17 @@ std::string describe_current_gl(const std::string& platform) {
     GLint major = 0, minor = 0;
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
-    if (major < 4 || (major == 4 && minor < 5))
-        throw Error("OpenGL 4.5 is required, this context offers " + std::to_string(major) + "." +
-                    std::to_string(minor));
+    if (major < kBuildGlMajor || (major == kBuildGlMajor && minor < kBuildGlMinor))
+        throw Error(std::string("OpenGL ") + profile_name(kBuildProfile) + " is required, this context offers " +
+                    std::to_string(major) + "." + std::to_string(minor));
     const auto text = [](GLenum name) {
         const auto* s = reinterpret_cast<const char*>(glGetString(name));
         return std::string(s ? s : "?");
     };
-    return text(GL_RENDERER) + " / OpenGL " + text(GL_VERSION) + " (" + platform + ")";
+    // A driver may give a later version than the build asks for; the portable build still calls
+    // only GL 4.1 and compiles its shaders as #version 410 core: say so.
+    const std::string profile = kBuildProfile == GlProfile::Core45 ? "" : std::string("; used as ") + profile_name(kBuildProfile);
+    return text(GL_RENDERER) + " / OpenGL " + text(GL_VERSION) + " (" + platform + profile + ")";
 }
 
 std::unique_ptr<Context> Context::create(const ContextOptions& options) {

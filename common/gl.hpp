@@ -68,12 +68,134 @@ using Query = GlHandle<detail::DeleteQuery>;
 using Shader = GlHandle<detail::DeleteShader>;
 using Program = GlHandle<detail::DeleteProgram>;
 
-// Creation through GL 4.5 direct state access: the object exists (and is typed) at once.
+// GL objects in each profile (gl_profile.hpp). GL 4.5 creates an object typed at once and edits it
+// by its name (direct state access); GL 4.1 and ES 3.0 generate a name and edit the object bound
+// to a target. Each operation the chapters need is written here once, in both forms, so a
+// chapter's code reads the same in every build. The bind-to-edit forms put back what they bound.
+#if defined(OCEAN_GL_PORTABLE) || defined(__EMSCRIPTEN__)
+#define OCEAN_GL_BIND_TO_EDIT 1
+#endif
+
+#if OCEAN_GL_BIND_TO_EDIT
+inline Buffer make_buffer() { GLuint id = 0; glGenBuffers(1, &id); return Buffer(id); }
+inline VertexArray make_vertex_array() { GLuint id = 0; glGenVertexArrays(1, &id); return VertexArray(id); }
+inline Texture make_texture(GLenum) { GLuint id = 0; glGenTextures(1, &id); return Texture(id); }  // typed when first bound
+inline Framebuffer make_framebuffer() { GLuint id = 0; glGenFramebuffers(1, &id); return Framebuffer(id); }
+inline Renderbuffer make_renderbuffer() { GLuint id = 0; glGenRenderbuffers(1, &id); return Renderbuffer(id); }
+inline Query make_query(GLenum) { GLuint id = 0; glGenQueries(1, &id); return Query(id); }
+#else
 inline Buffer make_buffer() { GLuint id = 0; glCreateBuffers(1, &id); return Buffer(id); }
 inline VertexArray make_vertex_array() { GLuint id = 0; glCreateVertexArrays(1, &id); return VertexArray(id); }
 inline Texture make_texture(GLenum target) { GLuint id = 0; glCreateTextures(target, 1, &id); return Texture(id); }
 inline Framebuffer make_framebuffer() { GLuint id = 0; glCreateFramebuffers(1, &id); return Framebuffer(id); }
 inline Renderbuffer make_renderbuffer() { GLuint id = 0; glCreateRenderbuffers(1, &id); return Renderbuffer(id); }
 inline Query make_query(GLenum target) { GLuint id = 0; glCreateQueries(target, 1, &id); return Query(id); }
+#endif
+
+namespace detail {
+// The name bound to `binding` now (GL_ARRAY_BUFFER_BINDING, ...), to put back afterwards. (The
+// copy targets are their own binding names: GL_COPY_WRITE_BUFFER_BINDING is 4.2's alias.)
+inline GLuint bound(GLenum binding) { GLint id = 0; glGetIntegerv(binding, &id); return GLuint(id); }
+}  // namespace detail
+
+// A buffer's data store, `size` bytes from `data` (or uninitialised where it is null); `usage`
+// is GL_STATIC_DRAW for data written once, GL_DYNAMIC_DRAW for data rewritten every frame.
+inline void buffer_data(const Buffer& buffer, GLsizeiptr size, const void* data, GLenum usage) {
+#if OCEAN_GL_BIND_TO_EDIT
+    const GLuint before = detail::bound(GL_COPY_WRITE_BUFFER);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+    glBufferData(GL_COPY_WRITE_BUFFER, size, data, usage);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, before);
+#else
+    glNamedBufferData(buffer.id(), size, data, usage);
+#endif
+}
+
+// Replaces `size` bytes of the buffer's data from `offset`.
+inline void buffer_sub_data(const Buffer& buffer, GLintptr offset, GLsizeiptr size, const void* data) {
+#if OCEAN_GL_BIND_TO_EDIT
+    const GLuint before = detail::bound(GL_COPY_WRITE_BUFFER);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+    glBufferSubData(GL_COPY_WRITE_BUFFER, offset, size, data);
+    glBindBuffer(GL_COPY_WRITE_BUFFER, before);
+#else
+    glNamedBufferSubData(buffer.id(), offset, size, data);
+#endif
+}
+
+// Vertex attribute `index` of the vertex array: `components` floats per vertex, read from `buffer`
+// every `stride` bytes from `offset`.
+inline void vertex_attribute(const VertexArray& vao, GLuint index, const Buffer& buffer, GLint components,
+                             GLsizei stride, GLintptr offset = 0) {
+#if OCEAN_GL_BIND_TO_EDIT
+    const GLuint vao_before = detail::bound(GL_VERTEX_ARRAY_BINDING), buffer_before = detail::bound(GL_ARRAY_BUFFER_BINDING);
+    glBindVertexArray(vao.id());
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+    glEnableVertexAttribArray(index);
+    glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
+    glBindBuffer(GL_ARRAY_BUFFER, buffer_before);
+    glBindVertexArray(vao_before);
+#else
+    glVertexArrayVertexBuffer(vao.id(), index, buffer.id(), offset, stride);
+    glEnableVertexArrayAttrib(vao.id(), index);
+    glVertexArrayAttribFormat(vao.id(), index, components, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao.id(), index, index);
+#endif
+}
+
+// The vertex array's indices (glDrawElements reads them from `buffer`).
+inline void element_buffer(const VertexArray& vao, const Buffer& buffer) {
+#if OCEAN_GL_BIND_TO_EDIT
+    const GLuint before = detail::bound(GL_VERTEX_ARRAY_BINDING);
+    glBindVertexArray(vao.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer.id());  // recorded in the vertex array
+    glBindVertexArray(before);
+#else
+    glVertexArrayElementBuffer(vao.id(), buffer.id());
+#endif
+}
+
+// A renderbuffer's storage: `width` x `height` texels of `format`.
+inline void renderbuffer_storage(const Renderbuffer& renderbuffer, GLenum format, GLsizei width, GLsizei height) {
+#if OCEAN_GL_BIND_TO_EDIT
+    const GLuint before = detail::bound(GL_RENDERBUFFER_BINDING);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, before);
+#else
+    glNamedRenderbufferStorage(renderbuffer.id(), format, width, height);
+#endif
+}
+
+// Attaches a renderbuffer to a framebuffer at `attachment` (GL_COLOR_ATTACHMENT0, ...); returns
+// whether the framebuffer is complete afterwards.
+inline bool attach_renderbuffer(const Framebuffer& framebuffer, GLenum attachment, const Renderbuffer& renderbuffer) {
+#if OCEAN_GL_BIND_TO_EDIT
+    const GLuint before = detail::bound(GL_DRAW_FRAMEBUFFER_BINDING);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer.id());
+    glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, attachment, GL_RENDERBUFFER, renderbuffer.id());
+    const bool complete = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, before);
+    return complete;
+#else
+    glNamedFramebufferRenderbuffer(framebuffer.id(), attachment, GL_RENDERBUFFER, renderbuffer.id());
+    return glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+#endif
+}
+
+// Copies the colour of the rectangle (0, 0)-(width, height) from framebuffer `from` to `to`
+// (names; 0 is the window's), pixel for pixel.
+inline void copy_colour(GLuint from, GLuint to, GLint width, GLint height) {
+#if OCEAN_GL_BIND_TO_EDIT
+    const GLuint read_before = detail::bound(GL_READ_FRAMEBUFFER_BINDING), draw_before = detail::bound(GL_DRAW_FRAMEBUFFER_BINDING);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, read_before);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw_before);
+#else
+    glBlitNamedFramebuffer(from, to, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+#endif
+}
 
 }  // namespace ocean

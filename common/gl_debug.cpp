@@ -1,6 +1,7 @@
 #include "common/gl_debug.hpp"
 
 #include "common/gl.hpp"
+#include "common/gl_profile.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -50,6 +51,9 @@ void enable_gl_debug_output() {
     const char* env = std::getenv("OCEAN_GL_DEBUG");
     g_verbose = env != nullptr && std::strcmp(env, "verbose") == 0;
     g_stats = GlDebugStats();  // counts belong to this context
+    // KHR_debug: core from GL 4.3, an extension before it (Mesa has it; macOS's 4.1 has not, and
+    // there glGetError after each frame is what is left: check_gl_errors).
+    if (kBuildProfile != GlProfile::Core45 && !GLAD_GL_KHR_debug) return;
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(on_gl_message, nullptr);

@@ -19,6 +19,9 @@ inline constexpr GlProfile kBuildProfile = GlProfile::Core41;
 inline constexpr GlProfile kBuildProfile = GlProfile::Core45;
 #endif
 
+// The desktop context a build asks for: 4.5 or 4.1 core (a driver may give a later version).
+inline constexpr int kBuildGlMajor = 4, kBuildGlMinor = kBuildProfile == GlProfile::Core45 ? 5 : 1;
+
 // "4.5 core", "4.1 core", "ES 3.0": for messages.
 constexpr const char* profile_name(GlProfile profile) {
     return profile == GlProfile::Core45 ? "4.5 core" : profile == GlProfile::Core41 ? "4.1 core" : "ES 3.0";

@@ -60,16 +60,12 @@ void GridMesh::build(glm::vec2 size, int x_quads, int z_quads) {
     GridTriangles triangles = grid_triangles(size, x_quads, z_quads);
     const std::vector<unsigned>& indices = triangles.indices;
     vertices_ = make_buffer();
-    glNamedBufferStorage(vertices_.id(), GLsizeiptr(positions.size() * sizeof(glm::vec2)),
-                         positions.data(), 0);
+    buffer_data(vertices_, GLsizeiptr(positions.size() * sizeof(glm::vec2)), positions.data(), GL_STATIC_DRAW);
     indices_ = make_buffer();
-    glNamedBufferStorage(indices_.id(), GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), 0);
+    buffer_data(indices_, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
     vao_ = make_vertex_array();
-    glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(glm::vec2));
-    glVertexArrayElementBuffer(vao_.id(), indices_.id());
-    glEnableVertexArrayAttrib(vao_.id(), 0);
-    glVertexArrayAttribFormat(vao_.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao_.id(), 0, 0);
+    vertex_attribute(vao_, 0, vertices_, 2, sizeof(glm::vec2));  // attribute 0: the rest position (x, z)
+    element_buffer(vao_, indices_);
     vertex_count_ = int(positions.size());
     index_count_ = GLsizei(indices.size());
     chunks_ = std::move(triangles.chunks);

@@ -2,6 +2,7 @@
 #include "common/app.hpp"
 
 #include "common/error.hpp"
+#include "common/gl_profile.hpp"
 #include "common/panel_state.hpp"
 
 #include <GLFW/glfw3.h>
@@ -38,7 +39,7 @@ void App::init_imgui(bool draw_panel) {
         ImGui::GetIO().Fonts->Build();  // what the renderer's NewFrame would do; no texture needed
         return;
     }
-    if (!ImGui_ImplOpenGL3_Init("#version 450 core"))
+    if (!ImGui_ImplOpenGL3_Init(kBuildProfile == GlProfile::Core45 ? "#version 450 core" : "#version 410 core"))
         throw Error("ImGui's OpenGL 3 backend cannot start: it loads GL through libGL.so.1 "
                     "(install libgl1), even when the context comes from EGL");
     imgui_renderer_ready_ = true;

@@ -203,7 +203,9 @@ GLenum shader_stage_for(const std::string& path) {
     const std::string ext = fs::path(path).extension().string();
     if (ext == ".vert") return GL_VERTEX_SHADER;
     if (ext == ".frag") return GL_FRAGMENT_SHADER;
+#ifdef GL_COMPUTE_SHADER  // GL 4.3: not in the portable build's loader
     if (ext == ".comp") return GL_COMPUTE_SHADER;
+#endif
     if (ext == ".geom") return GL_GEOMETRY_SHADER;
     if (ext == ".tesc") return GL_TESS_CONTROL_SHADER;
     if (ext == ".tese") return GL_TESS_EVALUATION_SHADER;

@@ -53,7 +53,8 @@ ShaderSource preprocess_shader(const std::string& path, const std::vector<std::s
 // "path:12:5: error" using the file table of preprocess_shader.
 std::string map_log_to_files(const std::string& log, const std::vector<std::string>& files);
 
-// GL_VERTEX_SHADER for ".vert", and so on for .frag .comp .geom .tesc .tese; 0 otherwise.
+// GL_VERTEX_SHADER for ".vert", and so on for .frag .comp .geom .tesc .tese; 0 otherwise (and for
+// .comp in a profile without compute shaders).
 GLenum shader_stage_for(const std::string& path);
 
 // The include directories every shader gets: the repository root, so a later chapter includes

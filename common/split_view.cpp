@@ -31,9 +31,9 @@ std::optional<std::string> SplitView::render(ParamRegistry& params, const SplitV
     }
     if (size_ != size) {
         colour_ = make_renderbuffer();
-        glNamedRenderbufferStorage(colour_.id(), GL_RGBA8, size.x, size.y);
+        renderbuffer_storage(colour_, GL_RGBA8, size.x, size.y);
         left_half_ = make_framebuffer();
-        glNamedFramebufferRenderbuffer(left_half_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.id());
+        attach_renderbuffer(left_half_, GL_COLOR_ATTACHMENT0, colour_);
         size_ = size;
     }
     const int middle = divide(size.x);
@@ -43,12 +43,9 @@ std::optional<std::string> SplitView::render(ParamRegistry& params, const SplitV
         for (const auto& assignment : side == 0 ? variants.left : variants.right)
             if (auto error = params.set_assignment(assignment)) message = "split view: " + *error;
         render_frame();
-        if (side == 0)
-            glBlitNamedFramebuffer(target, left_half_.id(), 0, 0, middle, size.y, 0, 0, middle, size.y,
-                                   GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        else
-            glBlitNamedFramebuffer(left_half_.id(), target, 0, 0, middle, size.y, 0, 0, middle, size.y,
-                                   GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        // The left variant's left part is kept aside, then copied over the right variant's frame.
+        if (side == 0) copy_colour(target, left_half_.id(), middle, size.y);
+        else copy_colour(left_half_.id(), target, middle, size.y);
         for (auto it = saved.rbegin(); it != saved.rend(); ++it) it->first->store(it->second);
     }
     // A thin white line between the halves.

@@ -16,8 +16,7 @@ class FbmUniforms {
 public:
     FbmUniforms() {
         buffer_ = ocean::make_buffer();
-        glNamedBufferStorage(buffer_.id(), sizeof(GpuWave) * kMaxCascades * kMaxWavesPerCascade, nullptr,
-                             GL_DYNAMIC_STORAGE_BIT);
+        ocean::buffer_data(buffer_, sizeof(GpuWave) * kMaxCascades * kMaxWavesPerCascade, nullptr, GL_DYNAMIC_DRAW);
     }
 
     void upload(const ocean::ShaderProgram& program, const std::vector<Cascade>& cascades, double warp,
@@ -35,7 +34,7 @@ public:
                     {float(step01::phase_at(w.phase_rate, time)), 0, 0, 0}};
             }
         }
-        glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(data.size() * sizeof(GpuWave)), data.data());
+        ocean::buffer_sub_data(buffer_, 0, GLsizeiptr(data.size() * sizeof(GpuWave)), data.data());
         glBindBufferBase(GL_UNIFORM_BUFFER, 0, buffer_.id());
         program.set("u_cascade_count", cascade_count);
         program.set("u_waves_per_cascade", waves_per_cascade);

@@ -1,0 +1,42 @@
+# What the default build and the portable one (portable_tests.cmake) both declare: image_compare
+# (every smoke test), split_check (each chapter's step_split), the framework's CPU unit tests, and
+# the bad input every chapter refuses.
+set(_tests "${PROJECT_SOURCE_DIR}/tests")
+
+# image_compare: compares a screenshot with its golden image (used by every smoke test).
+add_executable(image_compare "${_tests}/image_compare.cpp")
+target_link_libraries(image_compare PRIVATE ocean_common)
+ocean_warnings(image_compare)
+
+# unit: the framework on the CPU (each chapter's own math is tested in its folder: add_step TESTS).
+set(_unit test_params test_cli test_image test_grid test_shader_source test_frame_clock test_faster_of_two
+          test_file_output test_input_events test_input_hand_over test_panel_groups test_panel_state
+          test_panel_widgets)
+list(TRANSFORM _unit PREPEND "${_tests}/unit/")
+list(TRANSFORM _unit APPEND ".cpp")
+add_executable(unit_tests ${_unit})
+target_link_libraries(unit_tests PRIVATE ocean_common GTest::gtest_main)
+target_include_directories(unit_tests PRIVATE "${PROJECT_SOURCE_DIR}")
+target_compile_definitions(unit_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+ocean_warnings(unit_tests)
+# LeakSanitizer checks the CPU-only unit tests (the asan preset turns it off elsewhere: llvmpipe's
+# JIT-compiled code and unloaded GL drivers leave allocations it cannot even name).
+gtest_discover_tests(unit_tests TEST_PREFIX "unit." PROPERTIES LABELS unit DISCOVERY_TIMEOUT 60
+                     ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1")
+
+# split_check: a --split screenshot against its two variants' renders (each chapter's step_split).
+add_executable(split_check "${_tests}/split_check.cpp")
+target_link_libraries(split_check PRIVATE ocean_common)
+ocean_warnings(split_check)
+
+get_property(OCEAN_STEPS GLOBAL PROPERTY OCEAN_STEPS)
+# bad input: each case exits non-zero with exactly one line on stderr, and no crash, in every step.
+foreach(step IN LISTS OCEAN_STEPS)
+  foreach(case unknown_flag unknown_param not_a_number nan_value zero_size missing_preset
+               malformed_preset broken_shader)
+    add_test(NAME ${step}.bad_input.${case}
+      COMMAND bash "${_tests}/cli/bad_input.sh" ${case} $<TARGET_FILE:${step}>
+              "${PROJECT_SOURCE_DIR}/${step}" "${CMAKE_BINARY_DIR}/test-output/bad_input/${step}")
+    set_tests_properties(${step}.bad_input.${case} PROPERTIES LABELS "bad_input;${step}" TIMEOUT 120)
+  endforeach()
+endforeach()
