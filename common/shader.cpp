@@ -6,7 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
-#include <cctype>
+#include <charconv>
 #include <map>
 #include <optional>
 #include <regex>
@@ -67,11 +67,21 @@ struct Preprocessor {
         return "";
     }
 
+    // A whole number that fits an int, else nothing (a #define of 10^20 is not a texture unit, and
+    // must not stop the shader).
+    static std::optional<int> whole_number(const std::string& text) {
+        int value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+        return value;
+    }
+
     // `#define NAME 42`: remembered, so that `binding = NAME` can be read.
     void note_number(const std::string& line) {
         static const std::regex define_re(R"(^\s*#\s*define\s+(\w+)\s+(-?\d+)\s*(//.*)?$)");
         std::smatch m;
-        if (std::regex_match(line, m, define_re)) numbers[m[1].str()] = std::stoi(m[2].str());
+        if (!std::regex_match(line, m, define_re)) return;
+        if (const std::optional<int> value = whole_number(m[2].str())) numbers[m[1].str()] = *value;
     }
 
     // In `layout(..., binding = N) uniform TYPE NAME;` or `layout(..., binding = N) uniform BLOCK {`
@@ -89,17 +99,14 @@ struct Preprocessor {
             else kept.push_back(trim(item));
         }
         if (!value) return line;
-        int unit = 0;
-        if (std::all_of(value->begin(), value->end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
-            unit = std::stoi(*value);
-        else if (auto found = numbers.find(*value); found != numbers.end())
-            unit = found->second;
-        else
+        std::optional<int> unit = whole_number(*value);
+        if (auto found = numbers.find(*value); !unit && found != numbers.end()) unit = found->second;
+        if (!unit || *unit < 0)
             throw Error(where + ": binding = " + *value + " is neither a number nor a name #defined as one");
         // A block: `uniform Name {` (nothing after its name on the line, or the brace); a sampler:
         // `uniform sampler2D u_name`.
         const bool block = m[4].str().empty();
-        bindings.push_back({block ? m[2].str() : m[4].str(), unit, block});
+        bindings.push_back({block ? m[2].str() : m[4].str(), *unit, block});
         std::string qualifiers;
         for (const std::string& k : kept) qualifiers += (qualifiers.empty() ? "" : ", ") + k;
         const std::string replaced = (qualifiers.empty() ? "" : "layout(" + qualifiers + ") ") + "uniform " +

@@ -170,6 +170,19 @@ TEST_F(ProfileFiles, ES30AddsPrecisionAndCoarseDerivativesBecomePlainOnes) {
     EXPECT_EQ(source.bindings.size(), 2u);
 }
 
+TEST_F(ProfileFiles, ADefineTooLargeForAnIntIsNoUnitAndStopsNothing) {
+    // A learner's `#define SEED 12345678901`: read in every profile; not a unit, not a crash.
+    const auto main = write("big.frag", "#version 450 core\n#define SEED 123456789012345678901\n"
+                                        "layout(binding = 99999999999) uniform sampler2D u_a;\nvoid main() {}\n");
+    EXPECT_NO_THROW(ocean::preprocess_shader(main, {}, {}, ocean::GlProfile::Core45));
+    try {
+        ocean::preprocess_shader(main, {}, {}, ocean::GlProfile::Core41);
+        FAIL() << "accepted a binding that is no int";
+    } catch (const ocean::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("big.frag:3: binding = 99999999999"), std::string::npos) << e.what();
+    }
+}
+
 TEST_F(ProfileFiles, ABindingThatIsNotANumberNamesItsLine) {
     const auto main = write("bad.frag", "#version 450 core\nlayout(binding = UNIT_NOWHERE) uniform sampler2D u_a;\nvoid main() {}\n");
     try {
