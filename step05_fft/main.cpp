@@ -128,7 +128,7 @@ private:
         } else {
             gpu_->simulate(time(), chosen, ocean_params_.choppiness, &timers());  // each pass timed
         }
-        if (auto decision = gpu_->take_auto_decision()) std::cout << "backend auto " << *decision << "\n";
+        if (auto decision = gpu_->take_auto_decision()) std::cout << "backend auto " << *decision << std::endl;  // flushed: a log follows the run
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
         if (view_ > 0) {

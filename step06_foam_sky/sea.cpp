@@ -82,7 +82,7 @@ void Sea::simulate(double time, glm::dvec3 eye) {
     cascade_view_.place_origin(world_origin_near({eye.x, eye.z}));
     // backend auto: FFTW and the GPU FFT timed on the first frames, the faster kept (step05).
     simulation_->simulate(time, step05::Backend::Auto, params_.choppiness);
-    if (auto decision = simulation_->take_auto_decision()) std::cout << "backend auto " << *decision << "\n";
+    if (auto decision = simulation_->take_auto_decision()) std::cout << "backend auto " << *decision << std::endl;  // flushed: a log follows the run
 }
 
 void Sea::update_foam(double dt, glm::dvec3 eye, glm::vec3 forward) {

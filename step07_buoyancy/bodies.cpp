@@ -63,4 +63,10 @@ double push_speed(const FloatingBody& body) {
     return c > 1e-6 ? d * c / (1 - std::exp(-c)) : d;
 }
 
+void advance_bodies(std::vector<FloatingBody>& bodies, const Surface& before, const Surface& now, double dt,
+                    double sea_interval) {
+    const double step = std::min(dt, kMaxBodyFrame);
+    for (FloatingBody& body : bodies) body.step(before, now, step, sea_interval);
+}
+
 }  // namespace step07

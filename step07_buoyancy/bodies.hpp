@@ -47,4 +47,16 @@ void steer(FloatingBody& boat, double throttle, double rudder);
 // sea: a speed v covers v (1 - e^-c) / c in a second, so v = d c / (1 - e^-c).
 double push_speed(const FloatingBody& body);
 
+// The longest time the bodies advance in one frame, in seconds. A longer frame is a stall, not a
+// slow machine (auto's backend trial, a window being dragged, a shader rebuilt after an edit): the
+// bodies advance only this far, so the arrows read at the stall's end do not push for the whole
+// stall, and the next frame does not pay for a stall's worth of substeps (kMaxSubstep each, which
+// would make it a stall too). 0.5 s: a machine drawing 2 frames a second still runs at real speed.
+inline constexpr double kMaxBodyFrame = 0.5;
+
+// Advances every body one frame of `dt` seconds (at most kMaxBodyFrame), the sea moving from
+// `before` to `now` over it (FloatingBody::step).
+void advance_bodies(std::vector<FloatingBody>& bodies, const Surface& before, const Surface& now, double dt,
+                    double sea_interval);
+
 }  // namespace step07

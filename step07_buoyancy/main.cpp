@@ -111,7 +111,7 @@ private:
         }
         steer_boat();
         const double sea_interval = sea_now_->time - sea_before_->time;
-        for (auto& body : bodies_) body.step(before, sea_now_->sea, dt, sea_interval);
+        step07::advance_bodies(bodies_, before, sea_now_->sea, dt, sea_interval);
         queries_.update(sea_now_->sea, sea_, camera().eye_world(), camera().forward(), time);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             trajectory_.push_back({time, int(b), bodies_[b].position(), bodies_[b].orientation()});

@@ -6,6 +6,8 @@
 
 #include "step07_buoyancy/sea_surface.hpp"
 
+#include "common/constants.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -156,6 +158,31 @@ TEST(Bodies, ThePanelAndAnArrowTogetherGiveNoMoreThanFull) {
     EXPECT_NEAR(glm::length(flat(doubled.position() - start.position())), d_full, 1e-12);
     EXPECT_NEAR(glm::length(flat(half.position() - start.position())), 0.5 * d_full, 0.1 * d_full)
         << "half the throttle, about half the distance (the drag is linear)";
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Bodies, AStalledFrameAdvancesTheBodiesNoFurtherThanHalfASecond) {
+    // A 5 s frame with the up arrow read at its end (auto's backend trial under a slow build): the
+    // boat moves as in a 0.5 s frame, not ten times as far (CI's steer_push saw 23 m and half a turn).
+    std::vector<FloatingBody> stalled = settled_bodies(), capped = stalled, normal = stalled;
+    const glm::dvec3 start = stalled[step07::kBoat].position();
+    const auto frame = [](std::vector<FloatingBody>& bodies, double dt) {
+        step07::steer(bodies[step07::kBoat], 1, 0);
+        step07::advance_bodies(bodies, kCalm, kCalm, dt, dt);
+    };
+    frame(stalled, 5.0);
+    frame(capped, step07::kMaxBodyFrame);
+    for (int i = 0; i < 3; ++i) frame(normal, 0.1);  // frames shorter than the cap run at real speed
+    const double d_stalled = glm::length(flat(stalled[step07::kBoat].position() - start));
+    const double d_capped = glm::length(flat(capped[step07::kBoat].position() - start));
+    const double d_normal = glm::length(flat(normal[step07::kBoat].position() - start));
+    EXPECT_NEAR(d_stalled, d_capped, 1e-12);
+    EXPECT_GT(d_capped, 0.0);
+    // 0.3 s at full thrust from rest: about 0.4 g t^2 / 2 = 0.18 m (the drag barely acts yet).
+    EXPECT_NEAR(d_normal, 0.5 * step07::kFullThrust * ocean::kGravity * 0.09, 0.03);
 }
 
 }  // namespace
