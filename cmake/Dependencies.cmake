@@ -13,6 +13,27 @@ find_program(XVFB_RUN xvfb-run)                          # xvfb (windowed tests,
 
 # imgui.a holds the GLFW and OpenGL3 backends, which call into GLFW.
 add_library(ocean_imgui INTERFACE)
+if(OCEAN_GL_ES)
+  # imgui.a's OpenGL3 backend is built for desktop GL (glPolygonMode, primitive restart): an ES
+  # context refuses those calls. The ES build compiles the same backend from the package's copy of
+  # its source, in its ES 3 form, through our loader (the shim's GLES3/gl3.h is glad's gles2.h); the
+  # linker then takes the backend from here (named first) and the rest of ImGui from imgui.a.
+  find_file(IMGUI_OPENGL3_SOURCE imgui_impl_opengl3.cpp
+            PATHS /usr/share/doc/libimgui-dev/examples/backends NO_DEFAULT_PATH)
+  if(NOT IMGUI_OPENGL3_SOURCE)
+    message(FATAL_ERROR "the ES build needs ImGui's OpenGL3 backend source, which libimgui-dev installs "
+                        "as /usr/share/doc/libimgui-dev/examples/backends/imgui_impl_opengl3.cpp "
+                        "(reinstall libimgui-dev where /usr/share/doc is excluded)")
+  endif()
+  file(WRITE "${CMAKE_BINARY_DIR}/imgui_es/GLES3/gl3.h"
+       "// ImGui's ES 3 backend includes this: GL ES 3.0 through the build's loader.\n#include <glad/gles2.h>\n")
+  add_library(ocean_imgui_es_renderer STATIC "${IMGUI_OPENGL3_SOURCE}")
+  target_compile_definitions(ocean_imgui_es_renderer PRIVATE IMGUI_IMPL_OPENGL_ES3)
+  target_include_directories(ocean_imgui_es_renderer SYSTEM PRIVATE "${CMAKE_BINARY_DIR}/imgui_es"
+                             /usr/include/imgui/backends)
+  target_link_libraries(ocean_imgui_es_renderer PUBLIC PkgConfig::IMGUI glad)
+  target_link_libraries(ocean_imgui INTERFACE ocean_imgui_es_renderer)
+endif()
 target_link_libraries(ocean_imgui INTERFACE PkgConfig::IMGUI glfw ${CMAKE_DL_LIBS})
 pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET fftw3)    # libfftw3-dev: the CPU FFT (step05), double
 pkg_check_modules(FFTWF REQUIRED IMPORTED_TARGET fftw3f)  # the same package: single precision, and

@@ -45,23 +45,26 @@ public:
                         "platform is available");
         gladLoaderLoadEGL(display_);  // second load: the display's extensions too
 
-        if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) throw Error("EGL cannot bind the OpenGL API");
-        const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+        if (eglBindAPI(kBuildIsEs ? EGL_OPENGL_ES_API : EGL_OPENGL_API) != EGL_TRUE)
+            throw Error(std::string("EGL cannot bind the OpenGL ") + (kBuildIsEs ? "ES " : "") + "API");
+        const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, kBuildIsEs ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_NONE};
         EGLConfig config = nullptr;
         EGLint count = 0;
         eglChooseConfig(display_, config_attribs, &config, 1, &count);
+        // ES has no profiles: the desktop builds ask for the core one.
+        const EGLint profile = kBuildIsEs ? EGL_NONE : EGL_CONTEXT_OPENGL_PROFILE_MASK;
         const EGLint context_attribs[] = {
             EGL_CONTEXT_MAJOR_VERSION, kBuildGlMajor, EGL_CONTEXT_MINOR_VERSION, kBuildGlMinor,
-            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-            EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
+            EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE,
+            profile, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
         context_ = eglCreateContext(display_, count > 0 ? config : EGL_NO_CONFIG_KHR,
                                     EGL_NO_CONTEXT, context_attribs);
         if (context_ == EGL_NO_CONTEXT)
             throw Error(std::string("EGL cannot create an OpenGL ") + profile_name(kBuildProfile) + " context (" + platform + ")");
         if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE)
             throw Error("EGL cannot make the context current without a surface (" + platform + ")");
-        if (gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)) == 0)
-            throw Error("cannot load the OpenGL 4.5 functions through EGL");
+        if (load_gl(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)) == 0)
+            throw Error(std::string("cannot load the OpenGL ") + profile_name(kBuildProfile) + " functions through EGL");
         description_ = describe_current_gl(platform);
         create_target();
     }

@@ -1,4 +1,5 @@
-// Windowed GL through GLFW: a GL 4.5 core debug context, vsync on.
+// Windowed GL through GLFW: a debug context of the build's profile (GL 4.5 or 4.1 core, ES 3.0),
+// vsync on.
 #include "common/context.hpp"
 #include "common/error.hpp"
 #include "common/gl_profile.hpp"
@@ -20,8 +21,12 @@ public:
         if (glfwInit() != GLFW_TRUE) throw Error("GLFW cannot start (is DISPLAY set to a running X server?)");
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, kBuildGlMajor);  // the build's profile (gl_profile.hpp)
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, kBuildGlMinor);
-        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        if (kBuildIsEs) {
+            glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+        } else {
+            glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+            glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        }
         glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
         glfwWindowHint(GLFW_SAMPLES, options.samples);
         window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
@@ -29,13 +34,13 @@ public:
             const char* reason = nullptr;
             glfwGetError(&reason);
             glfwTerminate();
-            throw Error(std::string("cannot open a window with OpenGL 4.5 core") +
+            throw Error(std::string("cannot open a window with OpenGL ") + profile_name(kBuildProfile) +
                         (reason ? std::string(": ") + reason : std::string()));
         }
         glfwMakeContextCurrent(window_);
         glfwSwapInterval(1);
-        if (gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0)
-            throw Error("cannot load the OpenGL 4.5 functions through GLFW");
+        if (load_gl(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0)
+            throw Error(std::string("cannot load the OpenGL ") + profile_name(kBuildProfile) + " functions through GLFW");
         description_ = describe_current_gl("GLFW window");
     }
 
@@ -81,7 +86,7 @@ std::string describe_current_gl(const std::string& platform) {
         return std::string(s ? s : "?");
     };
     // A driver may give a later version than the build asks for; the portable build still calls
-    // only GL 4.1 and compiles its shaders as #version 410 core: say so.
+    // only GL 4.1 (the ES build ES 3.0) and compiles its shaders for it: say so.
     const std::string profile = kBuildProfile == GlProfile::Core45 ? "" : std::string("; used as ") + profile_name(kBuildProfile);
     return text(GL_RENDERER) + " / OpenGL " + text(GL_VERSION) + " (" + platform + profile + ")";
 }

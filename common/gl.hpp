@@ -2,7 +2,11 @@
 // object when it goes out of scope, so no step writes glDelete* by hand.
 #pragma once
 
+#if defined(OCEAN_GL_ES)
+#include <glad/gles2.h>  // OpenGL ES 3.0's loader (the es build): the same gl* names, ES's subset
+#else
 #include <glad/gl.h>
+#endif
 
 #include <utility>
 
@@ -72,9 +76,18 @@ using Program = GlHandle<detail::DeleteProgram>;
 // by its name (direct state access); GL 4.1 and ES 3.0 generate a name and edit the object bound
 // to a target. Each operation the chapters need is written here once, in both forms, so a
 // chapter's code reads the same in every build. The bind-to-edit forms put back what they bound.
-#if defined(OCEAN_GL_PORTABLE) || defined(__EMSCRIPTEN__)
+#if defined(OCEAN_GL_PORTABLE) || defined(OCEAN_GL_ES) || defined(__EMSCRIPTEN__)
 #define OCEAN_GL_BIND_TO_EDIT 1
 #endif
+
+// Loads the build's GL functions through `get_proc` (GLFW's or EGL's): 0 where it failed.
+inline int load_gl(GLADloadfunc get_proc) {
+#if defined(OCEAN_GL_ES)
+    return gladLoadGLES2(get_proc);
+#else
+    return gladLoadGL(get_proc);
+#endif
+}
 
 #if OCEAN_GL_BIND_TO_EDIT
 inline Buffer make_buffer() { GLuint id = 0; glGenBuffers(1, &id); return Buffer(id); }
@@ -96,16 +109,55 @@ namespace detail {
 // The name bound to `binding` now (GL_ARRAY_BUFFER_BINDING, ...), to put back afterwards. (The
 // copy targets are their own binding names: GL_COPY_WRITE_BUFFER_BINDING is 4.2's alias.)
 inline GLuint bound(GLenum binding) { GLint id = 0; glGetIntegerv(binding, &id); return GLuint(id); }
+
+// Binds an object for one edit and, when it goes out of scope, puts back what was bound before:
+// the bind-to-edit forms below hold one of these for each target they bind.
+class BindForEdit {
+public:
+    // `target`: a buffer target, GL_RENDERBUFFER, GL_READ_FRAMEBUFFER or GL_DRAW_FRAMEBUFFER; or,
+    // for what binds to no target, GL_VERTEX_ARRAY_BINDING (a vertex array) or GL_CURRENT_PROGRAM
+    // (the program in use).
+    BindForEdit(GLenum target, GLuint id) : target_(target), before_(bound(binding_of(target))) { bind(target_, id); }
+    ~BindForEdit() {
+        // A program deleted while in use (a shader reloaded) lives until another is put in use,
+        // as the edit just did: its name is gone then, and there is nothing to put back.
+        if (target_ == GL_CURRENT_PROGRAM && before_ != 0 && glIsProgram(before_) == GL_FALSE) return;
+        bind(target_, before_);
+    }
+    BindForEdit(const BindForEdit&) = delete;
+    BindForEdit& operator=(const BindForEdit&) = delete;
+
+private:
+    static GLenum binding_of(GLenum target) {
+        switch (target) {
+        case GL_ARRAY_BUFFER: return GL_ARRAY_BUFFER_BINDING;
+        case GL_RENDERBUFFER: return GL_RENDERBUFFER_BINDING;
+        case GL_READ_FRAMEBUFFER: return GL_READ_FRAMEBUFFER_BINDING;
+        case GL_DRAW_FRAMEBUFFER: return GL_DRAW_FRAMEBUFFER_BINDING;
+        default: return target;  // GL_COPY_WRITE_BUFFER and the two above: their own names
+        }
+    }
+    static void bind(GLenum target, GLuint id) {
+        switch (target) {
+        case GL_VERTEX_ARRAY_BINDING: glBindVertexArray(id); break;
+        case GL_CURRENT_PROGRAM: glUseProgram(id); break;
+        case GL_RENDERBUFFER: glBindRenderbuffer(target, id); break;
+        case GL_READ_FRAMEBUFFER:
+        case GL_DRAW_FRAMEBUFFER: glBindFramebuffer(target, id); break;
+        default: glBindBuffer(target, id);
+        }
+    }
+    GLenum target_;
+    GLuint before_;
+};
 }  // namespace detail
 
 // A buffer's data store, `size` bytes from `data` (or uninitialised where it is null); `usage`
 // is GL_STATIC_DRAW for data written once, GL_DYNAMIC_DRAW for data rewritten every frame.
 inline void buffer_data(const Buffer& buffer, GLsizeiptr size, const void* data, GLenum usage) {
 #if OCEAN_GL_BIND_TO_EDIT
-    const GLuint before = detail::bound(GL_COPY_WRITE_BUFFER);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+    detail::BindForEdit edit(GL_COPY_WRITE_BUFFER, buffer.id());
     glBufferData(GL_COPY_WRITE_BUFFER, size, data, usage);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, before);
 #else
     glNamedBufferData(buffer.id(), size, data, usage);
 #endif
@@ -114,10 +166,8 @@ inline void buffer_data(const Buffer& buffer, GLsizeiptr size, const void* data,
 // Replaces `size` bytes of the buffer's data from `offset`.
 inline void buffer_sub_data(const Buffer& buffer, GLintptr offset, GLsizeiptr size, const void* data) {
 #if OCEAN_GL_BIND_TO_EDIT
-    const GLuint before = detail::bound(GL_COPY_WRITE_BUFFER);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+    detail::BindForEdit edit(GL_COPY_WRITE_BUFFER, buffer.id());
     glBufferSubData(GL_COPY_WRITE_BUFFER, offset, size, data);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, before);
 #else
     glNamedBufferSubData(buffer.id(), offset, size, data);
 #endif
@@ -128,13 +178,10 @@ inline void buffer_sub_data(const Buffer& buffer, GLintptr offset, GLsizeiptr si
 inline void vertex_attribute(const VertexArray& vao, GLuint index, const Buffer& buffer, GLint components,
                              GLsizei stride, GLintptr offset = 0) {
 #if OCEAN_GL_BIND_TO_EDIT
-    const GLuint vao_before = detail::bound(GL_VERTEX_ARRAY_BINDING), buffer_before = detail::bound(GL_ARRAY_BUFFER_BINDING);
-    glBindVertexArray(vao.id());
-    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+    detail::BindForEdit edit_vao(GL_VERTEX_ARRAY_BINDING, vao.id());
+    detail::BindForEdit edit_buffer(GL_ARRAY_BUFFER, buffer.id());  // put back first: declared last
     glEnableVertexAttribArray(index);
     glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
-    glBindBuffer(GL_ARRAY_BUFFER, buffer_before);
-    glBindVertexArray(vao_before);
 #else
     glVertexArrayVertexBuffer(vao.id(), index, buffer.id(), offset, stride);
     glEnableVertexArrayAttrib(vao.id(), index);
@@ -146,10 +193,8 @@ inline void vertex_attribute(const VertexArray& vao, GLuint index, const Buffer&
 // The vertex array's indices (glDrawElements reads them from `buffer`).
 inline void element_buffer(const VertexArray& vao, const Buffer& buffer) {
 #if OCEAN_GL_BIND_TO_EDIT
-    const GLuint before = detail::bound(GL_VERTEX_ARRAY_BINDING);
-    glBindVertexArray(vao.id());
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer.id());  // recorded in the vertex array
-    glBindVertexArray(before);
+    detail::BindForEdit edit(GL_VERTEX_ARRAY_BINDING, vao.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer.id());  // recorded in the vertex array: nothing to put back
 #else
     glVertexArrayElementBuffer(vao.id(), buffer.id());
 #endif
@@ -158,10 +203,8 @@ inline void element_buffer(const VertexArray& vao, const Buffer& buffer) {
 // A renderbuffer's storage: `width` x `height` texels of `format`.
 inline void renderbuffer_storage(const Renderbuffer& renderbuffer, GLenum format, GLsizei width, GLsizei height) {
 #if OCEAN_GL_BIND_TO_EDIT
-    const GLuint before = detail::bound(GL_RENDERBUFFER_BINDING);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer.id());
+    detail::BindForEdit edit(GL_RENDERBUFFER, renderbuffer.id());
     glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, before);
 #else
     glNamedRenderbufferStorage(renderbuffer.id(), format, width, height);
 #endif
@@ -171,12 +214,9 @@ inline void renderbuffer_storage(const Renderbuffer& renderbuffer, GLenum format
 // whether the framebuffer is complete afterwards.
 inline bool attach_renderbuffer(const Framebuffer& framebuffer, GLenum attachment, const Renderbuffer& renderbuffer) {
 #if OCEAN_GL_BIND_TO_EDIT
-    const GLuint before = detail::bound(GL_DRAW_FRAMEBUFFER_BINDING);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer.id());
+    detail::BindForEdit edit(GL_DRAW_FRAMEBUFFER, framebuffer.id());
     glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, attachment, GL_RENDERBUFFER, renderbuffer.id());
-    const bool complete = glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, before);
-    return complete;
+    return glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
 #else
     glNamedFramebufferRenderbuffer(framebuffer.id(), attachment, GL_RENDERBUFFER, renderbuffer.id());
     return glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
@@ -187,12 +227,8 @@ inline bool attach_renderbuffer(const Framebuffer& framebuffer, GLenum attachmen
 // (names; 0 is the window's), pixel for pixel.
 inline void copy_colour(GLuint from, GLuint to, GLint width, GLint height) {
 #if OCEAN_GL_BIND_TO_EDIT
-    const GLuint read_before = detail::bound(GL_READ_FRAMEBUFFER_BINDING), draw_before = detail::bound(GL_DRAW_FRAMEBUFFER_BINDING);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+    detail::BindForEdit read(GL_READ_FRAMEBUFFER, from), draw(GL_DRAW_FRAMEBUFFER, to);
     glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, read_before);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw_before);
 #else
     glBlitNamedFramebuffer(from, to, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 #endif

@@ -7,6 +7,21 @@
 #include <cstdlib>
 #include <cstring>
 
+#if defined(OCEAN_GL_ES)
+// ES has KHR_debug as an extension only, whose names carry its suffix: the same values.
+#define GL_DEBUG_OUTPUT GL_DEBUG_OUTPUT_KHR
+#define GL_DEBUG_OUTPUT_SYNCHRONOUS GL_DEBUG_OUTPUT_SYNCHRONOUS_KHR
+#define GL_DEBUG_SOURCE_SHADER_COMPILER GL_DEBUG_SOURCE_SHADER_COMPILER_KHR
+#define GL_DEBUG_SEVERITY_HIGH GL_DEBUG_SEVERITY_HIGH_KHR
+#define GL_DEBUG_TYPE_ERROR GL_DEBUG_TYPE_ERROR_KHR
+#define GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR_KHR
+#define GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR_KHR
+#define GL_DEBUG_TYPE_PORTABILITY GL_DEBUG_TYPE_PORTABILITY_KHR
+#define GL_DEBUG_TYPE_PERFORMANCE GL_DEBUG_TYPE_PERFORMANCE_KHR
+#define glDebugMessageCallback glDebugMessageCallbackKHR
+#define glDebugMessageControl glDebugMessageControlKHR
+#endif
+
 namespace ocean {
 
 namespace {
@@ -51,8 +66,8 @@ void enable_gl_debug_output() {
     const char* env = std::getenv("OCEAN_GL_DEBUG");
     g_verbose = env != nullptr && std::strcmp(env, "verbose") == 0;
     g_stats = GlDebugStats();  // counts belong to this context
-    // KHR_debug: core from GL 4.3, an extension before it (Mesa has it; macOS's 4.1 has not, and
-    // there glGetError after each frame is what is left: check_gl_errors).
+    // KHR_debug: core from GL 4.3, an extension before it and in ES (Mesa has it; macOS's 4.1 has
+    // not, and there glGetError after each frame is what is left: check_gl_errors).
     if (kBuildProfile != GlProfile::Core45 && !GLAD_GL_KHR_debug) return;
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);

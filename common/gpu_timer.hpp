@@ -1,6 +1,6 @@
 // Time per render pass for --bench, measured two ways:
 //  - GPU time from GL timer queries (GL_TIME_ELAPSED), read a few frames late so reading never
-//    stalls: the figure to quote on a real GPU;
+//    stalls: the figure to quote on a real GPU (not in the ES build: ES 3.0 has no timer queries);
 //  - wall time from a glFinish() before and after the pass: the figure to quote on llvmpipe,
 //    which defers its work to the next flush and so gives timer queries little meaning.
 // The glFinish calls serialise the CPU and the GPU (on llvmpipe, its threads: 3 to 5 % of step06's
@@ -60,6 +60,7 @@ private:
     struct Pending { std::string pass; Query query; };
     bool enabled_ = false;
     std::string open_pass_;
+    bool open_ = false;  // between begin and end
     Query open_query_;
     std::chrono::steady_clock::time_point open_start_;
     std::map<std::string, std::vector<double>> wall_ms_;

@@ -55,6 +55,16 @@ std::vector<std::size_t> visible_chunks(const std::vector<GridChunk>& chunks, co
     return visible;
 }
 
+std::vector<unsigned> triangle_edges(const std::vector<unsigned>& triangles) {
+    std::vector<unsigned> edges;
+    edges.reserve(2 * triangles.size());
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const unsigned a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+        edges.insert(edges.end(), {a, b, b, c, c, a});
+    }
+    return edges;
+}
+
 void GridMesh::build(glm::vec2 size, int x_quads, int z_quads) {
     const auto positions = grid_positions(size, x_quads, z_quads);
     GridTriangles triangles = grid_triangles(size, x_quads, z_quads);
@@ -66,31 +76,54 @@ void GridMesh::build(glm::vec2 size, int x_quads, int z_quads) {
     vao_ = make_vertex_array();
     vertex_attribute(vao_, 0, vertices_, 2, sizeof(glm::vec2));  // attribute 0: the rest position (x, z)
     element_buffer(vao_, indices_);
+#if defined(OCEAN_GL_ES)
+    const std::vector<unsigned> edges = triangle_edges(indices);
+    edges_ = make_buffer();
+    buffer_data(edges_, GLsizeiptr(edges.size() * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
+    edges_vao_ = make_vertex_array();
+    vertex_attribute(edges_vao_, 0, vertices_, 2, sizeof(glm::vec2));
+    element_buffer(edges_vao_, edges_);
+#endif
     vertex_count_ = int(positions.size());
     index_count_ = GLsizei(indices.size());
     chunks_ = std::move(triangles.chunks);
 }
 
-void GridMesh::draw(bool wireframe) const {
-    glBindVertexArray(vao_.id());
-    if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
-    if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-}
+void GridMesh::draw(bool wireframe) const { draw_ranges({0}, {std::size_t(index_count_)}, wireframe); }
 
 std::size_t GridMesh::draw_visible(const glm::mat4& view_projection, float margin, bool wireframe) const {
     const std::vector<std::size_t> visible = visible_chunks(chunks_, view_projection, margin);
-    std::vector<GLsizei> counts;
-    std::vector<const void*> offsets;
+    std::vector<std::size_t> firsts, counts;
     for (std::size_t c : visible) {
-        counts.push_back(GLsizei(chunks_[c].count));
-        offsets.push_back(reinterpret_cast<const void*>(chunks_[c].first * sizeof(unsigned)));
+        firsts.push_back(chunks_[c].first);
+        counts.push_back(chunks_[c].count);
+    }
+    draw_ranges(firsts, counts, wireframe);
+    return visible.size();
+}
+
+void GridMesh::draw_ranges(const std::vector<std::size_t>& firsts, const std::vector<std::size_t>& counts,
+                           bool wireframe) const {
+#if defined(OCEAN_GL_ES)
+    // ES has no polygon mode and no multi-draw: one draw a range, of the triangles or of their
+    // edges as lines (triangle_edges: the edges of indices [first, first + count) are at twice both).
+    glBindVertexArray(wireframe ? edges_vao_.id() : vao_.id());
+    const std::size_t scale = wireframe ? 2 : 1;
+    for (std::size_t r = 0; r < firsts.size(); ++r)
+        glDrawElements(wireframe ? GL_LINES : GL_TRIANGLES, GLsizei(scale * counts[r]), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(scale * firsts[r] * sizeof(unsigned)));
+#else
+    std::vector<GLsizei> sizes;
+    std::vector<const void*> offsets;
+    for (std::size_t r = 0; r < firsts.size(); ++r) {
+        sizes.push_back(GLsizei(counts[r]));
+        offsets.push_back(reinterpret_cast<const void*>(firsts[r] * sizeof(unsigned)));
     }
     glBindVertexArray(vao_.id());
     if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(visible.size()));
+    glMultiDrawElements(GL_TRIANGLES, sizes.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(firsts.size()));
     if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    return visible.size();
+#endif
 }
 
 void draw_grid(const GridMesh& grid, const ShaderProgram& program, const Camera& camera, float aspect,

@@ -34,6 +34,10 @@ GridTriangles grid_triangles(glm::vec2 size, int x_quads, int z_quads);
 std::vector<std::size_t> visible_chunks(const std::vector<GridChunk>& chunks, const glm::mat4& view_projection,
                                         float margin);
 
+// The edges of triangles (three indices each) as lines (two indices each): a, b, b, c, c, a. The
+// wireframe where there is no polygon mode (ES); triangle t's edges are at indices 6t to 6t + 5.
+std::vector<unsigned> triangle_edges(const std::vector<unsigned>& triangles);
+
 class GridMesh {
 public:
     void build(glm::vec2 size, int x_quads, int z_quads);
@@ -47,8 +51,15 @@ public:
     GLuint vertex_array() const { return vao_.id(); }
 
 private:
+    // Index ranges [first, first + count) of the triangles, in one draw where the profile allows.
+    void draw_ranges(const std::vector<std::size_t>& firsts, const std::vector<std::size_t>& counts, bool wireframe) const;
+
     VertexArray vao_;
     Buffer vertices_, indices_;
+#if defined(OCEAN_GL_ES)
+    VertexArray edges_vao_;  // the wireframe: ES has no polygon mode (triangle_edges)
+    Buffer edges_;
+#endif
     int vertex_count_ = 0;
     GLsizei index_count_ = 0;
     std::vector<GridChunk> chunks_;

@@ -39,7 +39,9 @@ void App::init_imgui(bool draw_panel) {
         ImGui::GetIO().Fonts->Build();  // what the renderer's NewFrame would do; no texture needed
         return;
     }
-    if (!ImGui_ImplOpenGL3_Init(kBuildProfile == GlProfile::Core45 ? "#version 450 core" : "#version 410 core"))
+    if (!ImGui_ImplOpenGL3_Init(kBuildProfile == GlProfile::Core45   ? "#version 450 core"
+                                 : kBuildProfile == GlProfile::Core41 ? "#version 410 core"
+                                                                      : "#version 300 es"))
         throw Error("ImGui's OpenGL 3 backend cannot start: it loads GL through libGL.so.1 "
                     "(install libgl1), even when the context comes from EGL");
     imgui_renderer_ready_ = true;

@@ -78,6 +78,7 @@ struct Preprocessor {
 
     // `#define NAME 42`: remembered, so that `binding = NAME` can be read.
     void note_number(const std::string& line) {
+        if (profile == GlProfile::Core45) return;  // 4.5 keeps its bindings: no regex on every line
         static const std::regex define_re(R"(^\s*#\s*define\s+(\w+)\s+(-?\d+)\s*(//.*)?$)");
         std::smatch m;
         if (!std::regex_match(line, m, define_re)) return;
@@ -213,9 +214,11 @@ GLenum shader_stage_for(const std::string& path) {
 #ifdef GL_COMPUTE_SHADER  // GL 4.3: not in the portable build's loader
     if (ext == ".comp") return GL_COMPUTE_SHADER;
 #endif
+#ifdef GL_TESS_CONTROL_SHADER  // GL 3.2 and 4.0: not in ES 3.0's loader
     if (ext == ".geom") return GL_GEOMETRY_SHADER;
     if (ext == ".tesc") return GL_TESS_CONTROL_SHADER;
     if (ext == ".tese") return GL_TESS_EVALUATION_SHADER;
+#endif
     return 0;
 }
 
@@ -255,9 +258,7 @@ Shader compile_shader_stage(GLenum stage, const ShaderSource& source, std::strin
 // What layout(binding = N) does in GLSL 4.2 and later, done by the host once the program is linked:
 // each sampler reads its texture unit, each uniform block its binding point.
 void apply_bindings(GLuint program, const std::vector<UniformBinding>& bindings) {
-    GLint previous = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
-    glUseProgram(program);
+    detail::BindForEdit use(GL_CURRENT_PROGRAM, program);  // glUniform1i writes the program in use
     for (const UniformBinding& b : bindings) {
         if (b.block) {
             const GLuint index = glGetUniformBlockIndex(program, b.name.c_str());
@@ -266,7 +267,6 @@ void apply_bindings(GLuint program, const std::vector<UniformBinding>& bindings)
             glUniform1i(location, b.unit);
         }
     }
-    glUseProgram(GLuint(previous));
 }
 
 ShaderProgram::ShaderProgram(std::string name, std::vector<std::string> stage_paths,
@@ -286,7 +286,12 @@ std::optional<std::string> ShaderProgram::build() {
     };
     for (const auto& path : stage_paths_) {
         const GLenum stage = shader_stage_for(path);
-        if (stage == 0) return fail(path + ": unknown shader stage (use .vert .frag .comp ...)");
+        if (stage == 0) {
+            const std::string ext = fs::path(path).extension().string();
+            const bool known = ext == ".comp" || ext == ".geom" || ext == ".tesc" || ext == ".tese";
+            return fail(path + (known ? std::string(": OpenGL ") + profile_name(kBuildProfile) + " has no such shader stage"
+                                      : std::string(": unknown shader stage (use .vert .frag .comp ...)")));
+        }
         ShaderSource source;
         try {
             source = preprocess_shader(path, default_include_dirs(), defines_);
@@ -347,32 +352,49 @@ GLint ShaderProgram::location(const std::string& uniform) const {
     return it->second;
 }
 
-// glProgramUniform* writes into the program without binding it; location -1 (a uniform the
-// compiler optimised away) is silently ignored by GL, which is what we want while editing.
-void ShaderProgram::set(const std::string& u, float v) const { glProgramUniform1f(id(), location(u), v); }
-void ShaderProgram::set(const std::string& u, int v) const { glProgramUniform1i(id(), location(u), v); }
+// Writes a uniform of this program without leaving it in use. GL 4.1 and 4.5 write a program's
+// uniforms by its name (glProgramUniform*); ES 3.0 writes only the program in use (glUniform*), so
+// there the program is put in use for the write and the one before put back. Location -1 (a
+// uniform the compiler optimised away) is silently ignored by GL, which is what we want while
+// editing.
+#if defined(OCEAN_GL_ES)
+#define OCEAN_SET_UNIFORM(Form, ...)                          \
+    do {                                                      \
+        detail::BindForEdit use(GL_CURRENT_PROGRAM, id());    \
+        glUniform##Form(__VA_ARGS__);                         \
+    } while (false)
+#else
+#define OCEAN_SET_UNIFORM(Form, ...) glProgramUniform##Form(id(), __VA_ARGS__)
+#endif
+
+void ShaderProgram::set(const std::string& u, float v) const { OCEAN_SET_UNIFORM(1f, location(u), v); }
+void ShaderProgram::set(const std::string& u, int v) const { OCEAN_SET_UNIFORM(1i, location(u), v); }
 void ShaderProgram::set(const std::string& u, const glm::vec2& v) const {
-    glProgramUniform2fv(id(), location(u), 1, glm::value_ptr(v));
+    OCEAN_SET_UNIFORM(2fv, location(u), 1, glm::value_ptr(v));
 }
 void ShaderProgram::set(const std::string& u, const glm::vec3& v) const {
-    glProgramUniform3fv(id(), location(u), 1, glm::value_ptr(v));
+    OCEAN_SET_UNIFORM(3fv, location(u), 1, glm::value_ptr(v));
 }
 void ShaderProgram::set(const std::string& u, const glm::vec4& v) const {
-    glProgramUniform4fv(id(), location(u), 1, glm::value_ptr(v));
+    OCEAN_SET_UNIFORM(4fv, location(u), 1, glm::value_ptr(v));
 }
 void ShaderProgram::set(const std::string& u, const glm::mat4& v) const {
-    glProgramUniformMatrix4fv(id(), location(u), 1, GL_FALSE, glm::value_ptr(v));
+    OCEAN_SET_UNIFORM(Matrix4fv, location(u), 1, GL_FALSE, glm::value_ptr(v));
 }
 void ShaderProgram::set(const std::string& u, const std::vector<glm::vec4>& v) const {
-    if (!v.empty())
-        glProgramUniform4fv(id(), location(u), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+    if (!v.empty()) OCEAN_SET_UNIFORM(4fv, location(u), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+}
+void ShaderProgram::set(const std::string& u, const std::vector<glm::vec3>& v) const {
+    if (!v.empty()) OCEAN_SET_UNIFORM(3fv, location(u), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
 }
 void ShaderProgram::set(const std::string& u, const std::vector<float>& v) const {
-    if (!v.empty()) glProgramUniform1fv(id(), location(u), static_cast<GLsizei>(v.size()), v.data());
+    if (!v.empty()) OCEAN_SET_UNIFORM(1fv, location(u), static_cast<GLsizei>(v.size()), v.data());
 }
-void ShaderProgram::set(const std::string& u, const glm::ivec2& v) const { glProgramUniform2i(id(), location(u), v.x, v.y); }
+void ShaderProgram::set(const std::string& u, const glm::ivec2& v) const { OCEAN_SET_UNIFORM(2i, location(u), v.x, v.y); }
 void ShaderProgram::set(const std::string& u, const std::vector<glm::vec2>& v) const {
-    if (!v.empty()) glProgramUniform2fv(id(), location(u), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
+    if (!v.empty()) OCEAN_SET_UNIFORM(2fv, location(u), static_cast<GLsizei>(v.size()), glm::value_ptr(v[0]));
 }
+
+#undef OCEAN_SET_UNIFORM
 
 }  // namespace ocean

@@ -88,6 +88,7 @@ public:
     void set(const std::string& uniform, const glm::vec4& v) const;
     void set(const std::string& uniform, const glm::mat4& v) const;
     void set(const std::string& uniform, const std::vector<glm::vec4>& v) const;
+    void set(const std::string& uniform, const std::vector<glm::vec3>& v) const;
     void set(const std::string& uniform, const std::vector<float>& v) const;
     void set(const std::string& uniform, const std::vector<glm::vec2>& v) const;
 

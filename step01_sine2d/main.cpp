@@ -110,7 +110,7 @@ private:
         plot_->set("u_show_waves", int(show_waves_));
         plot_->set("u_show_sum", int(show_sum_));
         plot_->set("u_line_width", line_width_);
-        glProgramUniform3fv(plot_->id(), plot_->location("u_wave_colors"), kMaxWaves, &kWaveColors[0].x);
+        plot_->set("u_wave_colors", std::vector<glm::vec3>(kWaveColors.begin(), kWaveColors.end()));
 
         ocean::GpuScope timed(timers(), "plot");
         glUseProgram(plot_->id());

@@ -37,6 +37,23 @@ TEST(GridChunks, HoldEveryTriangleOnceInsideTheirBoxes) {
     EXPECT_EQ(quads.size(), std::size_t(xq) * zq) << "every quad exactly once";
 }
 
+TEST(GridChunks, TheWireframesEdgesOfAChunkAreAtTwiceItsTrianglesIndices) {
+    // ES's wireframe (triangle_edges) draws a chunk's edges from 2 first, 2 count: each quad's
+    // outline and diagonal, nothing from another chunk.
+    const ocean::GridTriangles t = ocean::grid_triangles({40, 40}, 20, 20);
+    const std::vector<unsigned> edges = ocean::triangle_edges(t.indices);
+    ASSERT_EQ(edges.size(), 2 * t.indices.size());
+    for (const ocean::GridChunk& c : t.chunks) {
+        std::set<unsigned> triangle_vertices(t.indices.begin() + long(c.first), t.indices.begin() + long(c.first + c.count));
+        std::set<unsigned> edge_vertices(edges.begin() + long(2 * c.first), edges.begin() + long(2 * (c.first + c.count)));
+        EXPECT_EQ(edge_vertices, triangle_vertices);
+    }
+    // The first quad (a, c, b), (b, c, d): edges a-c, c-b, b-a, b-c, c-d, d-b.
+    const unsigned a = 0, b = 1, c = 21, d = 22;
+    EXPECT_EQ(std::vector<unsigned>(edges.begin(), edges.begin() + 12),
+              (std::vector<unsigned>{a, c, c, b, b, a, b, c, c, d, d, b}));
+}
+
 TEST(Frustum, BoxesBehindBesideAndAhead) {
     // At the origin, 2 m up, looking along -z with a 60 degree field of view.
     const glm::mat4 vp = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 1000.0f) *

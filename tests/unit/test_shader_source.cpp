@@ -113,7 +113,11 @@ TEST(ShaderStage, FromExtension) {
 #else
     EXPECT_EQ(ocean::shader_stage_for("fft.comp"), 0u) << "GL 4.1 has no compute shaders";
 #endif
+#ifdef GL_TESS_EVALUATION_SHADER
     EXPECT_EQ(ocean::shader_stage_for("x.tese"), GLenum(GL_TESS_EVALUATION_SHADER));
+#else
+    EXPECT_EQ(ocean::shader_stage_for("x.tese"), 0u) << "ES 3.0 has no tessellation";
+#endif
     EXPECT_EQ(ocean::shader_stage_for("waves.glsl"), 0u);
 }
 
