@@ -1,6 +1,8 @@
 // step05 on the GPU: the Stockham FFT against FFTW on random input, and the three backends'
 // ocean fields against the CPU reference (spectrum, h0, time evolution in double, FFTW).
 // Relative error = max |gpu - reference| / max |reference|, per field; limit 1e-4.
+#include "common/error.hpp"
+#include "step05_fft/fragment_fft.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
@@ -39,6 +41,66 @@ double relative_error(const std::vector<float>& gpu, std::size_t offset, std::si
         largest = std::max(largest, std::abs(reference[i]));
     }
     return largest > 0 ? worst / largest : worst;
+}
+
+// The fragment-pass FFT (the portable profiles' FFT) on random input: both fields of the texture
+// against FFTW's inverse transform in double, from 2 x 2 to 512 x 512. float32 throughout, so the
+// error grows like log2 N times the rounding: the same 1e-4 as the compute forms.
+TEST_F(FftTest, FragmentFftMatchesFftwOnRandomInput) {
+    for (int n : {2, 8, 64, 256, 512}) {
+        FragmentFft fft(factory(), n);
+        std::mt19937 random{unsigned(n) + 7u};
+        std::uniform_real_distribution<float> uniform(-1, 1);
+        std::vector<float> input(std::size_t(n) * n * 4);
+        for (float& v : input) v = uniform(random);
+        ocean::Texture source = ocean::make_float_texture_2d(GL_RGBA32F, n, n);
+        ocean::upload_float_texture_2d(source, GL_RGBA32F, n, n, input.data());
+        const ocean::Texture& result = fft.inverse(source);
+        std::vector<float> output(input.size());
+        glGetTextureImage(result.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(output.size() * sizeof(float)), output.data());
+        for (int field = 0; field < 2; ++field) {
+            // Texel (x, z) at z n + x, as ComplexField's row (z) major layout.
+            ComplexField values(std::size_t(n) * n);
+            for (std::size_t i = 0; i < values.size(); ++i)
+                values[i] = {input[4 * i + 2 * field], input[4 * i + 2 * field + 1]};
+            const ComplexField reference = inverse_fft_2d(values, n);
+            std::vector<double> re(reference.size()), im(reference.size());
+            for (std::size_t i = 0; i < reference.size(); ++i) {
+                re[i] = reference[i].real();
+                im[i] = reference[i].imag();
+            }
+            const double error = std::max(relative_error(output, 2 * field, 4, re), relative_error(output, 2 * field + 1, 4, im));
+            EXPECT_LT(error, 1e-4) << "N = " << n << ", field " << field;
+            if (field == 0) std::printf("fragment FFT, N = %d: vs FFTW relative error %.2e\n", n, error);
+        }
+    }
+}
+
+// The passes leave the caller's state as it was: its framebuffer, viewport and program drawn with next.
+TEST_F(FftTest, FragmentFftPutsBackTheFramebufferViewportAndProgram) {
+    FragmentFft fft(factory(), 16);
+    ocean::Texture source = ocean::make_float_texture_2d(GL_RGBA32F, 16, 16);
+    ocean::Framebuffer mine = ocean::make_framebuffer();
+    ocean::Texture colour = ocean::make_float_texture_2d(GL_RGBA32F, 40, 30);
+    ASSERT_TRUE(ocean::attach_texture_2d(mine, GL_COLOR_ATTACHMENT0, colour));
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, mine.id());
+    glViewport(3, 4, 40, 30);
+    glEnable(GL_BLEND);
+    fft.inverse(source);
+    GLint framebuffer = 0, viewport[4] = {};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    EXPECT_EQ(GLuint(framebuffer), mine.id());
+    EXPECT_EQ(viewport[0], 3);
+    EXPECT_EQ(viewport[2], 40);
+    EXPECT_TRUE(glIsEnabled(GL_BLEND));
+    glDisable(GL_BLEND);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+}
+
+TEST_F(FftTest, FragmentFftRefusesASizeThatIsNotAPowerOfTwo) {
+    EXPECT_THROW(FragmentFft(factory(), 100), ocean::Error);
+    EXPECT_THROW(FragmentFft(factory(), 1), ocean::Error);
 }
 
 // Both forms of the GPU FFT (the plain radix 2 and radix 4 in Stockham's order), every resolution.

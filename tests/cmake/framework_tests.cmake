@@ -1,6 +1,6 @@
-# What the default build and the portable one (portable_tests.cmake) both declare: image_compare
-# (every smoke test), split_check (each chapter's step_split), the framework's CPU unit tests, and
-# the bad input every chapter refuses.
+# What the default build and the portable ones (portable_tests.cmake) both declare: image_compare
+# (every smoke test), split_check (each chapter's step_split), the framework's CPU unit tests, the
+# fragment passes' GPU tests, and the bad input every chapter refuses.
 set(_tests "${PROJECT_SOURCE_DIR}/tests")
 
 # image_compare: compares a screenshot with its golden image (used by every smoke test).
@@ -23,6 +23,17 @@ ocean_warnings(unit_tests)
 # JIT-compiled code and unloaded GL drivers leave allocations it cannot even name).
 gtest_discover_tests(unit_tests TEST_PREFIX "unit." PROPERTIES LABELS unit DISCOVERY_TIMEOUT 60
                      ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1")
+
+# The fragment passes that stand in for compute shaders, in the build's GL profile: float textures
+# (common/gl_texture.hpp) and step05's fragment FFT, whose source it compiles (it needs nothing
+# else of step05, which the portable builds leave out).
+add_executable(portable_gpu_tests "${_tests}/gpu/gpu_main.cpp" "${_tests}/gpu/portable_gpu.cpp"
+               "${PROJECT_SOURCE_DIR}/step05_fft/fragment_fft.cpp")
+target_link_libraries(portable_gpu_tests PRIVATE ocean_common GTest::gtest)
+target_include_directories(portable_gpu_tests PRIVATE "${PROJECT_SOURCE_DIR}")
+target_compile_definitions(portable_gpu_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+ocean_warnings(portable_gpu_tests)
+gtest_discover_tests(portable_gpu_tests TEST_PREFIX "gpu." PROPERTIES LABELS gpu DISCOVERY_TIMEOUT 60)
 
 # split_check: a --split screenshot against its two variants' renders (each chapter's step_split).
 add_executable(split_check "${_tests}/split_check.cpp")
