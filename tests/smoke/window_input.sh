@@ -9,7 +9,8 @@
 #          --frames runs out.
 #   steer_push  (step07) keys; the panel hidden, a right click on the raft within one frame pushes it
 #          (its "push:" line); then, after auto's backend trial, the up and right arrows held 1 s
-#          move the boat and turn it to its right (measured from its exported trajectory).
+#          (ARROWS_HELD_S: 6 under the sanitizers, whose frames are longer than 1 s) move the boat
+#          and turn it to its right (measured from its exported trajectory).
 #   drag   (a 3D step) the cursor jumps across the window and the left button goes down within one
 #          frame, then drags 80 px right: the yaw turns by 80 x 0.25 = 20 degrees, not by the jump.
 #   plot   (step01) a drag 64 px left pans the plot by 64 / 640 of its 32 m span (x_min -4 -> -0.8),
@@ -134,7 +135,7 @@ case "$case_name" in
       # line): its frames run the slower backend, seconds a frame under the sanitizers.
       wait_for "^backend auto at" 60 > /dev/null || fail "no backend chosen in 60 s"
       xdotool keydown Up keydown Right
-      sleep 1
+      sleep "${ARROWS_HELD_S:-1}"
       xdotool keyup Up keyup Right
       sleep 0.3
     fi
@@ -154,10 +155,11 @@ case "$case_name" in
           printf "%.2f %.2f %.1f\n", sqrt((x1[2] - x0[2])^2 + (z1[2] - z0[2])^2), sqrt((x1[0] - x0[0])^2 + (z1[0] - z0[0])^2), turn
         }' "$out/export/trajectories.csv") || fail "no trajectories were exported"
       read -r boat buoy turn <<< "$motion"
-      echo "the arrows held 1 s: the boat moved $boat m and turned $turn degrees; the buoy drifted $buoy m"
+      held="${ARROWS_HELD_S:-1} s"
+      echo "the arrows held $held: the boat moved $boat m and turned $turn degrees; the buoy drifted $buoy m"
       awk -v b="$boat" -v d="$buoy" 'BEGIN { exit !(b >= 2 && b >= 2 * d) }' ||
-        fail "the up arrow held 1 s moved the boat $boat m (the buoy drifted $buoy m): not visibly"
-      awk -v t="$turn" 'BEGIN { exit !(t >= 8) }' || fail "the right arrow held 1 s turned the boat $turn degrees, not to its right"
+        fail "the up arrow held $held moved the boat $boat m (the buoy drifted $buoy m): not visibly"
+      awk -v t="$turn" 'BEGIN { exit !(t >= 8) }' || fail "the right arrow held $held turned the boat $turn degrees, not to its right"
     fi
     echo "ok: F1 toggled the panel on every tap, Esc quit"
     ;;
