@@ -49,6 +49,18 @@ function(add_step name)
   target_compile_definitions(${name} PRIVATE
     OCEAN_STEP_NAME="${name}" OCEAN_STEP_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
   ocean_warnings(${name})
+  if(EMSCRIPTEN)
+    # A page: NAME.js and NAME.wasm, with the chapter's shaders in its file system where the
+    # native build reads them (tests/web, ./ocean web).
+    set_target_properties(${name} PROPERTIES SUFFIX ".js" RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/site")
+    set(STEP ${name})
+    configure_file("${PROJECT_SOURCE_DIR}/web/chapter.html.in" "${CMAKE_BINARY_DIR}/site/${name}.html" @ONLY)
+    target_link_options(${name} PRIVATE
+      "SHELL:--preload-file ${CMAKE_CURRENT_SOURCE_DIR}/shaders@${CMAKE_CURRENT_SOURCE_DIR}/shaders")
+    set_property(GLOBAL APPEND PROPERTY OCEAN_STEPS ${name})
+    set(OCEAN_STEP ${name} PARENT_SCOPE)
+    return()
+  endif()
 
   # The chapter's test executables: NAME_tests (CPU) and NAME_gpu_tests (a headless GL context).
   # The portable build runs the CPU tests; the GPU tests read results back with compute shaders

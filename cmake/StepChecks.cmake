@@ -8,6 +8,9 @@
 # named STEP.KIND.CASE (STEP.KIND when CASE is ""), labelled KIND, LABELS and STEP. COMMAND may
 # use the shared harness scripts (OCEAN_TESTS_DIR) and the tools' targets ($<TARGET_FILE:...>).
 function(step_test kind case)
+  if(EMSCRIPTEN)
+    return()  # the browser build has its own tests (tests/web)
+  endif()
   cmake_parse_arguments(ARG "" "TIMEOUT" "COMMAND;LABELS;PROPERTIES" ${ARGN})
   if(NOT OCEAN_STEP)
     message(FATAL_ERROR "step_test(${kind} ${case}) outside a chapter: call add_step first")
@@ -29,6 +32,9 @@ endfunction()
 # gets): the step run with ARGS must exit non-zero, not crash, and print one "error:" line matching
 # the regular expression EXPECT (tests/cli/bad_input.sh).
 function(step_bad_input case expect)
+  if(EMSCRIPTEN)
+    return()  # the browser build has its own tests (tests/web)
+  endif()
   step_test(bad_input ${case}
     COMMAND bash "${OCEAN_TESTS_DIR}/cli/bad_input.sh" ${case} $<TARGET_FILE:${OCEAN_STEP}>
             "${CMAKE_CURRENT_SOURCE_DIR}" "${CMAKE_BINARY_DIR}/test-output/bad_input/${OCEAN_STEP}"
@@ -39,12 +45,18 @@ endfunction()
 # given as --shader-dir: the step run with ARGS must name SHADER's program and file:line in its one
 # error line. For shaders the chapter's own classes load (not through the App's programs).
 function(step_broken_shader case shader)
+  if(EMSCRIPTEN)
+    return()  # the browser build has its own tests (tests/web)
+  endif()
   step_bad_input(${case} ${shader} ${ARGN})
 endfunction()
 
 # step_smoke(CASE GOLDEN ARGS...): a headless run with ARGS compared with the chapter's GOLDEN
 # (tests/smoke/smoke.sh), as add_step's own smoke test: STEP.smoke.CASE.
 function(step_smoke case golden)
+  if(EMSCRIPTEN)
+    return()  # the browser build has its own tests (tests/web)
+  endif()
   step_test(smoke ${case} LABELS gpu TIMEOUT 300
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/smoke.sh" $<TARGET_FILE:${OCEAN_STEP}> $<TARGET_FILE:image_compare>
             "${CMAKE_CURRENT_SOURCE_DIR}/${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke/${OCEAN_STEP}" ${ARGN})
@@ -53,6 +65,9 @@ endfunction()
 # step_split(LEFT RIGHT [ARGS...]): --split against two plain renders of its variants, the
 # parameter assignments LEFT and RIGHT (tests/smoke/split.sh, tests/split_check): STEP.split.
 function(step_split left right)
+  if(EMSCRIPTEN)
+    return()  # the browser build has its own tests (tests/web)
+  endif()
   step_test(split "" LABELS gpu TIMEOUT 300
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/split.sh" $<TARGET_FILE:${OCEAN_STEP}> $<TARGET_FILE:split_check>
             "${CMAKE_BINARY_DIR}/test-output/split" "${left}" "${right}" ${ARGN})
@@ -62,6 +77,9 @@ endfunction()
 # apart (t = 3 s and 3.1 s); tests/physics_check, which knows no spectrum, measures where the
 # surface moved and holds it to DEGREES within TOLERANCE: STEP.physics.waves_travel_with_the_wind.CASE.
 function(step_waves_travel case degrees tolerance)
+  if(EMSCRIPTEN)
+    return()  # the browser build has its own tests (tests/web)
+  endif()
   string(REPLACE ";" " " flags "${ARGN}")
   set(run "'$<TARGET_FILE:${OCEAN_STEP}>' --headless --size 64x64 ${flags}")
   set(out "${CMAKE_BINARY_DIR}/test-output/physics/${OCEAN_STEP}.${case}")

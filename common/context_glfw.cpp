@@ -5,12 +5,17 @@
 #include "common/gl_profile.hpp"
 
 #include <GLFW/glfw3.h>
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
 
 #include <cstdlib>
 
 namespace ocean {
 
+#if !defined(__EMSCRIPTEN__)
 std::unique_ptr<Context> make_egl_context(const ContextOptions& options);
+#endif
 
 namespace {
 
@@ -32,7 +37,9 @@ public:
         window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
         if (window_ == nullptr) {
             const char* reason = nullptr;
+#if !defined(__EMSCRIPTEN__)  // emscripten's GLFW has no glfwGetError
             glfwGetError(&reason);
+#endif
             glfwTerminate();
             throw Error(std::string("cannot open a window with OpenGL ") + profile_name(kBuildProfile) +
                         (reason ? std::string(": ") + reason : std::string()));
@@ -53,7 +60,12 @@ public:
     bool should_close() const override { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
     void request_close() override { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
     void poll_events() override { glfwPollEvents(); }
-    void swap_buffers() override { glfwSwapBuffers(window_); }
+    void swap_buffers() override {
+        glfwSwapBuffers(window_);
+#if defined(__EMSCRIPTEN__)
+        emscripten_sleep(0);  // the browser shows the frame and runs its events, then the loop goes on
+#endif
+    }
     glm::ivec2 framebuffer_size() const override {
         glm::ivec2 size;
         glfwGetFramebufferSize(window_, &size.x, &size.y);
@@ -92,7 +104,11 @@ std::string describe_current_gl(const std::string& platform) {
 }
 
 std::unique_ptr<Context> Context::create(const ContextOptions& options) {
+#if defined(__EMSCRIPTEN__)
+    if (options.headless) throw Error("a page has no headless mode: it draws into its canvas");
+#else
     if (options.headless) return make_egl_context(options);
+#endif
     return std::make_unique<GlfwContext>(options);
 }
 

@@ -2,7 +2,12 @@
 // object when it goes out of scope, so no step writes glDelete* by hand.
 #pragma once
 
-#if defined(OCEAN_GL_ES)
+#if defined(__EMSCRIPTEN__)
+#include <GLES3/gl3.h>  // the browser build: WebGL 2's functions, no loader needed
+// glad's type for a function that finds GL functions, which the contexts pass to load_gl.
+typedef void (*GLADapiproc)(void);
+typedef GLADapiproc (*GLADloadfunc)(const char* name);
+#elif defined(OCEAN_GL_ES)
 #include <glad/gles2.h>  // OpenGL ES 3.0's loader (the es build): the same gl* names, ES's subset
 #else
 #include <glad/gl.h>
@@ -82,7 +87,10 @@ using Program = GlHandle<detail::DeleteProgram>;
 
 // Loads the build's GL functions through `get_proc` (GLFW's or EGL's): 0 where it failed.
 inline int load_gl(GLADloadfunc get_proc) {
-#if defined(OCEAN_GL_ES)
+#if defined(__EMSCRIPTEN__)
+    (void)get_proc;  // linked, not loaded
+    return 1;
+#elif defined(OCEAN_GL_ES)
     return gladLoadGLES2(get_proc);
 #else
     return gladLoadGL(get_proc);

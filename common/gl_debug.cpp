@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#if defined(OCEAN_GL_ES)
+#if defined(OCEAN_GL_ES) && !defined(__EMSCRIPTEN__)
 // ES has KHR_debug as an extension only, whose names carry its suffix: the same values.
 #define GL_DEBUG_OUTPUT GL_DEBUG_OUTPUT_KHR
 #define GL_DEBUG_OUTPUT_SYNCHRONOUS GL_DEBUG_OUTPUT_SYNCHRONOUS_KHR
@@ -29,6 +29,11 @@ namespace {
 GlDebugStats g_stats;  // the GL callback has no user object we own; one context per process
 bool g_verbose = false;
 
+void record_error(const std::string& message) {
+    if (g_stats.errors++ == 0) g_stats.first_error = message;
+}
+
+#if !defined(__EMSCRIPTEN__)  // WebGL has no debug output
 const char* type_name(GLenum type) {
     switch (type) {
         case GL_DEBUG_TYPE_ERROR: return "error";
@@ -38,10 +43,6 @@ const char* type_name(GLenum type) {
         case GL_DEBUG_TYPE_PERFORMANCE: return "performance";
         default: return "info";
     }
-}
-
-void record_error(const std::string& message) {
-    if (g_stats.errors++ == 0) g_stats.first_error = message;
 }
 
 void GLAPIENTRY on_gl_message(GLenum source, GLenum type, GLuint /*id*/, GLenum severity,
@@ -59,6 +60,7 @@ void GLAPIENTRY on_gl_message(GLenum source, GLenum type, GLuint /*id*/, GLenum 
     if (is_error) record_error(message);
     if (is_error || is_warning || g_verbose) std::fprintf(stderr, "GL %s: %s\n", type_name(type), message);
 }
+#endif
 
 }  // namespace
 
@@ -68,11 +70,15 @@ void enable_gl_debug_output() {
     g_stats = GlDebugStats();  // counts belong to this context
     // KHR_debug: core from GL 4.3, an extension before it and in ES (Mesa has it; macOS's 4.1 has
     // not, and there glGetError after each frame is what is left: check_gl_errors).
+#if defined(__EMSCRIPTEN__)
+    return;  // WebGL has no debug output: the browser's console shows its warnings
+#else
     if (kBuildProfile != GlProfile::Core45 && !GLAD_GL_KHR_debug) return;
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(on_gl_message, nullptr);
     glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
+#endif
 }
 
 const GlDebugStats& gl_debug_stats() { return g_stats; }

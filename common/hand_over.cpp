@@ -5,7 +5,11 @@
 #include "common/text.hpp"
 
 #include <unistd.h>
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
 
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -17,6 +21,9 @@ namespace ocean {
 namespace fs = std::filesystem;
 
 std::string step_executable(const std::string& step) {
+#if defined(__EMSCRIPTEN__)
+    return step;  // a page: its name is the chapter's, and run_next_step opens STEP.html
+#endif
     std::error_code ec;
     const fs::path self = fs::read_symlink("/proc/self/exe", ec);
     if (ec) return "";
@@ -37,6 +44,26 @@ std::vector<std::string> hand_over_command(const std::string& executable, double
     return command;
 }
 
+#if defined(__EMSCRIPTEN__)
+namespace {
+// `text` with every byte but letters, digits and - _ . ~ written %XX, as an address's query needs.
+std::string url_encoded(const std::string& text) {
+    static const char* hex = "0123456789ABCDEF";
+    std::string out;
+    for (unsigned char c : text) {
+        if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
+            out += char(c);
+        } else {
+            out += '%';
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        }
+    }
+    return out;
+}
+}  // namespace
+#endif
+
 int run_next_step(int status, const std::vector<std::string>& command) {
     if (command.empty()) return status;
     std::vector<char*> argv;
@@ -48,6 +75,14 @@ int run_next_step(int status, const std::vector<std::string>& command) {
     std::cerr.flush();
     std::clog.flush();
     std::fflush(nullptr);
+#if defined(__EMSCRIPTEN__)
+    // A page hands over by opening the next chapter's page; its address carries the arguments,
+    // each as an `arg`, which the page passes to main in order (web/page.js).
+    std::string address = command[0] + ".html";
+    for (std::size_t i = 1; i < command.size(); ++i) address += (i == 1 ? "?arg=" : "&arg=") + url_encoded(command[i]);
+    EM_ASM({ window.location.href = UTF8ToString($0); }, address.c_str());
+    return status;
+#endif
     execv(argv[0], argv.data());
     std::cerr << "error: cannot start " << command[0] << ": " << std::strerror(errno) << std::endl;
     return kExitRuntimeError;
