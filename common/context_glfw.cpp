@@ -81,6 +81,9 @@ private:
 }  // namespace
 
 bool display_available() {
+#if defined(__EMSCRIPTEN__)
+    return true;  // the page's canvas
+#endif
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0');
