@@ -58,4 +58,5 @@ target_link_libraries(ocean_imgui PUBLIC glfw)
 # C++ exceptions on (emscripten leaves them off by default): the framework reports errors by them.
 add_compile_options(-fexceptions)
 add_link_options(-fexceptions -sASYNCIFY -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1
+                 -sEXPORTED_RUNTIME_METHODS=FS  # tests/web/page.js reads a screenshot from the page's files
                  "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/common/shaders@${PROJECT_SOURCE_DIR}/common/shaders")

@@ -117,8 +117,9 @@ int App::run_loop(const Options& options) {
     const int pass_timed_frames = options.bench && frame_limit > 0 ? std::max(1, (frame_limit - 1) / 4) : 0;
     timers_.set_enabled(options.bench && pass_timed_frames == 0);
     framebuffer_size_ = context_->framebuffer_size();
-    panel_visible_ = !headless || options.show_ui;
-    init_imgui(panel_visible_);
+    const bool draws_panel = !headless || options.show_ui;
+    init_imgui(draws_panel);
+    panel_visible_ = draws_panel && !options.hide_ui;
     init();
 
     FrameClock clock(options);

@@ -72,6 +72,7 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
         static const std::pair<const char*, bool Options::*> switches[] = {
             {"--help", &Options::help}, {"-h", &Options::help}, {"--headless", &Options::headless},
             {"--list-params", &Options::list_params}, {"--bench", &Options::bench}, {"--ui", &Options::show_ui},
+            {"--no-ui", &Options::hide_ui},
             {"--simulate-minimise", &Options::simulate_minimise}, {"--split", &Options::split}};
         const auto a_switch = std::find_if(std::begin(switches), std::end(switches),
                                            [&](const auto& s) { return name == s.first; });
@@ -128,6 +129,7 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             return result;
         }
     }
+    if (o.show_ui && o.hide_ui) result.error = "--ui and --no-ui ask for opposite things: give one";
     return result;
 }
 
@@ -154,6 +156,7 @@ usage: )" + step + R"( [flags]
   --list-params         list the parameters with their defaults and ranges, and exit
   --bench               print per-pass GPU times and frames per second after the run
   --ui                  draw the ImGui panel in headless runs too
+  --no-ui               start a window (or a page) with its panel hidden (F1 shows it)
   --resource-log N      every N frames print resident memory and live GL objects (soak tests)
   --simulate-minimise   frames 2 and 3 run as if the window were minimised (size 0), then restored
   --shader-dir DIR      read this step's shaders from DIR instead of its source folder

@@ -27,6 +27,7 @@ struct Options {
     bool list_params = false;
     bool bench = false;             // per-pass GPU times and frames per second after the run
     bool show_ui = false;           // --ui: draw the panel in headless runs (and screenshots)
+    bool hide_ui = false;           // --no-ui: a window (or page) starts with its panel hidden
     std::string shader_dir;         // --shader-dir DIR: read this step's shaders from DIR
     std::string export_dir;         // --export DIR: a step that simulates maps writes them there
     std::string record_dir;         // --record DIR: every frame to DIR/frame_NNNN.png (animations)

@@ -71,18 +71,20 @@ void GridMesh::build(glm::vec2 size, int x_quads, int z_quads) {
     const std::vector<unsigned>& indices = triangles.indices;
     vertices_ = make_buffer();
     buffer_data(vertices_, GLsizeiptr(positions.size() * sizeof(glm::vec2)), positions.data(), GL_STATIC_DRAW);
-    indices_ = make_buffer();
-    buffer_data(indices_, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
+    // An index buffer is attached to its vertex array before it is filled: WebGL gives a buffer its
+    // kind (indices or other data) at its first binding, and refuses to change it afterwards.
     vao_ = make_vertex_array();
     vertex_attribute(vao_, 0, vertices_, 2, sizeof(glm::vec2));  // attribute 0: the rest position (x, z)
+    indices_ = make_buffer();
     element_buffer(vao_, indices_);
+    buffer_data(indices_, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
 #if defined(OCEAN_GL_ES)
     const std::vector<unsigned> edges = triangle_edges(indices);
-    edges_ = make_buffer();
-    buffer_data(edges_, GLsizeiptr(edges.size() * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
     edges_vao_ = make_vertex_array();
     vertex_attribute(edges_vao_, 0, vertices_, 2, sizeof(glm::vec2));
+    edges_ = make_buffer();
     element_buffer(edges_vao_, edges_);
+    buffer_data(edges_, GLsizeiptr(edges.size() * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
 #endif
     vertex_count_ = int(positions.size());
     index_count_ = GLsizei(indices.size());

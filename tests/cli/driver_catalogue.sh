@@ -226,6 +226,15 @@ fail diff_one                        "diff: give two steps"          diff step04
 fail diff_three                      "diff: give two steps"          diff step04_fbm step05_fft step06_foam_sky
 ok   diff_valid                      diff step04_fbm step05_fft
 ok   diff_itself                     diff step01_sine2d step01_sine2d
+# --- web ---
+fail web_unknown_flag                "web: unknown flag '--bogus'"   web --bogus
+fail web_port_missing                "web: --port needs a value"     web --port
+fail web_port_low                    "--port expects a whole number in [1024, 65535], got '80'" web --port 80
+fail web_port_over                   "--port expects a whole number" web --port 65536
+fail web_port_text                   "--port expects a whole number" web --port '8080; rm -rf /'
+dry  web                             web
+dry  web_port_edges                  web --port 1024 --no-serve
+dry  web_port_top                    web --port 65535
 # --- gallery, figures, animations ---
 fail gallery_extra                   "gallery: takes no arguments"   gallery --out x
 dry  gallery                         gallery

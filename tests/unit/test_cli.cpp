@@ -29,6 +29,13 @@ TEST(CommandLine, TheSmokeTestCommandLine) {
     EXPECT_EQ(r.options.sets, (std::vector<std::string>{"amplitude=2", "wave_count=4"}));
 }
 
+TEST(CommandLine, NoUiHidesThePanelAndContradictsUi) {
+    EXPECT_TRUE(parse({"--no-ui"}).options.hide_ui);
+    const auto both = parse({"--ui", "--no-ui"});
+    ASSERT_TRUE(both.error);
+    EXPECT_NE(both.error->find("--ui and --no-ui"), std::string::npos) << *both.error;
+}
+
 TEST(CommandLine, OtherFlags) {
     const auto r = parse({"--dt", "0.02", "--bench", "--list-params", "--preset", "p.txt",
                           "--save-preset", "q.txt", "--ui", "--shader-dir", "/tmp/s", "--export", "out", "--help"});

@@ -1,0 +1,69 @@
+# ./ocean web: the chapters in a browser. Sourced by ./ocean (its helpers: refuse, say,
+# stop_if_dry_run, install_missing_packages, hand_over, check_whole).
+#
+#   ./ocean web [--port N] [--no-serve]
+#
+# Installs what the browser build needs (Debian's emscripten and chromium; playwright-core from npm
+# for the browser tests), fetches Dear ImGui 1.86's sources from Debian's archive (checked by
+# their hash: the native build links the same version), builds every chapter that runs without
+# compute shaders to WebAssembly in build/web/site (cmake/Web.cmake), writes the index page
+# (web/make_index.py) and serves it on http://127.0.0.1:PORT/ (web/serve.py; default 8080) until
+# Ctrl-C. --no-serve stops after the build (CI: the tests in tests/web drive the pages then).
+
+WEB_PACKAGES=(emscripten chromium python3 curl)
+WEB_DIR=build/web
+IMGUI_TARBALL_URL=http://deb.debian.org/debian/pool/main/i/imgui/imgui_1.86+ds.orig.tar.xz
+IMGUI_TARBALL_SHA256=0dace0e8e57d298eb6e93af12dc19420cb96330832f6495c733b90aeeef11f64
+PLAYWRIGHT_CORE=playwright-core@1.65.1  # drives /usr/bin/chromium; the version these tests were written on
+
+web() {
+  local port=8080 serve=1
+  while [ $# -gt 0 ]; do
+    case "$1" in
+      --port) need_value "a port, 1024 to 65535" "$@"; check_whole --port "$2" 1024 65535; port=$((10#$2)); shift 2 ;;
+      --no-serve) serve=0; shift ;;
+      *) refuse "unknown flag $(shown "$1") (--port N, --no-serve)" ;;
+    esac
+  done
+  stop_if_dry_run web build "$WEB_DIR/site" "$([ "$serve" = 1 ] && echo "serve 127.0.0.1:$port" || echo no-serve)"
+
+  PACKAGES+=("${WEB_PACKAGES[@]}")
+  install_missing_packages
+  web_fetch_imgui
+  web_install_playwright
+  # Debian's emscripten finds its JavaScript tools (acorn, terser) through NODE_PATH.
+  export NODE_PATH=/usr/share/nodejs
+  if [ ! -f "$WEB_DIR/build.ninja" ]; then
+    emcmake cmake -S . -B "$WEB_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release > "$WEB_DIR/configure.log" 2>&1 ||
+      { cat "$WEB_DIR/configure.log" >&2; refuse "the web build's configuration failed (above)"; }
+  fi
+  cmake --build "$WEB_DIR" || refuse "the web build failed (above)"
+  python3 web/make_index.py . "$WEB_DIR/site" || refuse "cannot write the index page"
+  [ "$serve" = 1 ] || return 0
+  hand_over python3 web/serve.py . "$WEB_DIR/site" "$port"
+}
+
+# Dear ImGui's sources, once: Debian's tarball of 1.86, checked against its hash before use.
+web_fetch_imgui() {
+  local tarball="$WEB_DIR/web_deps/imgui_1.86+ds.orig.tar.xz"
+  mkdir -p "$WEB_DIR/web_deps" || refuse "cannot make $WEB_DIR/web_deps"
+  if [ ! -f "$tarball" ]; then
+    say "downloading Dear ImGui 1.86's sources: $IMGUI_TARBALL_URL"
+    curl -fsSL -o "$tarball.part" "$IMGUI_TARBALL_URL" || { rm -f "$tarball.part"; refuse "cannot download $IMGUI_TARBALL_URL"; }
+    mv "$tarball.part" "$tarball"
+  fi
+  echo "$IMGUI_TARBALL_SHA256  $tarball" | sha256sum --check --status ||
+    { rm -f "$tarball"; refuse "$tarball is not Debian's imgui 1.86+ds tarball (its sha256 differs); removed, run again"; }
+}
+
+# playwright-core for the browser tests (tests/web), in build/web/node_modules. Without npm (or
+# offline) the pages still build and serve; the tests then say they are skipped.
+web_install_playwright() {
+  [ -d "$WEB_DIR/node_modules/playwright-core" ] && return 0
+  if ! command -v npm > /dev/null; then
+    say "warning: no npm: the browser tests (tests/web) will be skipped (install Node.js's npm for them)"
+    return 0
+  fi
+  npm install --silent --no-audit --no-fund --prefix "$WEB_DIR" "$PLAYWRIGHT_CORE" > /dev/null ||
+    say "warning: npm could not install $PLAYWRIGHT_CORE: the browser tests (tests/web) will be skipped"
+}
