@@ -77,10 +77,13 @@ int run_next_step(int status, const std::vector<std::string>& command) {
     std::fflush(nullptr);
 #if defined(__EMSCRIPTEN__)
     // A page hands over by opening the next chapter's page; its address carries the arguments,
-    // each as an `arg`, which the page passes to main in order (web/page.js).
+    // each as an `arg`, which the page passes to main in order (web/chapter.html.in).
     std::string address = command[0] + ".html";
     for (std::size_t i = 1; i < command.size(); ++i) address += (i == 1 ? "?arg=" : "&arg=") + url_encoded(command[i]);
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wdollar-in-identifier-extension"  // EM_ASM names its arguments $0, $1 ...
     EM_ASM({ window.location.href = UTF8ToString($0); }, address.c_str());
+#pragma clang diagnostic pop
     return status;
 #endif
     execv(argv[0], argv.data());

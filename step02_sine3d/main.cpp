@@ -27,7 +27,7 @@ public:
         params().add_bool("facet_shading", &facet_shading_, "darken faces turned from a fixed direction")
             .in_group("view");
         use_camera(ocean::camera_view("overview"));
-        offer_split_view([this] {
+        offer_split_view([] {
             return SplitVariants{"solid", "wireframe", {"wireframe=false"}, {"wireframe=true"}};
         });
     }

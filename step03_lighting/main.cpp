@@ -45,7 +45,7 @@ public:
         light_.declare(p);
         p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         use_camera(ocean::camera_view("overview"));
-        offer_split_view([this] {
+        offer_split_view([] {
             return SplitVariants{"analytic normals", "finite differences", {"normals=analytic"},
                                  {"normals=finite_difference"}};
         });

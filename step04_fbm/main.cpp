@@ -36,7 +36,7 @@ public:
         grid_params_.declare(p);
         p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         use_camera(ocean::camera_view("overview"));
-        offer_split_view([this] {
+        offer_split_view([] {
             return SplitVariants{"sine", "exp(sin - 1)", {"shape=sine"}, {"shape=exp_sine"}};
         });
     }

@@ -28,6 +28,7 @@ web() {
   stop_if_dry_run web build "$WEB_DIR/site" "$([ "$serve" = 1 ] && echo "serve 127.0.0.1:$port" || echo no-serve)"
 
   PACKAGES+=("${WEB_PACKAGES[@]}")
+  command -v npm > /dev/null || PACKAGES+=(npm)  # Debian's Node.js comes without it (NodeSource's has it)
   install_missing_packages
   web_fetch_imgui
   web_install_playwright

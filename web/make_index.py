@@ -53,6 +53,8 @@ def main():
 <style>
   body {{ margin: 2em auto; max-width: 52em; background: #111418; color: #c8d0d8; font: 15px/1.5 sans-serif; }}
   a {{ color: #7fb8ff; }}
+  table {{ width: 100%; border-collapse: collapse; }}
+  td:first-child {{ width: 75%; }}
   td {{ padding: 0.5em 1em 0.5em 0; vertical-align: top; border-bottom: 1px solid #2a3038; }}
   .notes, .needs {{ opacity: 0.7; font-size: 0.9em; }}
 </style>
@@ -60,7 +62,7 @@ def main():
 <body>
 <h1>Sin waves into water</h1>
 <p>Real-time ocean rendering, one chapter at a time: each page is the chapter's program built to
-WebAssembly, drawing with WebGL 2. Drag to orbit, the wheel zooms, F1 hides the panel. The page's
+WebAssembly, drawing with WebGL 2. In the 3D chapters a drag orbits the camera and the wheel zooms; F1 hides the panel. The page's
 address sets parameters: <a href="step02_sine3d.html?amplitude=2.5">step02_sine3d.html?amplitude=2.5</a>
 (each chapter's README lists them).</p>
 <table>

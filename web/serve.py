@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """serve.py REPO SITE PORT: serves the browser build on http://127.0.0.1:PORT/ (./ocean web).
 
-SITE's pages at the root; the chapters' lessons (READMEs and the pictures they show) under
-/lessons/, read from REPO: Markdown as plain text, only files inside the repository's step and
-docs folders. Local only (127.0.0.1); Ctrl-C stops it."""
+SITE's pages at the root; under /lessons/, files of the repository's step and docs folders (the
+chapters' READMEs, as plain text, and the pictures they show); nothing else of REPO. Local only
+(127.0.0.1); Ctrl-C stops it."""
 import functools
 import http.server
 import pathlib
 import sys
+import urllib.parse
 
 TYPES = {".wasm": "application/wasm", ".md": "text/plain; charset=utf-8", ".js": "text/javascript"}
 
@@ -21,14 +22,23 @@ class Handler(http.server.SimpleHTTPRequestHandler):
         return TYPES.get(pathlib.Path(path).suffix, None) or super().guess_type(path)
 
     def translate_path(self, path):
-        clean = path.split("?", 1)[0].split("#", 1)[0]
+        clean = urllib.parse.unquote(path.split("?", 1)[0].split("#", 1)[0])
         if clean.startswith("/lessons/"):
-            wanted = (self.repo / clean[len("/lessons/"):]).resolve()
-            top = wanted.relative_to(self.repo).parts[0] if wanted.is_relative_to(self.repo) else ""
-            if top.startswith("step") or top == "docs":
-                return str(wanted)
-            return str(self.repo / "does-not-exist")  # 404: only the lessons and their pictures
+            return str(self.lesson_file(clean[len("/lessons/"):]))
         return super().translate_path(path)
+
+    def lesson_file(self, relative):
+        """The repository's file at `relative` if it is one inside a step or docs folder, else a
+        path that does not exist (a 404)."""
+        nowhere = self.repo / "build" / "no-such-file"
+        try:
+            wanted = (self.repo / relative).resolve()
+        except (OSError, ValueError):  # a NUL byte, a loop of links
+            return nowhere
+        if not wanted.is_relative_to(self.repo) or not wanted.is_file():
+            return nowhere
+        top = wanted.relative_to(self.repo).parts[0]
+        return wanted if top.startswith("step") or top == "docs" else nowhere
 
     def log_message(self, format, *args):  # one quiet line per failed request only
         if len(args) > 1 and str(args[1]).startswith(("4", "5")):

@@ -25,7 +25,12 @@ const shotInPage = shotIndex >= 0 ? programArgs[shotIndex + 1] : null;
 // The pages, served from SITE_DIR as a web server would (a page loads its .wasm and .data by address).
 const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm' };
 const server = http.createServer((request, response) => {
-  const file = path.join(site, path.normalize(decodeURIComponent(request.url.split('?')[0])));
+  let file;
+  try {
+    file = path.join(site, path.normalize(decodeURIComponent(request.url.split('?')[0])));
+  } catch (e) {
+    response.writeHead(400); response.end(); return;
+  }
   fs.readFile(file, (error, data) => {
     if (error) { response.writeHead(404); response.end(); return; }
     response.writeHead(200, { 'Content-Type': types[path.extname(file)] || 'application/octet-stream' });

@@ -4,17 +4,22 @@
 # of 0.2 s from t = 0.5 s at 320x180, tests/smoke/smoke.sh) with the panel hidden, compared with the
 # same golden. The browser draws through SwiftShader, not llvmpipe: its far sparkles and the sea's
 # edge pixels land a little differently, so the tolerance is the native one widened (RMSE <= 4/255,
-# at most 1 % of pixels off by more than 24/255; measured: README "In a browser").
+# at most 1 % of pixels off by more than 24/255; measured: the README's tests table, STEP.web.smoke).
 # With --query=Q the address also carries Q (name=value&...): the picture must then DIFFER from the
 # golden, the check that a parameter set from the address reaches the program.
-# Skipped (77) where there is no web build or no browser to drive (./ocean web makes both).
+# Skipped (77) where there is no web build or no browser to drive (./ocean web makes both); in CI
+# (CI=true), where .ci/run builds them first, their absence is a failure.
 set -u
 site=$1 step=$2 compare=$3 golden=$4 out=$5 query=${6:-}
 here=$(cd "$(dirname "$0")" && pwd)
-[ -f "$site/$step.js" ] || { echo "skipped: no web build of $step in $site (./ocean web builds it)"; exit 77; }
-modules=$(cd "$site/.." && pwd)/node_modules
-[ -d "$modules/playwright-core" ] && [ -x /usr/bin/chromium ] && command -v node > /dev/null ||
-  { echo "skipped: no playwright-core in $modules or no /usr/bin/chromium (./ocean web installs them)"; exit 77; }
+missing() {
+  if [ "${CI:-}" = true ]; then echo "FAIL: $1 (CI builds the pages first: ./ocean web --no-serve)"; exit 1; fi
+  echo "skipped: $1 (./ocean web builds the pages and installs what drives them)"; exit 77
+}
+[ -f "$site/$step.js" ] || missing "no web build of $step in $site"
+modules=$(cd "$site/.." 2> /dev/null && pwd)/node_modules
+[ -d "$modules/playwright-core" ] || missing "no playwright-core in $modules"
+[ -x /usr/bin/chromium ] && command -v node > /dev/null || missing "no /usr/bin/chromium or no node"
 name=$(basename "$golden" .png)${query:+.query}
 mkdir -p "$out"
 rm -f "$out/$name.png" "$out/$name.diff.png"
