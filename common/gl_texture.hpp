@@ -1,4 +1,4 @@
-// 2D textures that passes render into, in each profile (gl.hpp's pattern: GL 4.5 edits an object
+// Float textures that passes render into, in each profile (gl.hpp's pattern: GL 4.5 edits an object
 // by its name, GL 4.1 and ES 3.0 bind it to edit it and put back what was bound). The fragment
 // passes that stand in for compute shaders where there are none (step05's fragment FFT) keep
 // their data in these: one texel a value, read with texelFetch, written as a colour attachment.
@@ -6,18 +6,26 @@
 
 #include "common/gl.hpp"
 
+#include <algorithm>
+
 namespace ocean {
 
 namespace detail {
-// Binds a 2D texture to the active unit for one edit; puts back the one bound there before.
-class BindTexture2dForEdit {
+// Binds a texture to `target` (GL_TEXTURE_2D or GL_TEXTURE_2D_ARRAY) of the active unit for one
+// edit; puts back the one bound there before.
+class BindTextureForEdit {
 public:
-    explicit BindTexture2dForEdit(GLuint id) : before_(bound(GL_TEXTURE_BINDING_2D)) { glBindTexture(GL_TEXTURE_2D, id); }
-    ~BindTexture2dForEdit() { glBindTexture(GL_TEXTURE_2D, before_); }
-    BindTexture2dForEdit(const BindTexture2dForEdit&) = delete;
-    BindTexture2dForEdit& operator=(const BindTexture2dForEdit&) = delete;
+    BindTextureForEdit(GLenum target, GLuint id)
+        : target_(target),
+          before_(bound(target == GL_TEXTURE_2D_ARRAY ? GL_TEXTURE_BINDING_2D_ARRAY : GL_TEXTURE_BINDING_2D)) {
+        glBindTexture(target_, id);
+    }
+    ~BindTextureForEdit() { glBindTexture(target_, before_); }
+    BindTextureForEdit(const BindTextureForEdit&) = delete;
+    BindTextureForEdit& operator=(const BindTextureForEdit&) = delete;
 
 private:
+    GLenum target_;
     GLuint before_;
 };
 
@@ -34,7 +42,7 @@ inline void float_upload_format(GLenum format, GLenum& upload_format, GLenum& ty
 inline Texture make_float_texture_2d(GLenum format, GLsizei width, GLsizei height) {
     Texture texture = make_texture(GL_TEXTURE_2D);
 #if OCEAN_GL_BIND_TO_EDIT
-    detail::BindTexture2dForEdit edit(texture.id());
+    detail::BindTextureForEdit edit(GL_TEXTURE_2D, texture.id());
     GLenum upload_format = 0, type = 0;
     detail::float_upload_format(format, upload_format, type);
     glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), width, height, 0, upload_format, type, nullptr);
@@ -60,7 +68,7 @@ inline void upload_float_texture_2d(const Texture& texture, GLenum format, GLsiz
     GLenum upload_format = 0, type = 0;
     detail::float_upload_format(format, upload_format, type);
 #if OCEAN_GL_BIND_TO_EDIT
-    detail::BindTexture2dForEdit edit(texture.id());
+    detail::BindTextureForEdit edit(GL_TEXTURE_2D, texture.id());
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, upload_format, GL_FLOAT, data);
 #else
     glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, upload_format, GL_FLOAT, data);
@@ -77,6 +85,85 @@ inline bool attach_texture_2d(const Framebuffer& framebuffer, GLenum attachment,
 #else
     glNamedFramebufferTexture(framebuffer.id(), attachment, texture.id(), 0);
     return glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+#endif
+}
+
+// What a pass that draws into textures changes, kept while it lives and put back after: the draw
+// framebuffer, the program in use, the vertex array (it binds `vertex_array`: an empty one, for
+// full-screen triangles whose corners come from gl_VertexID), the viewport and blending (off).
+class OffscreenPassState {
+public:
+    explicit OffscreenPassState(GLuint vertex_array)
+        : framebuffer_(GL_DRAW_FRAMEBUFFER, 0), program_(GL_CURRENT_PROGRAM, 0),
+          vertex_array_(GL_VERTEX_ARRAY_BINDING, vertex_array), blending_(glIsEnabled(GL_BLEND)) {
+        glGetIntegerv(GL_VIEWPORT, viewport_);
+        glDisable(GL_BLEND);
+    }
+    ~OffscreenPassState() {
+        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+        if (blending_) glEnable(GL_BLEND);
+    }
+    OffscreenPassState(const OffscreenPassState&) = delete;
+    OffscreenPassState& operator=(const OffscreenPassState&) = delete;
+
+private:
+    detail::BindForEdit framebuffer_, program_, vertex_array_;
+    GLboolean blending_;
+    GLint viewport_[4] = {0, 0, 0, 0};
+};
+
+// A 2D array texture of `layers` maps of `size` x `size` texels of a float `format` with `levels`
+// mip levels (1 for none): the simulation's maps, one layer a cascade, as the renderer samples
+// them (linear between texels and levels, repeating: a map is one tile of an endless sea).
+// Sampling 32-bit floats with filtering needs OES_texture_float_linear in ES.
+inline Texture make_map_texture_2d_array(GLenum format, GLsizei size, GLsizei layers, GLsizei levels) {
+    Texture texture = make_texture(GL_TEXTURE_2D_ARRAY);
+    const GLenum min_filter = levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR;
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindTextureForEdit edit(GL_TEXTURE_2D_ARRAY, texture.id());
+    GLenum upload_format = 0, type = 0;
+    detail::float_upload_format(format, upload_format, type);
+    for (GLint level = 0; level < levels; ++level) {  // a level at a time: GL 4.1 has no glTexStorage
+        const GLsizei side = std::max<GLsizei>(1, size >> level);
+        glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GLint(format), side, side, layers, 0, upload_format, type, nullptr);
+    }
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GLint(min_filter));
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
+#else
+    glTextureStorage3D(texture.id(), levels, format, size, size, layers);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GLint(min_filter));
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+#endif
+    return texture;
+}
+
+// Attaches level `level` of layer `layer` of a 2D array texture to a framebuffer at `attachment`;
+// returns whether the framebuffer is complete afterwards.
+inline bool attach_texture_layer(const Framebuffer& framebuffer, GLenum attachment, const Texture& texture,
+                                 GLint level, GLint layer) {
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindForEdit edit(GL_DRAW_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTextureLayer(GL_DRAW_FRAMEBUFFER, attachment, texture.id(), level, layer);
+    return glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+#else
+    glNamedFramebufferTextureLayer(framebuffer.id(), attachment, texture.id(), level, layer);
+    return glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+#endif
+}
+
+// Levels 1 and below of a 2D array texture from its level 0, each texel the mean of the 2 x 2 it
+// covers (a power-of-two texture): what step05's box_mip.comp makes where there are compute shaders.
+inline void generate_mipmaps_2d_array(const Texture& texture) {
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindTextureForEdit edit(GL_TEXTURE_2D_ARRAY, texture.id());
+    glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+#else
+    glGenerateTextureMipmap(texture.id());
 #endif
 }
 

@@ -19,14 +19,7 @@ FragmentFft::FragmentFft(ocean::ProgramFactory programs, int n) : programs_(std:
 }
 
 const ocean::Texture& FragmentFft::inverse(const ocean::Texture& source) {
-    GLint viewport[4];
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    const GLboolean blending = glIsEnabled(GL_BLEND);
-    // Each of these holds what was bound before, to put it back at the end.
-    const ocean::detail::BindForEdit keep_framebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    const ocean::detail::BindForEdit keep_program(GL_CURRENT_PROGRAM, 0);
-    const ocean::detail::BindForEdit keep_vertex_array(GL_VERTEX_ARRAY_BINDING, no_vertices_.id());
-    glDisable(GL_BLEND);
+    const ocean::OffscreenPassState keep(no_vertices_.id());  // what was bound, put back at the end
     glViewport(0, 0, n_, n_);
     glActiveTexture(GL_TEXTURE0);
     // Each stage reads the texture the last one wrote: the source, then the pair in turn.
@@ -39,8 +32,6 @@ const ocean::Texture& FragmentFft::inverse(const ocean::Texture& source) {
             write = 1 - write;
         }
     glBindTexture(GL_TEXTURE_2D, 0);
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    if (blending) glEnable(GL_BLEND);
     return pair_[1 - write];
 }
 

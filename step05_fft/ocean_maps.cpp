@@ -19,11 +19,6 @@ std::vector<std::string> map_view_names() {
             field_name(SlopeZ), "jacobian"};
 }
 
-double reduced_phase(double omega, double time) {
-    const double phase = std::fmod(omega * time, 2 * kPi);
-    return phase < 0 ? phase + 2 * kPi : phase;
-}
-
 Complex evolve_mode(Complex h0_k, Complex h0_minus_k, double phase) {
     const Complex rotation(std::cos(phase), -std::sin(phase));  // e^{-i omega t}: along +k
     return h0_k * rotation + std::conj(h0_minus_k) * std::conj(rotation);

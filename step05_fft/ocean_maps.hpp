@@ -22,6 +22,7 @@
 #include "step05_fft/spectrum.hpp"
 
 #include <array>
+#include <cmath>
 #include <complex>
 #include <string>
 #include <vector>
@@ -44,8 +45,12 @@ const char* field_name(Field f);  // "height", "displacement_x", ...
 std::vector<std::string> map_view_names();
 
 // The phase omega t reduced to [0, 2 pi) in double precision, as the GPU receives it (the
-// rotation applied to h0(k) is then e^{-i phase}).
-double reduced_phase(double omega, double time);
+// rotation applied to h0(k) is then e^{-i phase}). Inline: the fragment simulation needs it and
+// none of this file's FFTW.
+inline double reduced_phase(double omega, double time) {
+    const double phase = std::fmod(omega * time, 2 * ocean::kPi);
+    return phase < 0 ? phase + 2 * ocean::kPi : phase;
+}
 
 // One mode (mode.glsl's evolve_mode): h0(k) e^{-i phase} + conj(h0(-k)) e^{+i phase}.
 Complex evolve_mode(Complex h0_k, Complex h0_minus_k, double phase);

@@ -3,6 +3,7 @@
 // Relative error = max |gpu - reference| / max |reference|, per field; limit 1e-4.
 #include "common/error.hpp"
 #include "step05_fft/fragment_fft.hpp"
+#include "step05_fft/fragment_simulation.hpp"
 #include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
@@ -41,6 +42,25 @@ double relative_error(const std::vector<float>& gpu, std::size_t offset, std::si
         largest = std::max(largest, std::abs(reference[i]));
     }
     return largest > 0 ? worst / largest : worst;
+}
+
+// The largest difference between the two assembled maps (RGBA, as read back) and the reference's
+// fields with the choppiness where it belongs, over the largest expected value.
+double choppy_maps_error(const std::vector<float>& displacement, const std::vector<float>& slopes,
+                         const OceanMaps& reference, float choppiness) {
+    double scale = 0, worst = 0;
+    for (std::size_t i = 0; i < reference[Height].size(); ++i) {
+        const double expected[8] = {choppiness * reference[DisplacementX][i], reference[Height][i],
+                                    choppiness * reference[DisplacementZ][i], choppiness * reference[DDxDz][i],
+                                    reference[SlopeX][i], reference[SlopeZ][i],
+                                    choppiness * reference[DDxDx][i], choppiness * reference[DDzDz][i]};
+        for (int c = 0; c < 8; ++c) {
+            const float got = c < 4 ? displacement[i * 4 + std::size_t(c)] : slopes[i * 4 + std::size_t(c - 4)];
+            worst = std::max(worst, std::abs(got - expected[c]));
+            scale = std::max(scale, std::abs(expected[c]));
+        }
+    }
+    return worst / scale;
 }
 
 // The fragment-pass FFT (the portable profiles' FFT) on random input: both fields of the texture
@@ -261,19 +281,8 @@ TEST_F(FftTest, AssembledTexturesHoldTheChoppyMaps) {
         const auto ocean = ocean_of(s);
         ocean->simulate(4.0, backend, choppiness);
         const std::vector<float> displacement = ocean->read_map(false, 0), slopes = ocean->read_map(true, 0);
-        double scale = 0, worst = 0;
-        for (std::size_t i = 0; i < 64 * 64; ++i) {
-            const double expected[8] = {choppiness * reference[DisplacementX][i], reference[Height][i],
-                                        choppiness * reference[DisplacementZ][i], choppiness * reference[DDxDz][i],
-                                        reference[SlopeX][i], reference[SlopeZ][i],
-                                        choppiness * reference[DDxDx][i], choppiness * reference[DDzDz][i]};
-            for (int c = 0; c < 8; ++c) {
-                const float got = c < 4 ? displacement[i * 4 + std::size_t(c)] : slopes[i * 4 + std::size_t(c - 4)];
-                worst = std::max(worst, std::abs(got - expected[c]));
-                scale = std::max(scale, std::abs(expected[c]));
-            }
-        }
-        EXPECT_LT(worst / scale, 1e-4) << (backend == Backend::Fftw ? "FFTW" : "GPU FFT");
+        EXPECT_LT(choppy_maps_error(displacement, slopes, reference, choppiness), 1e-4)
+            << (backend == Backend::Fftw ? "FFTW" : "GPU FFT");
     }
 }
 
@@ -294,6 +303,52 @@ TEST_F(FftTest, CpuMipmapsAreGlsMipmaps) {
             for (std::size_t i = 0; i < expected.size(); ++i)
                 worst = std::max(worst, double(std::abs(got[i] - expected[i])));
             EXPECT_LT(worst / scale, 1e-5) << (slopes ? "slopes" : "displacement") << " level " << level;
+        }
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// The portable profiles' simulation (fragment passes: evolve.frag, the fragment FFT, assemble.frag,
+// glGenerateMipmap) holds the same maps as the CPU reference: every channel of both maps, the
+// choppiness where it belongs, to the compute forms' 1e-4 of the largest value.
+TEST_F(FftTest, FragmentSimulationHoldsTheCpuReferencesMaps) {
+    for (int n : {16, 64}) {
+        const InitialSpectrum s = sea(n);
+        const double time = 4.0;
+        const float choppiness = 1.3f;
+        const OceanMaps reference = simulate_cpu(s, time);
+        FragmentSimulation fragment(factory());
+        fragment.set_spectra({&s});
+        fragment.simulate(time, choppiness);
+        const std::vector<float> displacement = fragment.read_map(false, 0), slopes = fragment.read_map(true, 0);
+        ASSERT_EQ(displacement.size(), std::size_t(n * n * 4));
+        EXPECT_LT(choppy_maps_error(displacement, slopes, reference, choppiness), 1e-4) << "N = " << n;
+    }
+}
+
+// Its mipmaps (glGenerateMipmap) are the compute form's box mipmaps, level by level, and a frame
+// ten days on is still the reference's (the phase reduced in double on the CPU).
+TEST_F(FftTest, FragmentSimulationsMipmapsAndLongClockMatchTheComputeForm) {
+    const InitialSpectrum s = sea(64);
+    const double ten_days = 864000.25;
+    FragmentSimulation fragment(factory());
+    fragment.set_spectra({&s});
+    fragment.simulate(ten_days, 1.0f);
+    const auto compute = ocean_of(s);
+    compute->simulate(ten_days, Backend::GpuFft, 1.0f);
+    for (bool slopes : {false, true}) {
+        double scale = 0;
+        for (float v : compute->read_map(slopes, 0)) scale = std::max(scale, double(std::abs(v)));
+        for (int level = 0; (64 >> level) >= 1; ++level) {
+            const auto expected = compute->read_map(slopes, level), got = fragment.read_map(slopes, level);
+            ASSERT_EQ(got.size(), expected.size());
+            double worst = 0;
+            for (std::size_t i = 0; i < expected.size(); ++i)
+                worst = std::max(worst, double(std::abs(got[i] - expected[i])));
+            EXPECT_LT(worst / scale, 1e-4) << (slopes ? "slopes" : "displacement") << " level " << level;
         }
     }
 }

@@ -28,7 +28,7 @@ gtest_discover_tests(unit_tests TEST_PREFIX "unit." PROPERTIES LABELS unit DISCO
 # (common/gl_texture.hpp) and step05's fragment FFT, whose source it compiles (it needs nothing
 # else of step05, which the portable builds leave out).
 add_executable(portable_gpu_tests "${_tests}/gpu/gpu_main.cpp" "${_tests}/gpu/portable_gpu.cpp"
-               "${PROJECT_SOURCE_DIR}/step05_fft/fragment_fft.cpp")
+               "${PROJECT_SOURCE_DIR}/step05_fft/fragment_fft.cpp" "${PROJECT_SOURCE_DIR}/step05_fft/fragment_simulation.cpp")
 target_link_libraries(portable_gpu_tests PRIVATE ocean_common GTest::gtest)
 target_include_directories(portable_gpu_tests PRIVATE "${PROJECT_SOURCE_DIR}")
 target_compile_definitions(portable_gpu_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

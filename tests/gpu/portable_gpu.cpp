@@ -1,13 +1,16 @@
 // What the profiles without compute shaders (GL 4.1, ES 3.0) compute in fragment passes, tested in
 // every build (tests/cmake/framework_tests.cmake): float textures rendered into and read back
-// (common/gl_texture.hpp, in the build's form), and step05's fragment FFT against a direct DFT in
-// double, which needs nothing but the definition.
+// (common/gl_texture.hpp, in the build's form), step05's fragment FFT against a direct DFT in
+// double, which needs nothing but the definition, and step05's whole fragment simulation against
+// the maps written from their definitions.
 #include "common/gl_texture.hpp"
 #include "step05_fft/fragment_fft.hpp"
+#include "step05_fft/fragment_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
 #include <cmath>
+#include <array>
 #include <complex>
 #include <cstdio>
 #include <random>
@@ -84,6 +87,85 @@ TEST_F(PortableGpu, TheFragmentFftMatchesTheDirectDft) {
             if (field == 0) std::printf("fragment FFT, N = %d: vs the direct DFT relative error %.2e\n", n, worst / largest);
         }
     }
+}
+
+// A sea of random modes at N = 16 (h0 standard normal, none on the Nyquist row and column, where
+// k and -k share a texel; omega = sqrt(g |k|)), simulated by the fragment passes at t = 3.7 s, and
+// its eight maps from their definitions in double: h~(k, t) = h0(k) e^{-i omega t} +
+// conj(h0(-k)) e^{+i omega t}, then the inverse DFT of h~ (height), i u h~ (Dx, Dz, u = k/|k|),
+// i k h~ (slopes) and i k times i u h~ (the derivatives of D), each the real field it must be.
+TEST_F(PortableGpu, TheFragmentSimulationHoldsTheMapsOfItsDefinition) {
+    const int n = 16;
+    const double pi = 3.14159265358979323846, g = 9.81, time = 3.7;
+    const float choppiness = 1.2f;
+    step05::InitialSpectrum sea;
+    sea.n = n;
+    sea.patch_size = 40;
+    std::mt19937 random{7};
+    std::normal_distribution<double> normal;
+    auto signed_index = [n](int i) { return i < n / 2 ? i : i - n; };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const bool nyquist = i == n / 2 || j == n / 2;
+            const double kx = 2 * pi * signed_index(i) / sea.patch_size, kz = 2 * pi * signed_index(j) / sea.patch_size;
+            const double a = normal(random), b = normal(random);
+            sea.h0.push_back(nyquist ? Complex(0) : Complex(a, b));
+            sea.omega.push_back(std::sqrt(g * std::hypot(kx, kz)));
+        }
+    // The eight fields' spectra, in assemble.frag's channel order.
+    std::array<std::vector<Complex>, 8> spectra;
+    for (auto& f : spectra) f.assign(std::size_t(n) * n, 0.0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t here = std::size_t(j * n + i), minus = std::size_t(((n - j) % n) * n + (n - i) % n);
+            const double kx = 2 * pi * signed_index(i) / sea.patch_size, kz = 2 * pi * signed_index(j) / sea.patch_size;
+            const double k = std::hypot(kx, kz);
+            if (k == 0) continue;  // the mean level: nothing
+            const Complex turn = std::polar(1.0, -sea.omega[here] * time), I(0, 1);
+            const Complex h = sea.h0[here] * turn + std::conj(sea.h0[minus]) * std::conj(turn);
+            const double ux = kx / k, uz = kz / k, l = choppiness;
+            spectra[0][here] = l * I * ux * h;             // l Dx
+            spectra[1][here] = h;                          // h
+            spectra[2][here] = l * I * uz * h;             // l Dz
+            spectra[3][here] = l * (I * kz) * (I * ux) * h;  // l dDx/dz
+            spectra[4][here] = I * kx * h;                 // dh/dx
+            spectra[5][here] = I * kz * h;                 // dh/dz
+            spectra[6][here] = l * (I * kx) * (I * ux) * h;  // l dDx/dx
+            spectra[7][here] = l * (I * kz) * (I * uz) * h;  // l dDz/dz
+        }
+    step05::FragmentSimulation simulation(factory());
+    simulation.set_spectra({&sea});
+    simulation.simulate(time, choppiness);
+    const std::vector<float> displacement = simulation.read_map(false, 0), slopes = simulation.read_map(true, 0);
+    ASSERT_EQ(displacement.size(), std::size_t(n) * n * 4);
+    double worst = 0, largest = 0, imaginary = 0;
+    for (int c = 0; c < 8; ++c) {
+        const std::vector<Complex> field = direct_inverse_dft(spectra[std::size_t(c)], n);
+        for (std::size_t t = 0; t < field.size(); ++t) {
+            const float gpu = c < 4 ? displacement[4 * t + std::size_t(c)] : slopes[4 * t + std::size_t(c - 4)];
+            worst = std::max(worst, std::abs(gpu - field[t].real()));
+            largest = std::max(largest, std::abs(field[t].real()));
+            imaginary = std::max(imaginary, std::abs(field[t].imag()));
+        }
+    }
+    EXPECT_LT(imaginary, 1e-9 * largest);  // the reference itself: real fields, as the packing assumes
+    EXPECT_LT(worst / largest, 1e-5);
+    // Its mipmaps (glGenerateMipmap on 32-bit floats: EXT_color_buffer_float and
+    // OES_texture_float_linear in ES): each texel of level 1 the mean of the 2 x 2 it covers.
+    for (bool of_slopes : {false, true}) {
+        const std::vector<float> level0 = of_slopes ? slopes : displacement, level1 = simulation.read_map(of_slopes, 1);
+        ASSERT_EQ(level1.size(), std::size_t(n / 2) * (n / 2) * 4);
+        double mip_worst = 0;
+        for (int j = 0; j < n / 2; ++j)
+            for (int i = 0; i < n / 2; ++i)
+                for (int c = 0; c < 4; ++c) {
+                    auto at = [&](int x, int z) { return double(level0[std::size_t(4 * (z * n + x) + c)]); };
+                    const double mean = (at(2 * i, 2 * j) + at(2 * i + 1, 2 * j) + at(2 * i, 2 * j + 1) + at(2 * i + 1, 2 * j + 1)) / 4;
+                    mip_worst = std::max(mip_worst, std::abs(level1[std::size_t(4 * (j * (n / 2) + i) + c)] - mean));
+                }
+        EXPECT_LT(mip_worst, 1e-6 * largest) << (of_slopes ? "slopes" : "displacement") << ": level 1";
+    }
+    std::printf("fragment simulation, N = %d: vs the maps' definitions relative error %.2e\n", n, worst / largest);
 }
 
 }  // namespace
