@@ -7,6 +7,8 @@
 #include "common/gl.hpp"
 
 #include <algorithm>
+#include <string_view>
+#include <vector>
 
 namespace ocean {
 
@@ -72,6 +74,22 @@ inline void upload_float_texture_2d(const Texture& texture, GLenum format, GLsiz
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, upload_format, GL_FLOAT, data);
 #else
     glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, upload_format, GL_FLOAT, data);
+#endif
+}
+
+// Whether 32-bit float textures may be sampled with linear filtering and mipmaps (the simulation's
+// maps are): always in desktop GL, only with OES_texture_float_linear in ES 3.0 and WebGL 2.
+inline bool float_textures_filterable() {
+#if defined(OCEAN_GL_ES)
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
+        if (name != nullptr && std::string_view(name) == "GL_OES_texture_float_linear") return true;
+    }
+    return false;
+#else
+    return true;
 #endif
 }
 
@@ -156,8 +174,10 @@ inline bool attach_texture_layer(const Framebuffer& framebuffer, GLenum attachme
 #endif
 }
 
-// Levels 1 and below of a 2D array texture from its level 0, each texel the mean of the 2 x 2 it
-// covers (a power-of-two texture): what step05's box_mip.comp makes where there are compute shaders.
+// Levels 1 and below of a 2D array texture from its level 0: what step05's box_mip.comp makes where
+// there are compute shaders. The specification recommends, without requiring, that each texel be
+// the mean of the 2 x 2 it covers; the drivers we know do that for a power-of-two texture (the
+// portable GPU tests check it on the one they run on).
 inline void generate_mipmaps_2d_array(const Texture& texture) {
 #if OCEAN_GL_BIND_TO_EDIT
     detail::BindTextureForEdit edit(GL_TEXTURE_2D_ARRAY, texture.id());
@@ -165,6 +185,58 @@ inline void generate_mipmaps_2d_array(const Texture& texture) {
 #else
     glGenerateTextureMipmap(texture.id());
 #endif
+}
+
+// Binds `texture` to `target` of texture unit `unit` (glBindTextureUnit where GL has it); the
+// active unit is left at 0, where the bind-to-edit helpers expect it.
+inline void bind_texture(GLuint unit, GLenum target, GLuint texture) {
+#if OCEAN_GL_BIND_TO_EDIT
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(target, texture);
+    glActiveTexture(GL_TEXTURE0);
+#else
+    (void)target;  // a texture made by glCreateTextures knows its target
+    glBindTextureUnit(unit, texture);
+#endif
+}
+
+// An 8-bit RGBA image as a 2D texture, one level, nearest (a figure the panel or a view shows).
+inline Texture make_colour_texture_2d(GLsizei width, GLsizei height, const void* rgba) {
+    Texture texture = make_texture(GL_TEXTURE_2D);
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindTextureForEdit edit(GL_TEXTURE_2D, texture.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+#else
+    glTextureStorage2D(texture.id(), 1, GL_RGBA8, width, height);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+#endif
+    return texture;
+}
+
+// Level `level` (`side` x `side` texels) of layer `layer` of a float RGBA 2D array texture, read
+// back to the CPU: through a framebuffer where GL cannot read a texture directly (ES has no
+// glGetTexImage). Row major, 4 floats a texel.
+inline std::vector<float> read_texture_layer(GLuint texture, GLint level, GLint layer, GLsizei side) {
+    std::vector<float> texels(std::size_t(side) * std::size_t(side) * 4);
+#if OCEAN_GL_BIND_TO_EDIT
+    GLuint reader = 0;
+    glGenFramebuffers(1, &reader);
+    {
+        const detail::BindForEdit edit(GL_READ_FRAMEBUFFER, reader);
+        glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, texture, level, layer);
+        glReadPixels(0, 0, side, side, GL_RGBA, GL_FLOAT, texels.data());
+    }
+    glDeleteFramebuffers(1, &reader);
+#else
+    glGetTextureSubImage(texture, level, 0, 0, layer, side, side, 1, GL_RGBA, GL_FLOAT,
+                         GLsizei(texels.size() * sizeof(float)), texels.data());
+#endif
+    return texels;
 }
 
 }  // namespace ocean

@@ -2,7 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/file_output.hpp"
-#include "common/gl.hpp"
+#include "common/gl_texture.hpp"
 #include "common/image.hpp"
 #include "common/text.hpp"
 
@@ -27,13 +27,9 @@ std::string file_line(const std::string& file, const std::string& meaning) {
 
 void export_maps(const std::string& dir, unsigned displacement_texture, unsigned slopes_texture, int layer,
                  int n, double patch_size, double time, double choppiness, const ocean::ParamRegistry& params) {
-    const std::size_t texels = std::size_t(n) * n;
-    std::vector<float> displacement(texels * 4), slopes(texels * 4);
     // One layer of level 0: (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz).
-    glGetTextureSubImage(displacement_texture, 0, 0, 0, layer, n, n, 1, GL_RGBA, GL_FLOAT,
-                         GLsizei(displacement.size() * sizeof(float)), displacement.data());
-    glGetTextureSubImage(slopes_texture, 0, 0, 0, layer, n, n, 1, GL_RGBA, GL_FLOAT,
-                         GLsizei(slopes.size() * sizeof(float)), slopes.data());
+    const std::vector<float> displacement = ocean::read_texture_layer(displacement_texture, 0, layer, n);
+    const std::vector<float> slopes = ocean::read_texture_layer(slopes_texture, 0, layer, n);
     write_export(dir, n, displacement, slopes, patch_size, time, choppiness, params,
                  {{"export.periodic", "1"}, {"export.origin_x", "0"}, {"export.origin_z", "0"}});
 }

@@ -37,7 +37,8 @@ const ocean::Texture& FragmentFft::inverse(const ocean::Texture& source) {
 
 void FragmentFft::stage(GLuint source, int target, int axis, int span) {
     ocean::ShaderProgram* program =
-        programs_("fft_stockham", {"common/shaders/fullscreen.vert", "step05_fft/shaders/fft_stockham.frag"}, {});
+        programs_("fft_stockham.frag", {"common/shaders/fullscreen.vert", "step05_fft/shaders/fft_stockham.frag"}, {});
+    if (program == nullptr) throw ocean::Error("shader fft_stockham.frag does not build");  // the log said why
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers_[target].id());
     glBindTexture(GL_TEXTURE_2D, source);
     glUseProgram(program->id());

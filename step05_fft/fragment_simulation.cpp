@@ -16,6 +16,7 @@ ocean::ShaderProgram& FragmentSimulation::program(const std::string& name, const
 }
 
 void FragmentSimulation::allocate(int n, int cascades) {
+    n_ = 0;  // until every texture is made: a throw below leaves no half-made simulation to run
     h0_.clear();
     phase_.clear();
     for (int c = 0; c < cascades; ++c) {
@@ -32,14 +33,26 @@ void FragmentSimulation::allocate(int n, int cascades) {
     }
     displacement_ = ocean::make_map_texture_2d_array(GL_RGBA32F, n, cascades, mip_levels(n));
     slopes_ = ocean::make_map_texture_2d_array(GL_RGBA32F, n, cascades, mip_levels(n));
-    assemble_target_ = ocean::make_framebuffer();
+    // One framebuffer a cascade, made once: its two attachments are that cascade's layer of each map.
+    assemble_targets_.clear();
+    for (int c = 0; c < cascades; ++c) {
+        assemble_targets_.push_back(ocean::make_framebuffer());
+        if (!ocean::attach_texture_layer(assemble_targets_.back(), GL_COLOR_ATTACHMENT0, displacement_, 0, c) ||
+            !ocean::attach_texture_layer(assemble_targets_.back(), GL_COLOR_ATTACHMENT1, slopes_, 0, c))
+            throw ocean::Error("this GL cannot render into the simulation's maps (32-bit float array layers)");
+    }
+    // The maps are sampled with linear filtering and mipmaps: core in GL, an extension in ES 3.0.
+    if (!ocean::float_textures_filterable())
+        throw ocean::Error("this GL cannot filter 32-bit float textures (ES needs OES_texture_float_linear)");
     no_vertices_ = ocean::make_vertex_array();
     n_ = n;
 }
 
 void FragmentSimulation::set_spectra(const std::vector<const InitialSpectrum*>& cascades) {
-    if (cascades.empty() || cascades.size() > 4) throw ocean::Error("1 to 4 cascades");
+    if (cascades.empty() || cascades.size() > 4) throw ocean::Error("the fragment simulation takes 1 to 4 cascades");
     const int n = cascades.front()->n;
+    for (const InitialSpectrum* s : cascades)
+        if (s->n != n) throw ocean::Error("the fragment simulation's cascades must share one resolution");
     if (n != n_ || cascades.size() != cascades_.size()) allocate(n, int(cascades.size()));
     cascades_ = cascades;
     // Each texel holds its mode and the mode at -k, which evolve_mode pairs with it.
@@ -64,44 +77,37 @@ void FragmentSimulation::evolve(int cascade, double time) {
     for (std::size_t m = 0; m < phase_scratch_.size(); ++m) phase_scratch_[m] = float(reduced_phase(s.omega[m], time));
     ocean::upload_float_texture_2d(phase_[std::size_t(cascade)], GL_R32F, n_, n_, phase_scratch_.data());
 
-    ocean::ShaderProgram& p = program("evolve_fragment", {"common/shaders/fullscreen.vert", "step05_fft/shaders/evolve.frag"});
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, evolve_target_.id());
-    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glDrawBuffers(2, both);
+    ocean::ShaderProgram& p = program("evolve.frag", {"common/shaders/fullscreen.vert", "step05_fft/shaders/evolve.frag"});
     glUseProgram(p.id());
     p.set("u_n", n_);
     p.set("u_patch_size", float(s.patch_size));
     p.set("u_h0", 0);
     p.set("u_phase", 1);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, h0_[std::size_t(cascade)].id());
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, phase_[std::size_t(cascade)].id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    draw_two_into_two(h0_[std::size_t(cascade)], phase_[std::size_t(cascade)], evolve_target_);
 }
 
 void FragmentSimulation::assemble(int cascade, const ocean::Texture& fields_01, const ocean::Texture& fields_23,
                                   float choppiness) {
-    if (!ocean::attach_texture_layer(assemble_target_, GL_COLOR_ATTACHMENT0, displacement_, 0, cascade) ||
-        !ocean::attach_texture_layer(assemble_target_, GL_COLOR_ATTACHMENT1, slopes_, 0, cascade))
-        throw ocean::Error("this GL cannot render into the simulation's maps (32-bit float array layers)");
-    ocean::ShaderProgram& p = program("assemble_fragment", {"common/shaders/fullscreen.vert", "step05_fft/shaders/assemble.frag"});
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, assemble_target_.id());
-    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glDrawBuffers(2, both);
+    ocean::ShaderProgram& p = program("assemble.frag", {"common/shaders/fullscreen.vert", "step05_fft/shaders/assemble.frag"});
     glUseProgram(p.id());
     p.set("u_choppiness", choppiness);
     p.set("u_fields_01", 0);
     p.set("u_fields_23", 1);
+    draw_two_into_two(fields_01, fields_23, assemble_targets_[std::size_t(cascade)]);
+}
+
+// Both passes read two textures (units 0 and 1) and write two attachments in one draw.
+void FragmentSimulation::draw_two_into_two(const ocean::Texture& in_0, const ocean::Texture& in_1,
+                                           const ocean::Framebuffer& target) {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.id());
+    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, both);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, fields_01.id());
+    glBindTexture(GL_TEXTURE_2D, in_0.id());
     glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, fields_23.id());
+    glBindTexture(GL_TEXTURE_2D, in_1.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D, 0);  // unbound again: a later pass may write what these held
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, 0);
 }
@@ -121,25 +127,17 @@ void FragmentSimulation::simulate(double time, float choppiness) {
 }
 
 void FragmentSimulation::bind_maps(const ocean::ShaderProgram& program) const {
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, displacement_.id());
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D_ARRAY, slopes_.id());
-    glActiveTexture(GL_TEXTURE0);
+    ocean::bind_texture(0, GL_TEXTURE_2D_ARRAY, displacement_.id());
+    ocean::bind_texture(1, GL_TEXTURE_2D_ARRAY, slopes_.id());
     program.set("u_displacement", 0);
     program.set("u_slopes", 1);
 }
 
 std::vector<float> FragmentSimulation::read_map(bool slopes, int level) const {
-    const int side = std::max(1, n_ >> level);
     std::vector<float> texels;
-    ocean::Framebuffer reader = ocean::make_framebuffer();
-    const ocean::detail::BindForEdit keep(GL_READ_FRAMEBUFFER, reader.id());
     for (int c = 0; c < cascade_count(); ++c) {
-        glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, slopes ? slopes_.id() : displacement_.id(),
-                                  level, c);
-        std::vector<float> layer(std::size_t(side) * std::size_t(side) * 4);
-        glReadPixels(0, 0, side, side, GL_RGBA, GL_FLOAT, layer.data());
+        const std::vector<float> layer =
+            ocean::read_texture_layer(slopes ? slopes_.id() : displacement_.id(), level, c, std::max(1, n_ >> level));
         texels.insert(texels.end(), layer.begin(), layer.end());
     }
     return texels;

@@ -26,7 +26,9 @@ public:
 
     // Uploads h0 of each cascade (all of one resolution, 1 to 4 of them) and keeps their omega for
     // the phases. Call when the spectrum changes; the textures are re-made when the size or the
-    // cascade count changes. The spectra must outlive the next simulate().
+    // cascade count changes. The spectra must outlive the next simulate(). Throws ocean::Error
+    // for no cascade, more than 4, mixed resolutions, or a GL that cannot render into or filter
+    // 32-bit float textures.
     void set_spectra(const std::vector<const InitialSpectrum*>& cascades);
 
     // One frame: evolve to `time`, transform, assemble with choppiness `choppiness`, mipmaps. The
@@ -48,6 +50,7 @@ private:
     void allocate(int n, int cascades);
     void evolve(int cascade, double time);
     void assemble(int cascade, const ocean::Texture& fields_01, const ocean::Texture& fields_23, float choppiness);
+    void draw_two_into_two(const ocean::Texture& in_0, const ocean::Texture& in_1, const ocean::Framebuffer& target);
 
     ocean::ProgramFactory programs_;
     std::vector<const InitialSpectrum*> cascades_;
@@ -56,7 +59,8 @@ private:
     std::vector<ocean::Texture> phase_;  // per cascade: omega t mod 2 pi, R32F, uploaded each frame
     std::vector<float> phase_scratch_;
     std::array<ocean::Texture, 2> spectra_;  // the four packed spectra of one cascade, two a texture
-    ocean::Framebuffer evolve_target_, assemble_target_;
+    ocean::Framebuffer evolve_target_;                 // its two attachments: spectra_
+    std::vector<ocean::Framebuffer> assemble_targets_;  // per cascade: its layer of each map
     std::array<std::unique_ptr<FragmentFft>, 2> fft_;  // one a texture: each keeps its result
     ocean::Texture displacement_, slopes_;
     ocean::VertexArray no_vertices_;  // the full-screen triangle's vertices come from gl_VertexID

@@ -5,15 +5,23 @@
 // modes turn at omega(k) (evolve.comp) and an inverse FFT turns them into height, choppy
 // displacement and slope maps (fft.comp: Stockham in shared memory), which displace the grid.
 // Three transform backends to compare: the notes' naive DFT, the GPU FFT, and FFTW on the CPU.
+// Without compute shaders (the portable profile: macOS, the browser) the same passes run as
+// fragment passes (fragment_simulation.hpp) and there is no backend to choose.
 // Controls: as step02; the panel's "spectrum" group, the backend and the map views.
 #include "common/app.hpp"
 #include "common/constants.hpp"
+#include "common/gl_texture.hpp"
 #include "common/grid.hpp"
 #include "step03_lighting/light_params.hpp"
 #include "step03_lighting/light_uniforms.hpp"
 #include "step05_fft/export.hpp"
-#include "step05_fft/ocean_simulation.hpp"
+#include "step05_fft/ocean_maps.hpp"
 #include "step05_fft/ocean_params.hpp"
+#ifdef OCEAN_GL_PORTABLE
+#include "step05_fft/fragment_simulation.hpp"
+#else
+#include "step05_fft/ocean_simulation.hpp"
+#endif
 #include "step05_fft/spectrum_view.hpp"
 
 #include <imgui.h>
@@ -24,7 +32,16 @@
 
 namespace {
 
+// The simulation the window runs. In the GL 4.5 profile: compute passes, with a choice of
+// transforms (OceanSimulation's backends: the notes' DFT, the GPU FFT, FFTW). Where there are no
+// compute shaders (GL 4.1 on macOS, ES 3.0, WebGL 2): the same passes as fragment passes, the same
+// maps (FragmentSimulation), and no choice of backend.
+#ifdef OCEAN_GL_PORTABLE
+using Simulation = step05::FragmentSimulation;
+#else
+using Simulation = step05::OceanSimulation;
 using step05::Backend;
+#endif
 
 class FftOcean : public ocean::App {
 public:
@@ -38,12 +55,7 @@ public:
         // (common/camera.cpp).
         auto& p = params();
         ocean_params_.declare(p);
-        p.add_choice("backend", &backend_, step05::backend_names(),
-                     "inverse transform: naive DFT on the GPU (N <= 64), GPU FFT, FFTW on the CPU, or auto "
-                     "(the faster of the last two, timed on the first frames)");
-        p.add_choice("fft", &fft_form_, step05::gpu_fft_form_names(),
-                     "the GPU FFT's form: plain radix 2 (a dispatch a stage) or radix 4 in Stockham's order "
-                     "(every stage in shared memory); the same result");
+        offer_backends();  // GL 4.5 only: the transform's parameters, benchmark and split view
         p.add_choice("sea", &sea_, {"spectrum", "gerstner"},
                      "the FFT's sea, or one Gerstner wave in closed form along the wind (section 4)");
         p.add_float("gerstner_wavelength", &gerstner_.wavelength, 1, 500, "sea=gerstner: the wave's length, m")
@@ -67,30 +79,16 @@ public:
         p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         p.add_bool("frustum_culling", &cull_, "draw only the grid's chunks that may be in view").in_group("grid");
         use_camera(ocean::camera_view("deck"));  // an open sea, seen from a ship's deck (12 m up)
-        // The notes' DFT against the FFT: the same sea (the DFT needs resolution 64).
+        // --export DIR: this frame's maps as PFM files and a list of the parameters (export.hpp).
         offer_export([this](const std::string& dir) {
             step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
                                 ocean_params_.spectrum.patch_size, time(), ocean_params_.choppiness, params());
-        });
-        offer_bench_figures([this] {
-            const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 9);
-            for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
-            return times.figures();
-        });
-        offer_warm_up([this] { return Backend(backend_) == Backend::Auto && (!gpu_ || gpu_->auto_deciding()); });
-        // Above the DFT's resolution the left half is the GPU FFT too (backend() falls back): its
-        // label says so, as the picture shows it.
-        offer_split_view([this] {
-            const std::string left = ocean_params_.spectrum.resolution > step05::kMaxDftSize
-                                         ? "naive DFT (off above " + std::to_string(step05::kMaxDftSize) + ": GPU FFT)"
-                                         : "naive DFT";
-            return SplitVariants{left, "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
         });
     }
 
 private:
     void init() override {
-        gpu_ = std::make_unique<step05::OceanSimulation>(program_factory());
+        gpu_ = std::make_unique<Simulation>(program_factory());
     }
 
     void update(double /*time*/, double /*dt*/) override {
@@ -105,30 +103,8 @@ private:
         }
     }
 
-    Backend backend() {
-        const Backend wanted = Backend(backend_);
-        if (wanted == Backend::Dft && gpu_->resolution() > step05::kMaxDftSize) {
-            if (!warned_dft_)
-                std::cerr << "warning: the naive DFT is for resolution <= 64; using the GPU FFT at "
-                          << gpu_->resolution() << "\n";
-            warned_dft_ = true;
-            return Backend::GpuFft;
-        }
-        return wanted;
-    }
-
     void render() override {
-        gpu_->set_gpu_fft_form(step05::GpuFftForm(fft_form_));
-        const Backend chosen = backend();
-        if (chosen == Backend::Auto) {
-            // While auto decides, frames alternate the backends, whose passes differ: one figure
-            // for the whole simulation, as step06 keeps.
-            ocean::GpuScope timed(timers(), "simulation");
-            gpu_->simulate(time(), chosen, ocean_params_.choppiness);
-        } else {
-            gpu_->simulate(time(), chosen, ocean_params_.choppiness, &timers());  // each pass timed
-        }
-        if (auto decision = gpu_->take_auto_decision()) std::cout << "backend auto " << *decision << std::endl;  // flushed: a log follows the run
+        simulate_frame();
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
         if (view_ > 0) {
@@ -176,7 +152,7 @@ private:
         p->set("u_resolution", glm::vec2(framebuffer_size()));
         gpu_->bind_maps(*p);
         p->set("u_spectrum_image", 3);
-        glBindTextureUnit(3, spectrum_view_.texture());
+        ocean::bind_texture(3, GL_TEXTURE_2D, spectrum_view_.texture());
         glUseProgram(p->id());
         draw_fullscreen_triangle();
     }
@@ -184,27 +160,96 @@ private:
     void ui() override {
         ImGui::Separator();
         spectrum_view_.draw_ui();
+        backends_ui();
+    }
+
+#ifdef OCEAN_GL_PORTABLE
+    // One simulation, timed whole.
+    void offer_backends() {}
+    void simulate_frame() {
+        ocean::GpuScope timed(timers(), "simulation");
+        gpu_->simulate(time(), ocean_params_.choppiness);
+    }
+    void backends_ui() {}
+#else
+    // The transform's two parameters; --bench's table of the backends against FFTW's floor; the
+    // warm-up while auto decides; the split view of the notes' DFT against the GPU FFT.
+    void offer_backends() {
+        auto& p = params();
+        p.add_choice("backend", &backend_, step05::backend_names(),
+                     "inverse transform: naive DFT on the GPU (N <= 64), GPU FFT, FFTW on the CPU, or auto "
+                     "(the faster of the last two, timed on the first frames)");
+        p.add_choice("fft", &fft_form_, step05::gpu_fft_form_names(),
+                     "the GPU FFT's form: plain radix 2 (a dispatch a stage) or radix 4 in Stockham's order "
+                     "(every stage in shared memory); the same result");
+        offer_bench_figures([this] {
+            const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 9);
+            for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
+            return times.figures();
+        });
+        offer_warm_up([this] { return Backend(backend_) == Backend::Auto && (!gpu_ || gpu_->auto_deciding()); });
+        // Above the DFT's resolution the left half is the GPU FFT too (backend() falls back): its
+        // label says so, as the picture shows it.
+        offer_split_view([this] {
+            const std::string left = ocean_params_.spectrum.resolution > step05::kMaxDftSize
+                                         ? "naive DFT (off above " + std::to_string(step05::kMaxDftSize) + ": GPU FFT)"
+                                         : "naive DFT";
+            return SplitVariants{left, "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
+        });
+    }
+
+    Backend backend() {
+        const Backend wanted = Backend(backend_);
+        if (wanted == Backend::Dft && gpu_->resolution() > step05::kMaxDftSize) {
+            if (!warned_dft_)
+                std::cerr << "warning: the naive DFT is for resolution <= 64; using the GPU FFT at "
+                          << gpu_->resolution() << "\n";
+            warned_dft_ = true;
+            return Backend::GpuFft;
+        }
+        return wanted;
+    }
+
+    void simulate_frame() {
+        gpu_->set_gpu_fft_form(step05::GpuFftForm(fft_form_));
+        const Backend chosen = backend();
+        if (chosen == Backend::Auto) {
+            // While auto decides, frames alternate the backends, whose passes differ: one figure
+            // for the whole simulation, as step06 keeps.
+            ocean::GpuScope timed(timers(), "simulation");
+            gpu_->simulate(time(), chosen, ocean_params_.choppiness);
+        } else {
+            gpu_->simulate(time(), chosen, ocean_params_.choppiness, &timers());  // each pass timed
+        }
+        if (auto decision = gpu_->take_auto_decision()) std::cout << "backend auto " << *decision << std::endl;  // flushed: a log follows the run
+    }
+
+    void backends_ui() {
         if (ImGui::Button("compare the backends")) backend_times_ = step05::time_backends(*gpu_, time(), 3).lines();
         for (const auto& line : backend_times_) ImGui::TextUnformatted(line.c_str());
     }
 
+    int backend_ = int(Backend::Auto), fft_form_ = int(step05::GpuFftForm::Stockham4);
+    std::vector<std::string> backend_times_;
+    bool warned_dft_ = false;
+#endif
+
     step05::OceanParams ocean_params_;
     step03::LightParams light_;
     ocean::GridParams grid_params_{800, 400};  // several tiles: the sea reaches the horizon
-    std::unique_ptr<step05::OceanSimulation> gpu_;
+    std::unique_ptr<Simulation> gpu_;
     std::unique_ptr<step05::InitialSpectrum> spectrum_;
     unsigned spectrum_built_for_ = 0;
     step05::SpectrumView spectrum_view_;
     ocean::GridMesh grid_;
     bool cull_ = true;
-    std::vector<std::string> backend_times_;
-    int backend_ = int(Backend::Auto), fft_form_ = int(step05::GpuFftForm::Stockham4), normals_ = 0, view_ = 0, sea_ = 0;
+    int normals_ = 0, view_ = 0, sea_ = 0;
     float map_range_ = 0;
     struct {
         float wavelength = 24, amplitude = 1.2f, steepness = 0.8f;  // k A = 0.31: a steep wind wave
     } gerstner_;
     double height_variance_ = 0;  // m^2: the spectrum's resolved variance (step06 keeps the same)
-    bool wireframe_ = false, warned_dft_ = false;
+    bool wireframe_ = false;
 };
 
 }  // namespace

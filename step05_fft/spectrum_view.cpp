@@ -1,5 +1,7 @@
 #include "step05_fft/spectrum_view.hpp"
 
+#include "common/gl_texture.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -46,11 +48,7 @@ void SpectrumView::update(const SpectrumParams& p, const InitialSpectrum& s) {
             px[2] = std::uint8_t(255 * std::sqrt(t));
             px[3] = 255;
         }
-    texture_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture_.id(), 1, GL_RGBA8, n_, n_);
-    glTextureSubImage2D(texture_.id(), 0, 0, 0, n_, n_, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    texture_ = ocean::make_colour_texture_2d(n_, n_, pixels.data());
 }
 
 void SpectrumView::draw_ui() const {
