@@ -13,13 +13,15 @@
 namespace ocean {
 
 namespace detail {
-// Binds a texture to `target` (GL_TEXTURE_2D or GL_TEXTURE_2D_ARRAY) of the active unit for one
+// Binds a texture to `target` (GL_TEXTURE_2D, GL_TEXTURE_2D_ARRAY or GL_TEXTURE_CUBE_MAP) of the active unit for one
 // edit; puts back the one bound there before.
 class BindTextureForEdit {
 public:
     BindTextureForEdit(GLenum target, GLuint id)
         : target_(target),
-          before_(bound(target == GL_TEXTURE_2D_ARRAY ? GL_TEXTURE_BINDING_2D_ARRAY : GL_TEXTURE_BINDING_2D)) {
+          before_(bound(target == GL_TEXTURE_2D_ARRAY    ? GL_TEXTURE_BINDING_2D_ARRAY
+                        : target == GL_TEXTURE_CUBE_MAP ? GL_TEXTURE_BINDING_CUBE_MAP
+                                                        : GL_TEXTURE_BINDING_2D)) {
         glBindTexture(target_, id);
     }
     ~BindTextureForEdit() { glBindTexture(target_, before_); }
@@ -184,6 +186,80 @@ inline void generate_mipmaps_2d_array(const Texture& texture) {
     glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
 #else
     glGenerateTextureMipmap(texture.id());
+#endif
+}
+
+// The same for a cubemap's faces, each from its own level 0.
+inline void generate_mipmaps_cube(const Texture& texture) {
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindTextureForEdit edit(GL_TEXTURE_CUBE_MAP, texture.id());
+    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+#else
+    glGenerateTextureMipmap(texture.id());
+#endif
+}
+
+// A float texture read with linear filtering, one level, its edges `wrap_s` and `wrap_t`
+// (GL_REPEAT or GL_CLAMP_TO_EDGE): a table a shader interpolates (step06's horizon, one row) or an
+// image (an equirectangular sky). `format` as make_float_texture_2d's; `data` may be null.
+inline Texture make_linear_float_texture_2d(GLenum format, GLsizei width, GLsizei height, GLenum wrap_s, GLenum wrap_t,
+                                            const float* data = nullptr) {
+    Texture texture = make_float_texture_2d(format, width, height);
+    if (data != nullptr) upload_float_texture_2d(texture, format, width, height, data);
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindTextureForEdit edit(GL_TEXTURE_2D, texture.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(wrap_s));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(wrap_t));
+#else
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GLint(wrap_s));
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GLint(wrap_t));
+#endif
+    return texture;
+}
+
+// A cubemap of six `size` x `size` faces of a float `format` with `levels` mip levels, trilinear:
+// a sky that passes render into face by face and shaders sample by direction. Seamless across
+// faces (core in ES; GL asks for it).
+inline Texture make_cube_texture(GLenum format, GLsizei size, GLsizei levels) {
+    Texture texture = make_texture(GL_TEXTURE_CUBE_MAP);
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindTextureForEdit edit(GL_TEXTURE_CUBE_MAP, texture.id());
+    GLenum upload_format = 0, type = 0;
+    detail::float_upload_format(format, upload_format, type);
+    for (GLint level = 0; level < levels; ++level)  // a level at a time: GL 4.1 has no glTexStorage
+        for (GLenum face = 0; face < 6; ++face) {
+            const GLsizei side = std::max<GLsizei>(1, size >> level);
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, level, GLint(format), side, side, 0, upload_format, type,
+                         nullptr);
+        }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+#else
+    glTextureStorage2D(texture.id(), levels, format, size, size);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+#endif
+#if !defined(OCEAN_GL_ES)
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+#endif
+    return texture;
+}
+
+// Attaches level 0 of cubemap face `face` (0 to 5: +X, -X, +Y, -Y, +Z, -Z) to a framebuffer at
+// `attachment`; returns whether the framebuffer is complete afterwards.
+inline bool attach_cube_face(const Framebuffer& framebuffer, GLenum attachment, const Texture& texture, int face) {
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindForEdit edit(GL_DRAW_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, attachment, GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), texture.id(), 0);
+    return glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+#else
+    glNamedFramebufferTextureLayer(framebuffer.id(), attachment, texture.id(), 0, face);  // a cube's layers: its faces
+    return glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
 #endif
 }
 

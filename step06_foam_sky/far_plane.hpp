@@ -12,10 +12,10 @@ inline void draw_at_far_plane(GLenum test, GLuint vao) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(test);
     glDepthMask(GL_FALSE);
-    glDepthRange(1.0, 1.0);
+    glDepthRangef(1.0f, 1.0f);  // the float form: ES has only it
     glBindVertexArray(vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthRange(0.0, 1.0);
+    glDepthRangef(0.0f, 1.0f);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);

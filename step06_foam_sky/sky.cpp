@@ -23,16 +23,18 @@ constexpr const char* kShaders = "step06_foam_sky/shaders/";
 }
 
 Sky::Sky(ocean::ProgramFactory programs, int size) : programs_(std::move(programs)), size_(size) {
-    cubemap_ = ocean::make_texture(GL_TEXTURE_CUBE_MAP);
-    glTextureStorage2D(cubemap_.id(), step05::mip_levels(size), GL_RGBA16F, size, size);
-    glTextureParameteri(cubemap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(cubemap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    horizon_ = ocean::make_texture(GL_TEXTURE_1D);
-    glTextureStorage1D(horizon_.id(), 1, GL_RGBA32F, kHorizonTexels);
-    glTextureParameteri(horizon_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(horizon_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(horizon_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the horizon goes round
+    cubemap_ = ocean::make_cube_texture(GL_RGBA16F, size, step05::mip_levels(size));
+    for (int face = 0; face < 6; ++face) {
+        face_targets_[face] = ocean::make_framebuffer();
+        if (!ocean::attach_cube_face(face_targets_[face], GL_COLOR_ATTACHMENT0, cubemap_, face))
+            throw ocean::Error("this GL cannot render into a half-float cubemap (the sky's)");
+    }
+    // One row that goes round the horizon: repeating along it.
+    horizon_ = ocean::make_linear_float_texture_2d(GL_RGBA32F, kHorizonTexels, 1, GL_REPEAT, GL_CLAMP_TO_EDGE);
+    horizon_target_ = ocean::make_framebuffer();
+    if (!ocean::attach_texture_2d(horizon_target_, GL_COLOR_ATTACHMENT0, horizon_))
+        throw ocean::Error("this GL cannot render into 32-bit float textures (the fog's horizon table)");
+    no_vertices_ = ocean::make_vertex_array();
 }
 
 void Sky::update(const SkySettings& settings, const std::string& image, unsigned image_version) {
@@ -71,31 +73,28 @@ std::optional<std::string> Sky::use_image(const std::string& path) {
     if (S_ISDIR(info.st_mode)) return "sky_image '" + path + "' is a directory; using the procedural sky";
     int w = 0, h = 0, channels = 0;
     // .hdr loads as linear radiance; an LDR image (PNG, JPEG) is sRGB, which stb turns into
-    // linear floats with its gamma (2.2 by default).
-    float* pixels = stbi_loadf(path.c_str(), &w, &h, &channels, 3);
+    // linear floats with its gamma (2.2 by default). Four channels: ES cannot filter RGB32F.
+    float* pixels = stbi_loadf(path.c_str(), &w, &h, &channels, 4);
     if (pixels == nullptr)
         return "sky_image '" + path + "' is not a readable image (" + stbi_failure_reason() +
                "); using the procedural sky";
-    equirect_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(equirect_.id(), 1, GL_RGB32F, w, h);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(equirect_.id(), 0, 0, 0, w, h, GL_RGB, GL_FLOAT, pixels);
-    glTextureParameteri(equirect_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(equirect_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(equirect_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    // Longitude repeats round the sky; latitude stops at the poles.
+    equirect_ = ocean::make_linear_float_texture_2d(GL_RGBA32F, w, h, GL_REPEAT, GL_CLAMP_TO_EDGE, pixels);
     stbi_image_free(pixels);
     return std::nullopt;
 }
 
 void Sky::render(const SkySettings& s) {
     if (equirect_ && image_rendered_) return;
-    ocean::ShaderProgram* p = programs_(equirect_ ? "sky_equirect.comp" : "sky_cube.comp",
-                                        {std::string(kShaders) + (equirect_ ? "sky_equirect.comp" : "sky_cube.comp")}, {});
-    if (p == nullptr) throw ocean::Error("the sky shader does not build");
+    const std::string file = equirect_ ? "sky_equirect.frag" : "sky_cube.frag";
+    ocean::ShaderProgram* p = programs_(file, {"common/shaders/fullscreen.vert", std::string(kShaders) + file}, {});
+    if (p == nullptr) throw ocean::Error("the sky shader " + file + " does not build");
+    const ocean::OffscreenPassState keep(no_vertices_.id());  // what was bound, put back at the end
+    glUseProgram(p->id());
     p->set("u_size", size_);
     if (equirect_) {
         p->set("u_equirect", 0);
-        glBindTextureUnit(0, equirect_.id());
+        ocean::bind_texture(0, GL_TEXTURE_2D, equirect_.id());
     } else {
         p->set("u_to_sun", s.to_sun);
         p->set("u_sun_radiance", s.sun_radiance);
@@ -106,30 +105,48 @@ void Sky::render(const SkySettings& s) {
         p->set("u_sun_size", s.sun_size);
         p->set("u_sun_disc_gain", s.sun_disc_gain);
     }
-    glBindImageTexture(0, cubemap_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glUseProgram(p->id());
-    glDispatchCompute(GLuint((size_ + 7) / 8), GLuint((size_ + 7) / 8), 6);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    // Rough reflections read the blurrier levels.
-    step05::make_box_mipmaps(programs_, cubemap_.id());
+    draw_faces(*p);
+    make_mipmaps();
     tabulate_horizon();
     image_rendered_ = bool(equirect_);
 }
 
+// One full-screen triangle into each face: a fragment a texel, the face in u_face.
+void Sky::draw_faces(const ocean::ShaderProgram& program) {
+    glViewport(0, 0, size_, size_);
+    for (int face = 0; face < 6; ++face) {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, face_targets_[face].id());
+        program.set("u_face", face);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+}
+
+// Rough reflections read the blurrier levels. Where there are compute shaders, step05's box
+// filter makes them (the same 2 x 2 means on every GPU); elsewhere glGenerateMipmap, whose box
+// filter the specification recommends.
+void Sky::make_mipmaps() {
+#ifdef OCEAN_GL_PORTABLE
+    ocean::generate_mipmaps_cube(cubemap_);
+#else
+    step05::make_box_mipmaps(programs_, cubemap_.id());
+#endif
+}
+
 void Sky::bind() const {
-    glBindTextureUnit(UNIT_SKY, cubemap_.id());
-    glBindTextureUnit(UNIT_SKY_HORIZON, horizon_.id());
+    ocean::bind_texture(UNIT_SKY, GL_TEXTURE_CUBE_MAP, cubemap_.id());
+    ocean::bind_texture(UNIT_SKY_HORIZON, GL_TEXTURE_2D, horizon_.id());
 }
 
 void Sky::tabulate_horizon() {
-    ocean::ShaderProgram* p = programs_("sky_horizon.comp", {std::string(kShaders) + "sky_horizon.comp"}, {});
-    if (p == nullptr) throw ocean::Error("sky_horizon.comp does not build");
-    p->set("u_lod", horizon_lod());
-    glBindTextureUnit(UNIT_SKY, cubemap_.id());
-    glBindImageTexture(0, horizon_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    ocean::ShaderProgram* p = programs_("sky_horizon.frag", {"common/shaders/fullscreen.vert", std::string(kShaders) + "sky_horizon.frag"}, {});
+    if (p == nullptr) throw ocean::Error("the sky shader sky_horizon.frag does not build");
+    const ocean::OffscreenPassState keep(no_vertices_.id());
     glUseProgram(p->id());
-    glDispatchCompute(GLuint((kHorizonTexels + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    p->set("u_lod", horizon_lod());
+    ocean::bind_texture(UNIT_SKY, GL_TEXTURE_CUBE_MAP, cubemap_.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, horizon_target_.id());
+    glViewport(0, 0, kHorizonTexels, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 double horizon_coordinate(glm::dvec2 d) {

@@ -1,10 +1,12 @@
 // Chapter 5.5's sky as a cubemap: rendered procedurally each frame (gradient, sun, drifting
 // clouds: sky.glsl), or filled once from an equirectangular image (--set sky_image=FILE, HDR or
-// LDR through stb_image). The sea reflects it and the background shows it.
+// LDR through stb_image). The sea reflects it and the background shows it. Each face is drawn as
+// a full-screen pass into that face (sky_cube.frag), so the sky needs no compute shader and is the
+// same code in every GL profile.
 #pragma once
 
-#include "common/gl.hpp"
-#include "step05_fft/ocean_simulation.hpp"
+#include "common/gl_texture.hpp"
+#include "common/shader.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -57,11 +59,15 @@ public:
     bool uses_image() const { return bool(equirect_); }
 
 private:
-    void tabulate_horizon();  // sky_horizon.comp, from the cube just made
+    void draw_faces(const ocean::ShaderProgram& program);  // program drawn into each face, level 0
+    void make_mipmaps();      // the cube's blurrier levels, for rough reflections
+    void tabulate_horizon();  // sky_horizon.frag, from the cube just made
 
     ocean::ProgramFactory programs_;
     int size_;
     ocean::Texture cubemap_, equirect_, horizon_;
+    ocean::Framebuffer face_targets_[6], horizon_target_;  // level 0 of each face; the horizon's row
+    ocean::VertexArray no_vertices_;  // the full-screen triangle's corners come from gl_VertexID
     bool image_rendered_ = false;
     unsigned image_version_ = 0;  // update()'s last image_version
     SkySettings settings_;        // update()'s

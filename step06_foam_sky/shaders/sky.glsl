@@ -1,5 +1,5 @@
 // Chapter 5.5's sky, as a function of direction: a gradient from horizon to zenith with a
-// scattering glow around the sun, and clouds that drift with the wind. sky_cube.comp renders it
+// scattering glow around the sun, and clouds that drift with the wind. sky_cube.frag renders it
 // into a cubemap once a frame; everything else samples the cubemap. The sun's disc is not in the
 // cubemap: the water reflects the sun through its specular term, and a disc in the reflected sky
 // would count it twice. sky.frag adds the disc (sun_disc) to the background only.

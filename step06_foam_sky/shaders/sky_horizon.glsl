@@ -1,12 +1,13 @@
 // The fog's colour (fog.glsl takes it): the sky at the horizon, blurred, in the azimuth the eye
 // looks. It depends on the azimuth alone, so Sky::render tabulates it once a frame
-// (sky_horizon.comp, HORIZON_TEXELS around the horizon) and a pixel reads two texels of a 1D
-// table instead of a trilinear fetch from the cube (that fetch was 4 % of the ocean pass on
-// llvmpipe, docs/performance.md). sky.hpp's horizon_coordinate is the CPU reference.
+// (sky_horizon.frag, HORIZON_TEXELS around the horizon, one row of a 2D texture: ES has no 1D
+// textures) and a pixel reads two texels of the table instead of a trilinear fetch from the cube
+// (that fetch was 4 % of the ocean pass on llvmpipe, docs/performance.md). sky.hpp's
+// horizon_coordinate is the CPU reference.
 #include "step06_foam_sky/texture_units.h"
 
 const int HORIZON_TEXELS = 256;
-layout(binding = UNIT_SKY_HORIZON) uniform sampler1D u_sky_horizon;  // linear, repeating
+layout(binding = UNIT_SKY_HORIZON) uniform sampler2D u_sky_horizon;  // one row; linear, repeating along it
 
 // Where the horizontal direction (x, z) falls in the table, in [0, 1) up to a whole turn: the
 // "diamond angle", a stand-in for azimuth / 2 pi that needs no atan. It runs around the square
@@ -28,4 +29,6 @@ vec2 horizon_direction(float u) {
 }
 
 // The fog's colour along `direction` (any length; only its azimuth counts).
-vec3 horizon_colour(vec3 direction) { return textureLod(u_sky_horizon, horizon_coordinate(direction.xz), 0.0).rgb; }
+vec3 horizon_colour(vec3 direction) {
+    return textureLod(u_sky_horizon, vec2(horizon_coordinate(direction.xz), 0.5), 0.0).rgb;
+}

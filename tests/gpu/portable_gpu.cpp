@@ -1,16 +1,20 @@
 // What the profiles without compute shaders (GL 4.1, ES 3.0) compute in fragment passes, tested in
 // every build (tests/cmake/framework_tests.cmake): float textures rendered into and read back
 // (common/gl_texture.hpp, in the build's form), step05's fragment FFT against a direct DFT in
-// double, which needs nothing but the definition, and step05's whole fragment simulation against
-// the maps written from their definitions.
+// double, which needs nothing but the definition, step05's whole fragment simulation against
+// the maps written from their definitions, and step06's sky, drawn face by face.
 #include "common/gl_texture.hpp"
 #include "step05_fft/fragment_fft.hpp"
 #include "step05_fft/fragment_simulation.hpp"
+#include "step06_foam_sky/sky.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
-#include <cmath>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <complex>
 #include <cstdio>
 #include <random>
@@ -166,6 +170,87 @@ TEST_F(PortableGpu, TheFragmentSimulationHoldsTheMapsOfItsDefinition) {
         EXPECT_LT(mip_worst, 1e-6 * largest) << (of_slopes ? "slopes" : "displacement") << ": level 1";
     }
     std::printf("fragment simulation, N = %d: vs the maps' definitions relative error %.2e\n", n, worst / largest);
+}
+
+// Level 0 of cubemap face `face` (side `size`), RGBA floats, through a framebuffer.
+std::vector<float> read_cube_face(GLuint cubemap, int face, int size) {
+    ocean::Framebuffer framebuffer = ocean::make_framebuffer();
+    GLint before = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &before);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face),
+                           cubemap, 0);
+    std::vector<float> texels(std::size_t(size) * std::size_t(size) * 4);
+    glReadPixels(0, 0, size, size, GL_RGBA, GL_FLOAT, texels.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(before));
+    return texels;
+}
+
+// step06's sky in the build's profile, drawn face by face into its cubemap and tabulated round the
+// horizon by fragment passes, held to what anyone can check by looking: without clouds, the
+// brightest texel of the cube is the sun's (its glow: the disc is not in the cube), the texel
+// straight up has the zenith's colour and the one nearest the horizon away from the sun the
+// gradient's colour there (sky.glsl's definition: mix(horizon, zenith, up^0.45) above it, the
+// horizon's darkening to 35 % below); and the fog's table is brightest towards the sun's
+// azimuth. A face drawn upside down or faces swapped fail it (the sun's texel 0.71 rad off when
+// the faces' rows are flipped); the fog's reading of the table is step06's own test.
+TEST_F(PortableGpu, TheSkyIsDrawnFaceByFaceWithTheSunWhereItIs) {
+    const int size = 32;
+    step06::Sky sky(factory(), size);
+    step06::SkySettings settings;
+    settings.to_sun = glm::normalize(glm::vec3(0.6f, 0.35f, -0.7f));
+    settings.cloud_cover = 0;  // the gradient and the sun's glow alone
+    sky.render(settings);
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+
+    float brightest = -1;
+    glm::vec3 brightest_direction(0), up_colour(0), away_colour(0);
+    float up_best = -2, away_best = -2, away_up = 0;
+    const glm::vec3 away = glm::normalize(glm::vec3(-settings.to_sun.x, 0, -settings.to_sun.z));
+    for (int face = 0; face < 6; ++face) {
+        const std::vector<float> texels = read_cube_face(sky.cubemap(), face, size);
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const float* t = &texels[std::size_t(y * size + x) * 4];
+                ASSERT_TRUE(std::isfinite(t[0]) && std::isfinite(t[1]) && std::isfinite(t[2]));
+                const glm::vec3 colour(t[0], t[1], t[2]), d = step06::cube_texel_direction(face, x, y, size);
+                if (colour.r + colour.g + colour.b > brightest) {
+                    brightest = colour.r + colour.g + colour.b;
+                    brightest_direction = d;
+                }
+                if (d.y > up_best) up_best = d.y, up_colour = colour;
+                if (glm::dot(d, away) > away_best) away_best = glm::dot(d, away), away_colour = colour, away_up = d.y;
+            }
+    }
+    // A texel spans about 2 / 32 rad at a face's centre: the glow's peak within two of them.
+    EXPECT_GT(glm::dot(brightest_direction, settings.to_sun), std::cos(0.13f));
+    const glm::vec3 gradient_at_horizon =
+        away_up >= 0 ? glm::mix(settings.horizon, settings.zenith, std::pow(away_up, 0.45f))
+                     : settings.horizon * glm::mix(1.0f, 0.35f, std::min(-away_up * 4.0f, 1.0f));
+    for (int c = 0; c < 3; ++c) {  // RGBA16F (3 digits), and a trace of the sun's wide glow: within 2 %
+        EXPECT_NEAR(up_colour[c], settings.zenith[c], 0.02f * settings.zenith[c]) << "straight up, channel " << c;
+        EXPECT_NEAR(away_colour[c], gradient_at_horizon[c], 0.02f * gradient_at_horizon[c])
+            << "the horizon (up = " << away_up << "), channel " << c;
+    }
+
+    // The fog's table: one row of kHorizonTexels, brightest towards the sun's azimuth.
+    ocean::Framebuffer framebuffer = ocean::make_framebuffer();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, sky.horizon(), 0);
+    std::vector<float> table(std::size_t(step06::kHorizonTexels) * 4);
+    glReadPixels(0, 0, step06::kHorizonTexels, 1, GL_RGBA, GL_FLOAT, table.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    int peak = 0;
+    for (int i = 0; i < step06::kHorizonTexels; ++i) {
+        ASSERT_TRUE(std::isfinite(table[std::size_t(i) * 4]));
+        if (table[std::size_t(i) * 4] > table[std::size_t(peak) * 4]) peak = i;
+    }
+    const glm::dvec2 peak_direction = glm::normalize(step06::horizon_direction((peak + 0.5) / step06::kHorizonTexels));
+    const glm::dvec2 sun_azimuth = glm::normalize(glm::dvec2(settings.to_sun.x, settings.to_sun.z));
+    EXPECT_GT(glm::dot(peak_direction, sun_azimuth), std::cos(0.1)) << "the table's brightest texel, " << peak;
+    std::printf("sky: brightest texel %.3f rad from the sun; the fog's table peaks %.3f rad from its azimuth\n",
+                double(std::acos(std::min(1.0f, glm::dot(brightest_direction, settings.to_sun)))),
+                std::acos(std::min(1.0, glm::dot(peak_direction, sun_azimuth))));
 }
 
 }  // namespace
