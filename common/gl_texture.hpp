@@ -294,6 +294,37 @@ inline Texture make_colour_texture_2d(GLsizei width, GLsizei height, const void*
     return texture;
 }
 
+// An 8-bit RGBA image that tiles (a pattern laid over a surface): mipmapped from it, trilinear,
+// repeating both ways.
+inline Texture make_tiling_colour_texture_2d(GLsizei width, GLsizei height, const void* rgba) {
+    GLsizei levels = 1;
+    while (std::max(width, height) >> levels) ++levels;
+    Texture texture = make_texture(GL_TEXTURE_2D);
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindTextureForEdit edit(GL_TEXTURE_2D, texture.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+#else
+    glTextureStorage2D(texture.id(), levels, GL_RGBA8, width, height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glGenerateTextureMipmap(texture.id());
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+#endif
+    return texture;
+}
+
 // Level `level` (`side` x `side` texels) of layer `layer` of a float RGBA 2D array texture, read
 // back to the CPU: through a framebuffer where GL cannot read a texture directly (ES has no
 // glGetTexImage). Row major, 4 floats a texel.

@@ -8,6 +8,7 @@
 // averaging: two dispatches for 256 x 256, where a dispatch a level took eight (docs/performance.md).
 #pragma once
 
+#include "common/gl_texture.hpp"
 #include "common/shader.hpp"
 
 #include <cmath>
@@ -24,6 +25,20 @@ void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture);
 // where one texture alone gets four): the simulation's two maps, the combined levels' two. On an
 // H100 each dispatch saved is 5 to 7 microseconds.
 void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint first, GLuint second);
+
+// Levels 1 and below of `texture` (its `target`: GL_TEXTURE_2D_ARRAY or GL_TEXTURE_CUBE_MAP), in
+// the profile's way: make_box_mipmaps where there are compute shaders, glGenerateMipmap where not
+// (GL 4.1, ES 3.0), whose box filter the specification recommends.
+inline void make_mipmaps(const ocean::ProgramFactory& programs, const ocean::Texture& texture, GLenum target) {
+#ifdef OCEAN_GL_PORTABLE
+    (void)programs;
+    if (target == GL_TEXTURE_CUBE_MAP) ocean::generate_mipmaps_cube(texture);
+    else ocean::generate_mipmaps_2d_array(texture);
+#else
+    (void)target;
+    make_box_mipmaps(programs, texture.id());
+#endif
+}
 
 // The levels of a full mip chain of a size x size texture, down to 1 x 1: what its storage needs
 // for make_box_mipmaps (or glGenerateTextureMipmap) to fill.

@@ -126,13 +126,6 @@ void FragmentSimulation::simulate(double time, float choppiness) {
     ocean::generate_mipmaps_2d_array(slopes_);
 }
 
-void FragmentSimulation::bind_maps(const ocean::ShaderProgram& program) const {
-    ocean::bind_texture(0, GL_TEXTURE_2D_ARRAY, displacement_.id());
-    ocean::bind_texture(1, GL_TEXTURE_2D_ARRAY, slopes_.id());
-    program.set("u_displacement", 0);
-    program.set("u_slopes", 1);
-}
-
 std::vector<float> FragmentSimulation::read_map(bool slopes, int level) const {
     std::vector<float> texels;
     for (int c = 0; c < cascade_count(); ++c) {

@@ -12,6 +12,7 @@
 #include "common/gl_texture.hpp"
 #include "common/shader.hpp"
 #include "step05_fft/fragment_fft.hpp"
+#include "step05_fft/simulation_maps.hpp"
 #include "step05_fft/spectrum.hpp"
 
 #include <array>
@@ -39,9 +40,9 @@ public:
     int cascade_count() const { return int(cascades_.size()); }
     GLuint displacement_texture() const { return displacement_.id(); }  // 2D array, a layer a cascade
     GLuint slopes_texture() const { return slopes_.id(); }
-    // Binds the two maps to texture units 0, 1 and points `program`'s u_displacement and
-    // u_slopes at them (a program without one of them ignores it).
-    void bind_maps(const ocean::ShaderProgram& program) const;
+    // The two maps, for what reads them (SimulationMaps::bind); bind_maps(p) is maps().bind(p).
+    SimulationMaps maps() const { return {displacement_.id(), slopes_.id()}; }
+    void bind_maps(const ocean::ShaderProgram& program) const { maps().bind(program); }
     // One mip level of the displacement (or slopes) map, every cascade: layer major, RGBA (tests).
     std::vector<float> read_map(bool slopes, int level) const;
 

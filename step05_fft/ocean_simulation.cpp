@@ -307,13 +307,6 @@ std::vector<std::string> BackendTimes::lines() const {
     return out;
 }
 
-void OceanSimulation::bind_maps(const ocean::ShaderProgram& program) const {
-    program.set("u_displacement", 0);
-    program.set("u_slopes", 1);
-    glBindTextureUnit(0, displacement_.id());
-    glBindTextureUnit(1, slopes_.id());
-}
-
 std::vector<float> OceanSimulation::read_map(bool slopes, int level) const {
     const int size = std::max(1, n_ >> level);
     std::vector<float> out(std::size_t(size) * std::size_t(size) * 4 * cascades_.size());

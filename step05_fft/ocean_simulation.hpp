@@ -10,6 +10,7 @@
 #include "common/shader.hpp"
 #include "step05_fft/cpu_simulation.hpp"
 #include "step05_fft/ocean_maps.hpp"
+#include "step05_fft/simulation_maps.hpp"
 
 #include <array>
 #include <cmath>
@@ -95,9 +96,9 @@ public:
     GLuint fields_buffer() const { return fields_.id(); }
     GLuint displacement_texture() const { return displacement_.id(); }  // 2D array, a layer a cascade
     GLuint slopes_texture() const { return slopes_.id(); }
-    // Binds the two maps to texture units 0, 1 and points `program`'s u_displacement and
-    // u_slopes at them (a program without one of them ignores it).
-    void bind_maps(const ocean::ShaderProgram& program) const;
+    // The two maps, for what reads them (SimulationMaps::bind); bind_maps(p) is maps().bind(p).
+    SimulationMaps maps() const { return {displacement_.id(), slopes_.id()}; }
+    void bind_maps(const ocean::ShaderProgram& program) const { maps().bind(program); }
     // This frame's maps as the FFTW backend left them on the CPU (level 0 and mipmaps, layer
     // major), when this frame's came from it; nullptr after a GPU transform (step07 then reads
     // the textures back).

@@ -85,7 +85,7 @@ inline std::array<step05::SpectrumParams, kCascades> cascade_spectra(const step0
 constexpr double kOriginStep = 4096;
 inline glm::dvec2 world_origin_near(glm::dvec2 eye_xz) { return glm::round(eye_xz / kOriginStep) * kOriginStep; }
 
-// What every pass that reads the summed surface (the renderer, foam.comp, --export) needs of the
+// What every pass that reads the summed surface (the renderer, foam.frag, --export) needs of the
 // cascades besides their maps: each tile's side, which cascades are drawn, and where the world's
 // origin is (cascades.glsl).
 struct CascadeView {

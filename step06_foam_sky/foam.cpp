@@ -2,6 +2,7 @@
 
 #include "step05_fft/box_mipmaps.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
+#include "step06_foam_sky/texture_units.h"
 
 #include "common/error.hpp"
 
@@ -38,29 +39,42 @@ std::array<double, kFoamLevels> foam_level_weights(glm::dvec2 p, const std::arra
 }
 
 void FoamSimulation::resize(int n) {
-    if (n == n_ && texture_) return;
+    if (n == n_ && textures_[0]) return;
+    n_ = 0;  // until both textures are made
+    for (std::size_t t = 0; t < 2; ++t) {
+        // R: the active foam a (stage A); G: the foam as a whole f (the residual, stage B, is f - a),
+        // read with it in one fetch. Trilinear and repeating: the toroidal addressing.
+        textures_[t] = ocean::make_map_texture_2d_array(GL_RG32F, n, kFoamLevels, step05::mip_levels(n));
+        for (int level = 0; level < kFoamLevels; ++level) {
+            level_targets_[t][std::size_t(level)] = ocean::make_framebuffer();
+            if (!ocean::attach_texture_layer(level_targets_[t][std::size_t(level)], GL_COLOR_ATTACHMENT0, textures_[t],
+                                             0, level))
+                throw ocean::Error("this GL cannot render into 32-bit float textures (the foam's)");
+        }
+    }
+    no_vertices_ = ocean::make_vertex_array();
     n_ = n;
-    texture_ = ocean::make_texture(GL_TEXTURE_2D_ARRAY);
-    // R: the active foam a (stage A); G: the foam as a whole f (the residual, stage B, is f - a),
-    // read with it in one fetch.
-    glTextureStorage3D(texture_.id(), step05::mip_levels(n), GL_RG32F, n, n, kFoamLevels);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);  // the toroidal addressing
-    glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
     fill(0);
     warm_start_ = true;
 }
 
 void FoamSimulation::fill(float value) {
-    const float both[2] = {value, value};  // the active foam and the foam as a whole
-    glClearTexImage(texture_.id(), 0, GL_RG, GL_FLOAT, both);
+    const float both[4] = {value, value, 0, 0};  // the active foam and the foam as a whole
+    for (const auto& targets : level_targets_)
+        for (const ocean::Framebuffer& target : targets) {
+            const ocean::detail::BindForEdit edit(GL_DRAW_FRAMEBUFFER, target.id());
+            glClearBufferfv(GL_COLOR, 0, both);
+        }
     warm_start_ = false;
 }
 
-void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
+void FoamSimulation::update(const step05::SimulationMaps& maps, const CascadeView& cascades, glm::dvec2 eye_xz,
                             glm::dvec2 forward_xz, double dt, const FoamSettings& s) {
-    ocean::ShaderProgram* p = programs_("foam.comp", {"step06_foam_sky/shaders/foam.comp"}, {});
-    if (p == nullptr) throw ocean::Error("foam.comp does not build");
+    ocean::ShaderProgram* p =
+        programs_("foam.frag", {"common/shaders/fullscreen.vert", "step06_foam_sky/shaders/foam.frag"}, {});
+    if (p == nullptr) throw ocean::Error("foam.frag does not build");
+    const ocean::OffscreenPassState keep(no_vertices_.id());  // what was bound, put back at the end
+    glUseProgram(p->id());
     const bool first = std::exchange(warm_start_, false);
     const bool placed = windows_[0].n == n_;  // false before the first update: nothing to move from
     origin_ = cascades.origin;
@@ -84,29 +98,27 @@ void FoamSimulation::update(const step05::OceanSimulation& ocean, const CascadeV
     p->set("u_residual_decay", float(s.residual_decay));
     p->set("u_n", n_);
     p->set("u_warm_start", int(first));
-    ocean.bind_maps(*p);
-    glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RG32F);
-    glUseProgram(p->id());
-    const GLuint groups = GLuint((n_ + 7) / 8);
-    glDispatchCompute(groups, groups, GLuint(kFoamLevels));
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    maps.bind(*p);
+    // Read last frame's foam, write each level of the other texture, then swap.
+    const std::size_t next = 1 - current_;
+    p->set("u_foam_before", UNIT_FOAM);
+    ocean::bind_texture(UNIT_FOAM, GL_TEXTURE_2D_ARRAY, textures_[current_].id());
+    glViewport(0, 0, n_, n_);
+    for (int level = 0; level < kFoamLevels; ++level) {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, level_targets_[next][std::size_t(level)].id());
+        p->set("u_level", level);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    ocean::bind_texture(UNIT_FOAM, GL_TEXTURE_2D_ARRAY, 0);  // unbound: the next update writes it
+    current_ = next;
     // Distant foam averages instead of sparkling.
-    step05::make_box_mipmaps(programs_, texture_.id());
+    step05::make_mipmaps(programs_, textures_[current_], GL_TEXTURE_2D_ARRAY);
 }
 
 FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::move(programs)) {
     const FoamPatternSettings settings;
     const std::vector<std::uint8_t> texels = foam_pattern_texture(settings);  // r p, g noise, b p^2, a noise
-    pattern_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(pattern_.id(), step05::mip_levels(settings.size), GL_RGBA8, settings.size, settings.size);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(pattern_.id(), 0, 0, 0, settings.size, settings.size, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glGenerateTextureMipmap(pattern_.id());
-    glTextureParameteri(pattern_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTextureParameteri(pattern_.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-    glTextureParameteri(pattern_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(pattern_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    pattern_ = ocean::make_tiling_colour_texture_2d(settings.size, settings.size, texels.data());
 }
 
 void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit) const {
@@ -123,7 +135,7 @@ void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit)
     program.set("u_break_across", across / float(kBreakWidth));
     program.set("u_streak_meander", float(kStreakMeander));
     program.set("u_streak_share", float(streak_share_));
-    glBindTextureUnit(GLuint(unit), pattern_.id());
+    ocean::bind_texture(GLuint(unit), GL_TEXTURE_2D, pattern_.id());
 }
 
 void FoamSimulation::set_wind(glm::dvec2 heading, double speed) {
@@ -141,19 +153,19 @@ void FoamSimulation::bind(const ocean::ShaderProgram& program, int unit) const {
     program.set("u_foam", unit);
     program.set("u_foam_centre", centres);
     program.set("u_foam_extent", extents);
-    glBindTextureUnit(GLuint(unit), texture_.id());
+    ocean::bind_texture(GLuint(unit), GL_TEXTURE_2D_ARRAY, texture());
 }
 
-std::vector<float> FoamSimulation::read_channel(int level, GLenum channel) const {
+std::vector<float> FoamSimulation::read_channel(int level, int channel) const {
+    const std::vector<float> texels = ocean::read_texture_layer(texture(), 0, level, n_);  // RGBA
     std::vector<float> stored(std::size_t(n_) * n_);
-    glGetTextureSubImage(texture_.id(), 0, 0, 0, level, n_, n_, 1, channel, GL_FLOAT,
-                         GLsizei(stored.size() * sizeof(float)), stored.data());
+    for (std::size_t i = 0; i < stored.size(); ++i) stored[i] = texels[4 * i + std::size_t(channel)];
     return in_world_order(stored, level);
 }
 
-std::vector<float> FoamSimulation::read_whole(int level) const { return read_channel(level, GL_GREEN); }
+std::vector<float> FoamSimulation::read_whole(int level) const { return read_channel(level, 1); }
 
-std::vector<float> FoamSimulation::read_level(int level) const { return read_channel(level, GL_RED); }
+std::vector<float> FoamSimulation::read_level(int level) const { return read_channel(level, 0); }
 
 std::vector<float> FoamSimulation::in_world_order(const std::vector<float>& stored, int level) const {
     std::vector<float> world(stored.size());

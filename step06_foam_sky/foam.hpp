@@ -15,7 +15,7 @@
 // the same q, the slower decay stays above). When a crest stops breaking its active foam is gone
 // in a second or two, and the residual it leaves peaks, then fades as e^{-r_b t}.
 // Each frame integrates both exactly over dt, with J held through the frame (the same step at two
-// rates): the same foam at any frame rate. foam.comp does the same on the GPU, through
+// rates): the same foam at any frame rate. foam.frag does the same on the GPU, through
 // foam_step.glsl:
 //     a <- a e^{-r_a dt} + q (1 - e^{-r_a dt}) / r_a      (q dt when r_a = 0), at most 1.
 //
@@ -28,7 +28,8 @@
 #pragma once
 
 #include "common/gl.hpp"
-#include "step05_fft/ocean_simulation.hpp"
+#include "common/gl_texture.hpp"
+#include "step05_fft/simulation_maps.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/texel_window.hpp"
 
@@ -100,7 +101,7 @@ glm::dvec2 foam_window_centre(int level, glm::dvec2 eye_xz, glm::dvec2 forward_x
 std::array<double, kFoamLevels> foam_level_weights(glm::dvec2 p, const std::array<FoamWindow, kFoamLevels>& windows);
 
 // The GPU side: one rg32f layer per clipmap level (active foam a, foam as a whole f), updated by
-// foam.comp from the summed surface.
+// foam.frag from the summed surface.
 class FoamSimulation {
 public:
     // Makes the bubble pattern texture (foam_pattern.hpp) once.
@@ -110,8 +111,11 @@ public:
     // steady state (foam_steady_state).
     void resize(int n);
     void fill(float value);  // every texel (tests)
-    // One step of dt seconds around the camera (eye and view direction projected on x, z).
-    void update(const step05::OceanSimulation& ocean, const CascadeView& cascades, glm::dvec2 eye_xz,
+    // One step of dt seconds around the camera (eye and view direction projected on x, z), from the
+    // simulation's maps (OceanSimulation::maps or FragmentSimulation::maps): foam.frag drawn into
+    // each level's layer of the texture it did not write last time, reading the other. The draw
+    // framebuffer, viewport, blending and program in use are put back.
+    void update(const step05::SimulationMaps& maps, const CascadeView& cascades, glm::dvec2 eye_xz,
                 glm::dvec2 forward_xz, double dt, const FoamSettings& settings);
     // The windows and the texture, for the renderer (foam_map.glsl's uniforms) and --export.
     void bind(const ocean::ShaderProgram& program, int unit) const;
@@ -129,7 +133,7 @@ public:
     static constexpr float kPatternSize = 9.0f;  // metres: about ten 1 m bubble cells a side
     const FoamWindow& window(int level) const { return windows_[std::size_t(level)]; }
     const std::array<FoamWindow, kFoamLevels>& windows() const { return windows_; }
-    GLuint texture() const { return texture_.id(); }
+    GLuint texture() const { return textures_[current_].id(); }  // the foam the last update made
     int resolution() const { return n_; }
     // Level `level` in the world's order: row j is z cell origin.z + j, column i x cell origin.x + i.
     std::vector<float> read_level(int level) const;
@@ -139,11 +143,15 @@ public:
 private:
     // A level's texels (toroidal) in the world's order.
     std::vector<float> in_world_order(const std::vector<float>& stored, int level) const;
-    // One channel (GL_RED the active foam, GL_GREEN the foam as a whole) of a level, in the world's order.
-    std::vector<float> read_channel(int level, GLenum channel) const;
+    // One channel (0 the active foam, 1 the foam as a whole) of a level, in the world's order.
+    std::vector<float> read_channel(int level, int channel) const;
 
     ocean::ProgramFactory programs_;
-    ocean::Texture texture_;
+    // The foam, twice: each update reads textures_[current_] and writes the other, then swaps.
+    std::array<ocean::Texture, 2> textures_;
+    std::array<std::array<ocean::Framebuffer, kFoamLevels>, 2> level_targets_;  // each level's layer
+    std::size_t current_ = 0;
+    ocean::VertexArray no_vertices_;  // the full-screen triangle's corners come from gl_VertexID
     ocean::Texture pattern_;
     int n_ = 0;
     bool warm_start_ = true;

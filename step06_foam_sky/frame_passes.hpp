@@ -18,7 +18,7 @@ using step05::FramePass;
 constexpr std::array<FramePass, 8> kFramePasses{{
     {"simulation", "step05's evolve.comp, fft.comp x 2, assemble.comp, box_mip.comp", "h0, omega (SSBOs, once)",
      "displacement (4 layers);slopes (4 layers)"},
-    {"foam", "foam.comp (foam_step.glsl): 3 clipmap levels; box_mip.comp", "displacement (4 layers);slopes (4 layers);foam (rg32f, 3 levels)",
+    {"foam", "foam.frag (foam_step.glsl): 3 clipmap levels, ping-pong; box_mip.comp", "displacement (4 layers);slopes (4 layers);foam (rg32f, 3 levels)",
      "foam (rg32f, 3 levels)"},
     {"sky", "sky_cube.frag (6 faces) or sky_equirect.frag; box_mip.comp; sky_horizon.frag", "",
      "sky (cubemap);horizon (256 x 1)"},

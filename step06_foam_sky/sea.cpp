@@ -86,7 +86,7 @@ void Sea::simulate(double time, glm::dvec3 eye) {
 }
 
 void Sea::update_foam(double dt, glm::dvec3 eye, glm::vec3 forward) {
-    foam_->update(*simulation_, cascade_view_, {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
+    foam_->update(simulation_->maps(), cascade_view_, {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_);
 }
 
 void Sea::bind_maps(const ocean::ShaderProgram& p) const {

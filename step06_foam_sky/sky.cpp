@@ -106,7 +106,7 @@ void Sky::render(const SkySettings& s) {
         p->set("u_sun_disc_gain", s.sun_disc_gain);
     }
     draw_faces(*p);
-    make_mipmaps();
+    step05::make_mipmaps(programs_, cubemap_, GL_TEXTURE_CUBE_MAP);  // rough reflections read the blurrier levels
     tabulate_horizon();
     image_rendered_ = bool(equirect_);
 }
@@ -119,17 +119,6 @@ void Sky::draw_faces(const ocean::ShaderProgram& program) {
         program.set("u_face", face);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-}
-
-// Rough reflections read the blurrier levels. Where there are compute shaders, step05's box
-// filter makes them (the same 2 x 2 means on every GPU); elsewhere glGenerateMipmap, whose box
-// filter the specification recommends.
-void Sky::make_mipmaps() {
-#ifdef OCEAN_GL_PORTABLE
-    ocean::generate_mipmaps_cube(cubemap_);
-#else
-    step05::make_box_mipmaps(programs_, cubemap_.id());
-#endif
 }
 
 void Sky::bind() const {

@@ -60,7 +60,6 @@ public:
 
 private:
     void draw_faces(const ocean::ShaderProgram& program);  // program drawn into each face, level 0
-    void make_mipmaps();      // the cube's blurrier levels, for rough reflections
     void tabulate_horizon();  // sky_horizon.frag, from the cube just made
 
     ocean::ProgramFactory programs_;

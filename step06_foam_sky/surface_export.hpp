@@ -1,5 +1,5 @@
 // step06's --export: the rendered sea, not one cascade. The sum of the four cascades (as
-// foam.comp sees it) and the foam, on the texel centres of one foam level's window around the
+// foam.frag sees it) and the foam, on the texel centres of one foam level's window around the
 // camera: height.pfm, jacobian.pfm and foam.pfm lie on the same grid, so a test from outside can
 // ask whether the foam sits on the crests and where the crests go.
 #pragma once

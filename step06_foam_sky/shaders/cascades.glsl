@@ -44,7 +44,7 @@ vec4 displacement_at(vec2 p, float footprint) {
 // under two footprints (its mipmapped mean is zero), as the fragment shader does. A whole level,
 // not a blend of the two around the footprint: its box is within a factor of 1.4 of the
 // footprint either way, and a fetch that lands on a whole level reads one level where a blend
-// reads two (a quarter of foam.comp's time on llvmpipe, docs/performance.md). Every texel of a
+// reads two (a quarter of foam.frag's time on llvmpipe, docs/performance.md). Every texel of a
 // foam level has the same footprint, so the level is the same all over it: no seam.
 void surface_at(vec2 p, float footprint, out vec4 displacement, out vec4 slopes) {
     displacement = vec4(0.0);

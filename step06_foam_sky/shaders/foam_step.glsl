@@ -2,7 +2,7 @@
 // f obeys df/dt = q - r f: it is made at the rate q = injection * max(0, threshold - J) where the
 // surface squeezes, and fades at the rate r. Held through the frame, q and r give the exact step
 //     f(t + dt) = f e^{-r dt} + q (1 - e^{-r dt}) / r
-// so the foam is the same at any frame rate. foam.comp takes it at two rates: the active foam's
+// so the foam is the same at any frame rate. foam.frag takes it at two rates: the active foam's
 // and the foam's as a whole.
 #include "exp_mean.glsl"
 

@@ -7,6 +7,7 @@
 // the bloom chain and the tonemap pass.
 #include "common/frustum.hpp"
 #include "common/image.hpp"
+#include "step05_fft/ocean_simulation.hpp"
 #include "step06_foam_sky/bloom.hpp"
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
@@ -81,7 +82,7 @@ TEST_F(Step06Gpu, FoamImpulseDecaysAsExpOfRateTimesTimeAtAnyFrameRate) {
         foam.resize(64);
         foam.fill(1.0f);
         for (int i = 0; i < int(std::lround(1 / dt)); ++i)
-            foam.update(*ocean, all_cascades(), {0, 0}, {1, 0}, dt, settings);
+            foam.update(ocean->maps(), all_cascades(), {0, 0}, {1, 0}, dt, settings);
         const auto values = foam.read_level(2);
         const double expected = std::exp(-1.3);
         for (float v : values) ASSERT_NEAR(v / expected, 1.0, 0.01) << "dt = " << dt;
@@ -152,7 +153,7 @@ TEST_F(Step06Gpu, FoamComesFromTheJacobianOfTheSummedCascades) {
     settings.injection = 3;
     settings.threshold = 0.9;  // foam on more texels than the default 0.7 gives two cascades
     const glm::dvec2 eye(37.0, -12.0);
-    foam.update(*sea.gpu, view, eye, {0, 1}, 0.0, settings);
+    foam.update(sea.gpu->maps(), view, eye, {0, 1}, 0.0, settings);
     const auto values = foam.read_level(0);
     const step06::FoamWindow& window = foam.window(0);
     double worst = 0, foamy = 0, weight_gap = 0;
@@ -213,7 +214,7 @@ struct MipField {
 
 TEST_F(Step06Gpu, FoamReadsEachCascadeAtTheWholeMipLevelNearestItsTexel) {
     // Clipmap level 1 at N = 64 has 4 m texels, but every level reads the cascades with the finest
-    // level's footprint (1 m at N = 64: foam.comp says why), at its texel's centre. Cascade 0
+    // level's footprint (1 m at N = 64: foam.frag says why), at its texel's centre. Cascade 0
     // (7.8 m texels) is magnified; the others are minified, each between two mip levels: 1 m over
     // 2.1 m, 0.64 m and 0.18 m. surface_at reads the nearest whole level of each; the reference
     // box-filters the FFTW maps to those levels and samples them as GL does. A blend of the two
@@ -226,7 +227,7 @@ TEST_F(Step06Gpu, FoamReadsEachCascadeAtTheWholeMipLevelNearestItsTexel) {
     step06::FoamSettings settings;
     settings.injection = 3;
     settings.threshold = 1.0;  // foam wherever J < 1: many texels to compare
-    foam.update(*sea.gpu, all_cascades(), {37.0, -12.0}, {0, 1}, 0.0, settings);
+    foam.update(sea.gpu->maps(), all_cascades(), {37.0, -12.0}, {0, 1}, 0.0, settings);
     const auto values = foam.read_level(1);
     const step06::FoamWindow& window = foam.window(1);
     ASSERT_NEAR(window.texel_size, 4.0, 1e-12);
@@ -311,7 +312,7 @@ TEST_F(Step06Gpu, TheSameFoamAtSixAndSixtyFramesASecond) {
         foam.resize(64);
         foam.fill(0.0f);
         for (int frame = 0; frame < fps; ++frame)
-            foam.update(*sea.gpu, all_cascades(), {37.0, -12.0}, {0, 1}, 1.0 / fps, settings);
+            foam.update(sea.gpu->maps(), all_cascades(), {37.0, -12.0}, {0, 1}, 1.0 / fps, settings);
         return std::pair{foam.read_level(0), foam.read_whole(0)};
     };
     const auto at6 = grown(6), at60 = grown(60);
@@ -345,7 +346,7 @@ TwoClocksCpu step_both(TwoClocksCpu x, double jacobian, double dt, const step06:
     return {step06::foam_step(x.active, jacobian, dt, s), step06::whole_foam_step(x.whole, jacobian, dt, s)};
 }
 
-// foam.comp's two clocks against foam.hpp's, on a sea where every term is known: the calm sea
+// foam.frag's two clocks against foam.hpp's, on a sea where every term is known: the calm sea
 // (J = 1 at every texel), each clipmap level filled with its own (a, f), then 4 frames of 0.25 s.
 // A threshold above 1 makes q constant: J = 1 against thresholds of 0.72 (no injection: both only
 // decay), 1.25 (q = 4 > r_a: a and f reach 1 in the first frame and are held there) and 1.0625
@@ -376,7 +377,7 @@ TEST_F(Step06Gpu, BothClocksAreTheCpuStepsOnACalmSea) {
             glClearTexSubImage(foam.texture(), 0, 0, 0, level, n, n, 1, GL_RG, GL_FLOAT, &starts[std::size_t(level)]);
         double worst = 0;
         for (int frame = 1; frame <= 4; ++frame) {
-            foam.update(*ocean, all_cascades(), {0, 0}, {1, 0}, 0.25, settings);
+            foam.update(ocean->maps(), all_cascades(), {0, 0}, {1, 0}, 0.25, settings);
             for (int level = 0; level < step06::kFoamLevels; ++level) {
                 TwoClocksCpu expected{starts[std::size_t(level)].x, starts[std::size_t(level)].y};
                 for (int k = 0; k < frame; ++k) expected = step_both(expected, 1.0, 0.25, settings);
@@ -416,7 +417,7 @@ TEST_F(Step06Gpu, BothClocksFollowTheCpuOnAMovingSea) {
     step06::FoamSimulation foam(factory());
     foam.resize(64);
     const glm::dvec2 eye(37.0, -12.0);
-    foam.update(*sea.gpu, view, eye, {0, 1}, 0.0, settings);  // the warm start
+    foam.update(sea.gpu->maps(), view, eye, {0, 1}, 0.0, settings);  // the warm start
     const step06::FoamWindow window = foam.window(0);
     // Each texel's J from the CPU maps at time t, with the filter's weights exact or truncated to 8 bits.
     const auto jacobians = [&](double t, int weight_bits) {
@@ -452,7 +453,7 @@ TEST_F(Step06Gpu, BothClocksFollowTheCpuOnAMovingSea) {
     };
     for (int frame = 1; frame <= 4; ++frame) {
         sea.gpu->simulate(7.0 + 0.25 * frame, step05::Backend::GpuFft, choppiness);
-        foam.update(*sea.gpu, view, eye, {0, 1}, 0.25, settings);
+        foam.update(sea.gpu->maps(), view, eye, {0, 1}, 0.25, settings);
     }
     ASSERT_EQ(foam.window(0).origin, window.origin) << "the window must not move";
     const auto active = foam.read_level(0), whole = foam.read_whole(0);
@@ -643,12 +644,12 @@ TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {
     foam.resize(64);
     step06::FoamSettings settings;
     settings.injection = 3;
-    foam.update(*sea.gpu, all_cascades(), {0, 0}, {1, 0}, 0.0, settings);  // level 0: 1 m texels
+    foam.update(sea.gpu->maps(), all_cascades(), {0, 0}, {1, 0}, 0.0, settings);  // level 0: 1 m texels
     const auto before = foam.read_level(0);
     const glm::ivec2 origin_before = foam.window(0).origin;
     // Change the sea under the foam (another time), so that a kept cell and a restarted one differ.
     sea.gpu->simulate(5.5, step05::Backend::GpuFft, 1.6f);
-    foam.update(*sea.gpu, all_cascades(), {13.0, -7.0}, {1, 0}, 0.0, settings);
+    foam.update(sea.gpu->maps(), all_cascades(), {13.0, -7.0}, {1, 0}, 0.0, settings);
     const auto after = foam.read_level(0);
     const glm::ivec2 shift = foam.window(0).origin - origin_before;
     ASSERT_EQ(shift, glm::ivec2(13, -7));
@@ -677,7 +678,7 @@ TEST_F(Step06Gpu, FoamAtBlendsTheClipmapLevelsAsTheirWeightsSay) {
     step06::FoamSimulation foam(factory());
     const int n = 64;
     foam.resize(n);
-    foam.update(*sea.gpu, all_cascades(), {0, 0}, {1, 0}, 0.0, step06::FoamSettings{});  // places the windows
+    foam.update(sea.gpu->maps(), all_cascades(), {0, 0}, {1, 0}, 0.0, step06::FoamSettings{});  // places the windows
     const std::array<glm::vec2, step06::kFoamLevels> constants{glm::vec2(1, 8), glm::vec2(2, 16), glm::vec2(4, 32)};
     for (int level = 0; level < step06::kFoamLevels; ++level)
         for (int mip = 0; (n >> mip) >= 1; ++mip)

@@ -231,7 +231,7 @@ struct TwoClocks {
     double active, whole;
     double residual() const { return step06::residual_foam(active, whole); }
 };
-// One frame of both, as foam.comp does it: the same step at the two rates.
+// One frame of both, as foam.frag does it: the same step at the two rates.
 TwoClocks step_both(TwoClocks x, double jacobian, double dt, const step06::FoamSettings& s) {
     return {step06::foam_step(x.active, jacobian, dt, s), step06::whole_foam_step(x.whole, jacobian, dt, s)};
 }

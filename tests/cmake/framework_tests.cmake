@@ -25,11 +25,12 @@ gtest_discover_tests(unit_tests TEST_PREFIX "unit." PROPERTIES LABELS unit DISCO
                      ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1")
 
 # The fragment passes that stand in for compute shaders, in the build's GL profile: float textures
-# (common/gl_texture.hpp), step05's fragment FFT and simulation, and step06's sky, whose sources it
+# (common/gl_texture.hpp), step05's fragment FFT and simulation, and step06's sky and foam, whose sources it
 # compiles (they need nothing else of their chapters, which the portable builds may leave out).
 add_executable(portable_gpu_tests "${_tests}/gpu/gpu_main.cpp" "${_tests}/gpu/portable_gpu.cpp"
                "${PROJECT_SOURCE_DIR}/step05_fft/fragment_fft.cpp" "${PROJECT_SOURCE_DIR}/step05_fft/fragment_simulation.cpp"
-               "${PROJECT_SOURCE_DIR}/step06_foam_sky/sky.cpp")
+               "${PROJECT_SOURCE_DIR}/step06_foam_sky/sky.cpp" "${PROJECT_SOURCE_DIR}/step06_foam_sky/foam.cpp"
+               "${PROJECT_SOURCE_DIR}/step06_foam_sky/foam_pattern.cpp")
 if(NOT OCEAN_GL_PORTABLE)
   target_sources(portable_gpu_tests PRIVATE "${PROJECT_SOURCE_DIR}/step05_fft/box_mipmaps.cpp")  # the sky's mipmaps in 4.5
 endif()

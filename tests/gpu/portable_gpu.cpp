@@ -2,10 +2,12 @@
 // every build (tests/cmake/framework_tests.cmake): float textures rendered into and read back
 // (common/gl_texture.hpp, in the build's form), step05's fragment FFT against a direct DFT in
 // double, which needs nothing but the definition, step05's whole fragment simulation against
-// the maps written from their definitions, and step06's sky, drawn face by face.
+// the maps written from their definitions, and step06's sky, drawn face by face, and foam, a
+// ping-pong of two textures.
 #include "common/gl_texture.hpp"
 #include "step05_fft/fragment_fft.hpp"
 #include "step05_fft/fragment_simulation.hpp"
+#include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
@@ -251,6 +253,44 @@ TEST_F(PortableGpu, TheSkyIsDrawnFaceByFaceWithTheSunWhereItIs) {
     std::printf("sky: brightest texel %.3f rad from the sun; the fog's table peaks %.3f rad from its azimuth\n",
                 double(std::acos(std::min(1.0f, glm::dot(brightest_direction, settings.to_sun)))),
                 std::acos(std::min(1.0, glm::dot(peak_direction, sun_azimuth))));
+}
+
+// step06's foam in the build's profile (foam.frag drawn into each level's layer of one texture
+// while it reads the other) against the closed form of its equation df/dt = q - r f on a calm sea
+// (J = 1: nothing made, q = 0): foam at 1 decays as e^{-r t}, whatever the frame rate. The maps
+// come from the fragment simulation of four flat cascades.
+TEST_F(PortableGpu, FoamDecaysAsExpOfRateTimesTimeAtAnyFrameRate) {
+    const int n = 32;
+    std::vector<step05::InitialSpectrum> calm(4);
+    std::vector<const step05::InitialSpectrum*> cascades;
+    step06::CascadeView view;
+    for (std::size_t c = 0; c < calm.size(); ++c) {
+        calm[c].n = n;
+        calm[c].patch_size = 500.0 / std::pow(5.0, double(c));
+        calm[c].h0.assign(std::size_t(n) * n, 0.0);
+        calm[c].omega.assign(std::size_t(n) * n, 0.0);
+        view.patch_sizes[c] = float(calm[c].patch_size);
+        cascades.push_back(&calm[c]);
+    }
+    step05::FragmentSimulation sea(factory());
+    sea.set_spectra(cascades);
+    sea.simulate(0, 1.0f);
+    step06::FoamSettings settings;
+    settings.decay_rate = 1.3;
+    for (int frames_a_second : {10, 40}) {
+        step06::FoamSimulation foam(factory());
+        foam.resize(n);
+        foam.fill(1.0f);
+        for (int i = 0; i < frames_a_second; ++i)
+            foam.update(sea.maps(), view, {0, 0}, {1, 0}, 1.0 / frames_a_second, settings);
+        ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        const double expected = std::exp(-1.3);
+        for (int level = 0; level < step06::kFoamLevels; ++level)
+            for (float v : foam.read_level(level))
+                ASSERT_NEAR(v / expected, 1.0, 0.01) << frames_a_second << " frames a second, level " << level;
+        std::printf("foam after 1 s at %d frames a second: %.6f, exp(-1.3) = %.6f\n", frames_a_second,
+                    double(foam.read_level(0)[0]), expected);
+    }
 }
 
 }  // namespace

@@ -3,14 +3,18 @@
 // the summed surface (all cascades, as rendered) at the texel's rest position; foam is made where
 // J falls below the threshold, and remembered by two clocks: the active foam (first channel) fades
 // fast, the foam as a whole (second channel) slowly; the residual foam is their difference. Both
-// integrated exactly over the frame (foam_step.glsl).
-layout(local_size_x = 8, local_size_y = 8) in;
+// integrated exactly over the frame (foam_step.glsl). A fragment pass, drawn once a level into that
+// level's layer of one texture while it reads last frame's foam from the other (a ping-pong: a
+// texture is never read and written by one draw), so it runs where there are no compute shaders.
 #include "cascades.glsl"
 // FOAM_LEVELS and the clipmap's layout:
 #include "foam_map.glsl"
 #include "foam_step.glsl"
 
-layout(rg32f, binding = 0) uniform image2DArray u_foam_image;  // (active foam, foam as a whole), a layer per level
+uniform sampler2DArray u_foam_before;  // last frame's (active foam, foam as a whole), a layer per level
+uniform int u_level;                   // the level (layer) this draw writes
+
+layout(location = 0) out vec4 foam_out;  // (active foam, foam as a whole) into the level's layer
 
 uniform int u_n;                                // texels per side of a level (a power of two)
 uniform ivec2 u_origin[FOAM_LEVELS];            // the window's first cell, in texels of its level, from the world origin
@@ -24,12 +28,11 @@ uniform float u_residual_decay;  // r_b: the foam's as a whole
 uniform bool u_warm_start;  // a new foam texture: start from the steady state of this J
 
 void main() {
-    ivec3 id = ivec3(gl_GlobalInvocationID);
-    if (id.x >= u_n || id.y >= u_n || id.z >= FOAM_LEVELS) return;
-    int level = id.z;
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    int level = u_level;
     // The world cell this texel holds: the one in [origin, origin + n) congruent to it mod n.
     ivec2 origin = u_origin[level];
-    ivec2 cell = origin + ((id.xy - origin) & (u_n - 1));
+    ivec2 cell = origin + ((texel - origin) & (u_n - 1));
     vec2 p = (vec2(cell) + 0.5) * u_texel_size[level];
 
     // Every level reads the surface as finely as the finest level does, at its texel's centre: the
@@ -52,8 +55,8 @@ void main() {
     if (fresh) {
         foam = clamp(injection_rate / max(rates, vec2(0.1)), 0.0, 1.0);
     } else {
-        vec2 before = imageLoad(u_foam_image, id).rg;
+        vec2 before = texelFetch(u_foam_before, ivec3(texel, level), 0).rg;
         foam = vec2(foam_step(before.x, injection_rate, rates.x, u_dt), foam_step(before.y, injection_rate, rates.y, u_dt));
     }
-    imageStore(u_foam_image, id, vec4(foam, 0.0, 0.0));
+    foam_out = vec4(foam, 0.0, 0.0);
 }
