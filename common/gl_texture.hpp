@@ -7,6 +7,7 @@
 #include "common/gl.hpp"
 
 #include <algorithm>
+#include <array>
 #include <string_view>
 #include <vector>
 
@@ -110,25 +111,36 @@ inline bool attach_texture_2d(const Framebuffer& framebuffer, GLenum attachment,
 
 // What a pass that draws into textures changes, kept while it lives and put back after: the draw
 // framebuffer, the program in use, the vertex array (it binds `vertex_array`: an empty one, for
-// full-screen triangles whose corners come from gl_VertexID), the viewport and blending (off).
+// full-screen triangles whose corners come from gl_VertexID), the viewport, and the tests that
+// would keep a fragment from its texel (blending, the depth and scissor tests, face culling: all
+// off while it lives) and the colour mask (all channels written).
 class OffscreenPassState {
 public:
     explicit OffscreenPassState(GLuint vertex_array)
         : framebuffer_(GL_DRAW_FRAMEBUFFER, 0), program_(GL_CURRENT_PROGRAM, 0),
-          vertex_array_(GL_VERTEX_ARRAY_BINDING, vertex_array), blending_(glIsEnabled(GL_BLEND)) {
+          vertex_array_(GL_VERTEX_ARRAY_BINDING, vertex_array) {
         glGetIntegerv(GL_VIEWPORT, viewport_);
-        glDisable(GL_BLEND);
+        glGetBooleanv(GL_COLOR_WRITEMASK, colour_mask_);
+        for (std::size_t i = 0; i < kTests.size(); ++i) {
+            enabled_[i] = glIsEnabled(kTests[i]);
+            glDisable(kTests[i]);
+        }
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
     ~OffscreenPassState() {
         glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-        if (blending_) glEnable(GL_BLEND);
+        for (std::size_t i = 0; i < kTests.size(); ++i)
+            if (enabled_[i]) glEnable(kTests[i]);
+        glColorMask(colour_mask_[0], colour_mask_[1], colour_mask_[2], colour_mask_[3]);
     }
     OffscreenPassState(const OffscreenPassState&) = delete;
     OffscreenPassState& operator=(const OffscreenPassState&) = delete;
 
 private:
+    static constexpr std::array<GLenum, 4> kTests{GL_BLEND, GL_DEPTH_TEST, GL_SCISSOR_TEST, GL_CULL_FACE};
     detail::BindForEdit framebuffer_, program_, vertex_array_;
-    GLboolean blending_;
+    std::array<GLboolean, 4> enabled_{};
+    GLboolean colour_mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
     GLint viewport_[4] = {0, 0, 0, 0};
 };
 

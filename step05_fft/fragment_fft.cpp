@@ -13,7 +13,8 @@ FragmentFft::FragmentFft(ocean::ProgramFactory programs, int n) : programs_(std:
         pair_[t] = ocean::make_float_texture_2d(GL_RGBA32F, n, n);
         framebuffers_[t] = ocean::make_framebuffer();
         if (!ocean::attach_texture_2d(framebuffers_[t], GL_COLOR_ATTACHMENT0, pair_[t]))
-            throw ocean::Error("this GL cannot render into 32-bit float textures (the fragment FFT's)");
+            throw ocean::Error("this GL cannot render into 32-bit float textures, the fragment FFT's"
+                               " (ES needs EXT_color_buffer_float)");
     }
     no_vertices_ = ocean::make_vertex_array();
 }

@@ -28,7 +28,8 @@ void FragmentSimulation::allocate(int n, int cascades) {
     for (int t = 0; t < 2; ++t) {
         spectra_[std::size_t(t)] = ocean::make_float_texture_2d(GL_RGBA32F, n, n);
         if (!ocean::attach_texture_2d(evolve_target_, GL_COLOR_ATTACHMENT0 + GLenum(t), spectra_[std::size_t(t)]))
-            throw ocean::Error("this GL cannot render into 32-bit float textures (the fragment simulation's)");
+            throw ocean::Error("this GL cannot render into 32-bit float textures, the fragment simulation's"
+                               " (ES needs EXT_color_buffer_float)");
         fft_[std::size_t(t)] = std::make_unique<FragmentFft>(programs_, n);
     }
     displacement_ = ocean::make_map_texture_2d_array(GL_RGBA32F, n, cascades, mip_levels(n));

@@ -188,6 +188,43 @@ std::vector<float> read_cube_face(GLuint cubemap, int face, int size) {
     return texels;
 }
 
+// A pass into textures (ocean::OffscreenPassState) must write every texel whatever the caller
+// left on (a scissor box, culling of both faces, a closed colour mask, blending, the depth test)
+// and put all of it back. The inverse FFT of a unit impulse at the origin is 1 everywhere: a texel
+// the caller's state kept from being written shows it.
+TEST_F(PortableGpu, AFragmentPassWritesEveryTexelAndPutsBackTheCallersState) {
+    const int n = 8;
+    step05::FragmentFft fft(factory(), n);
+    std::vector<float> impulse(std::size_t(n) * n * 4, 0.0f);
+    impulse[0] = 1;  // field 0 at (0, 0); field 1 (.ba) stays zero
+    ocean::Texture source = ocean::make_float_texture_2d(GL_RGBA32F, n, n);
+    ocean::upload_float_texture_2d(source, GL_RGBA32F, n, n, impulse.data());
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 1, 1);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT_AND_BACK);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    const ocean::Texture& result = fft.inverse(source);
+    EXPECT_TRUE(glIsEnabled(GL_SCISSOR_TEST) && glIsEnabled(GL_CULL_FACE) && glIsEnabled(GL_BLEND) &&
+                glIsEnabled(GL_DEPTH_TEST));
+    GLboolean mask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+    glGetBooleanv(GL_COLOR_WRITEMASK, mask);
+    EXPECT_FALSE(mask[0] || mask[1] || mask[2] || mask[3]);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    const std::vector<float> texels = read_back(result, n, n);
+    for (std::size_t i = 0; i < texels.size(); i += 4) {
+        ASSERT_NEAR(texels[i], 1.0f, 1e-6f) << "texel " << i / 4;
+        ASSERT_NEAR(texels[i + 1], 0.0f, 1e-6f) << "texel " << i / 4;
+    }
+}
+
 // step06's sky in the build's profile, drawn face by face into its cubemap and tabulated round the
 // horizon by fragment passes, held to what anyone can check by looking: without clouds, the
 // brightest texel of the cube is the sun's (its glow: the disc is not in the cube), the texel
