@@ -125,13 +125,8 @@ public:
     // `target`: a buffer target, GL_RENDERBUFFER, GL_READ_FRAMEBUFFER or GL_DRAW_FRAMEBUFFER; or,
     // for what binds to no target, GL_VERTEX_ARRAY_BINDING (a vertex array) or GL_CURRENT_PROGRAM
     // (the program in use).
-    // Where `id` is bound already (a uniform written to the program in use) nothing is bound,
-    // before or after.
-    BindForEdit(GLenum target, GLuint id) : target_(target), id_(id), before_(bound(binding_of(target))) {
-        if (before_ != id_) bind(target_, id_);
-    }
+    BindForEdit(GLenum target, GLuint id) : target_(target), before_(bound(binding_of(target))) { bind(target_, id); }
     ~BindForEdit() {
-        if (before_ == id_) return;
         // A program deleted while in use (a shader reloaded) lives until another is put in use,
         // as the edit just did: its name is gone then, and there is nothing to put back.
         if (target_ == GL_CURRENT_PROGRAM && before_ != 0 && glIsProgram(before_) == GL_FALSE) return;
@@ -161,7 +156,7 @@ private:
         }
     }
     GLenum target_;
-    GLuint id_, before_;
+    GLuint before_;
 };
 }  // namespace detail
 

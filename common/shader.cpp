@@ -358,10 +358,16 @@ GLint ShaderProgram::location(const std::string& uniform) const {
 // uniform the compiler optimised away) is silently ignored by GL, which is what we want while
 // editing.
 #if defined(OCEAN_GL_ES)
-#define OCEAN_SET_UNIFORM(Form, ...)                          \
-    do {                                                      \
-        detail::BindForEdit use(GL_CURRENT_PROGRAM, id());    \
-        glUniform##Form(__VA_ARGS__);                         \
+// The program is usually in use already (set right after glUseProgram): then it is written
+// straight away, without putting another program in use and back.
+#define OCEAN_SET_UNIFORM(Form, ...)                                  \
+    do {                                                              \
+        if (detail::bound(GL_CURRENT_PROGRAM) == id()) {              \
+            glUniform##Form(__VA_ARGS__);                             \
+        } else {                                                      \
+            detail::BindForEdit use(GL_CURRENT_PROGRAM, id());        \
+            glUniform##Form(__VA_ARGS__);                             \
+        }                                                             \
     } while (false)
 #else
 #define OCEAN_SET_UNIFORM(Form, ...) glProgramUniform##Form(id(), __VA_ARGS__)

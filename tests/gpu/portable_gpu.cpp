@@ -190,7 +190,8 @@ std::vector<float> read_cube_face(GLuint cubemap, int face, int size) {
 
 // A pass into textures (ocean::OffscreenPassState) must write every texel whatever the caller
 // left on (a scissor box, culling of both faces, a closed colour mask, blending, the depth test)
-// and put all of it back. The inverse FFT of a unit impulse at the origin is 1 everywhere: a texel
+// and put all of it back, the bindings too, even where they were 0 (a page draws to framebuffer
+// 0: a pass that left its own bound drew the sea into it). The inverse FFT of a unit impulse at the origin is 1 everywhere: a texel
 // the caller's state kept from being written shows it.
 TEST_F(PortableGpu, AFragmentPassWritesEveryTexelAndPutsBackTheCallersState) {
     const int n = 8;
@@ -206,7 +207,13 @@ TEST_F(PortableGpu, AFragmentPassWritesEveryTexelAndPutsBackTheCallersState) {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
+    const GLuint framebuffer_before = ocean::detail::bound(GL_DRAW_FRAMEBUFFER_BINDING);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glUseProgram(0);
     const ocean::Texture& result = fft.inverse(source);
+    EXPECT_EQ(ocean::detail::bound(GL_DRAW_FRAMEBUFFER_BINDING), 0u);
+    EXPECT_EQ(ocean::detail::bound(GL_CURRENT_PROGRAM), 0u);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_before);
     EXPECT_TRUE(glIsEnabled(GL_SCISSOR_TEST) && glIsEnabled(GL_CULL_FACE) && glIsEnabled(GL_BLEND) &&
                 glIsEnabled(GL_DEPTH_TEST));
     GLboolean mask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
