@@ -9,7 +9,7 @@
 #          --frames runs out.
 #   steer_push  (step07) keys; the panel hidden, a right click on the raft within one frame pushes it
 #          (its "push:" line); then, after auto's backend trial, the up and right arrows held 1 s
-#          (ARROWS_HELD_S: 6 under the sanitizers, whose frames are longer than 1 s) move the boat
+#          (ARROWS_HELD_S: 16 under the sanitizers, whose frames take 4 to 5 s) move the boat
 #          and turn it to its right (measured from its exported trajectory).
 #   drag   (a 3D step) the cursor jumps across the window and the left button goes down within one
 #          frame, then drags 80 px right: the yaw turns by 80 x 0.25 = 20 degrees, not by the jump.
