@@ -29,10 +29,14 @@ foreach(_case IN LISTS _cases ITEMS "step07_buoyancy;steer_push" "step04_fbm;dra
   # between two frames: there they are held 16 s (12 s moved the boat 2.95 to 3.3 m, too near the
   # 2 m the test asks on a slower machine; 6 s, 1.3 m).
   set(_hold 1)
+  set(_frame_wait 10)  # seconds for what was sent within one frame to show (window_input.sh)
+  set(_timeout 120)
   if(OCEAN_SANITIZE)
     set(_hold 16)
+    set(_frame_wait 30)
+    set(_timeout 240)
   endif()
-  set_tests_properties(${_name} PROPERTIES LABELS "windowed;gpu;${_step}" TIMEOUT 120 SKIP_RETURN_CODE 77
+  set_tests_properties(${_name} PROPERTIES LABELS "windowed;gpu;${_step}" TIMEOUT ${_timeout} SKIP_RETURN_CODE 77
                                            RUN_SERIAL TRUE
-                                           ENVIRONMENT "XDG_CONFIG_HOME=${CMAKE_BINARY_DIR}/test-output/config;ARROWS_HELD_S=${_hold}")
+                                           ENVIRONMENT "XDG_CONFIG_HOME=${CMAKE_BINARY_DIR}/test-output/config;ARROWS_HELD_S=${_hold};FRAME_WAIT_S=${_frame_wait}")
 endforeach()
