@@ -188,25 +188,17 @@ inline bool attach_texture_layer(const Framebuffer& framebuffer, GLenum attachme
 #endif
 }
 
-// Levels 1 and below of a 2D array texture from its level 0: what step05's box_mip.comp makes where
-// there are compute shaders. The specification recommends, without requiring, that each texel be
-// the mean of the 2 x 2 it covers; the drivers we know do that for a power-of-two texture (the
-// portable GPU tests check it on the one they run on).
-inline void generate_mipmaps_2d_array(const Texture& texture) {
+// Levels 1 and below of a texture (`target`: GL_TEXTURE_2D_ARRAY, GL_TEXTURE_CUBE_MAP, ...) from
+// its level 0: what step05's box_mip.comp makes where there are compute shaders. The
+// specification recommends, without requiring, that each texel be the mean of the 2 x 2 it covers;
+// the drivers we know do that for a power-of-two texture (the portable GPU tests check it on the
+// one they run on).
+inline void generate_mipmaps(const Texture& texture, GLenum target) {
 #if OCEAN_GL_BIND_TO_EDIT
-    detail::BindTextureForEdit edit(GL_TEXTURE_2D_ARRAY, texture.id());
-    glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+    detail::BindTextureForEdit edit(target, texture.id());
+    glGenerateMipmap(target);
 #else
-    glGenerateTextureMipmap(texture.id());
-#endif
-}
-
-// The same for a cubemap's faces, each from its own level 0.
-inline void generate_mipmaps_cube(const Texture& texture) {
-#if OCEAN_GL_BIND_TO_EDIT
-    detail::BindTextureForEdit edit(GL_TEXTURE_CUBE_MAP, texture.id());
-    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
-#else
+    (void)target;  // a texture made by glCreateTextures knows its target
     glGenerateTextureMipmap(texture.id());
 #endif
 }

@@ -32,8 +32,7 @@ void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint first, GLuin
 inline void make_mipmaps(const ocean::ProgramFactory& programs, const ocean::Texture& texture, GLenum target) {
 #ifdef OCEAN_GL_PORTABLE
     (void)programs;
-    if (target == GL_TEXTURE_CUBE_MAP) ocean::generate_mipmaps_cube(texture);
-    else ocean::generate_mipmaps_2d_array(texture);
+    ocean::generate_mipmaps(texture, target);
 #else
     (void)target;
     make_box_mipmaps(programs, texture.id());

@@ -123,8 +123,8 @@ void FragmentSimulation::simulate(double time, float choppiness) {
         const ocean::Texture& fields_23 = fft_[1]->inverse(spectra_[1]);
         assemble(c, fields_01, fields_23, choppiness);
     }
-    ocean::generate_mipmaps_2d_array(displacement_);
-    ocean::generate_mipmaps_2d_array(slopes_);
+    ocean::generate_mipmaps(displacement_, GL_TEXTURE_2D_ARRAY);
+    ocean::generate_mipmaps(slopes_, GL_TEXTURE_2D_ARRAY);
 }
 
 std::vector<float> FragmentSimulation::read_map(bool slopes, int level) const {
