@@ -231,6 +231,17 @@ inline bool attach_renderbuffer(const Framebuffer& framebuffer, GLenum attachmen
 #endif
 }
 
+// The colour attachments a framebuffer's fragment outputs 0, 1, ... write to (GL_COLOR_ATTACHMENTi
+// for output i: ES asks for exactly that order).
+inline void draw_buffers(const Framebuffer& framebuffer, GLsizei count, const GLenum* buffers) {
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindForEdit edit(GL_DRAW_FRAMEBUFFER, framebuffer.id());
+    glDrawBuffers(count, buffers);
+#else
+    glNamedFramebufferDrawBuffers(framebuffer.id(), count, buffers);
+#endif
+}
+
 // Copies the colour of the rectangle (0, 0)-(width, height) from framebuffer `from` to `to`
 // (names; 0 is the window's), pixel for pixel.
 inline void copy_colour(GLuint from, GLuint to, GLint width, GLint height) {

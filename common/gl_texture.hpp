@@ -34,8 +34,19 @@ private:
     GLuint before_;
 };
 
-// The format and type glTexImage2D is given with each float `format` (GL 4.1 has no glTexStorage).
-inline void float_upload_format(GLenum format, GLenum& upload_format, GLenum& type) {
+// The format and type glTexImage2D is given with each `format` (GL 4.1 has no glTexStorage, and
+// ES 3.0 accepts only these pairs).
+inline void upload_format_of(GLenum format, GLenum& upload_format, GLenum& type) {
+    if (format == GL_RGBA32UI) {
+        upload_format = GL_RGBA_INTEGER;
+        type = GL_UNSIGNED_INT;
+        return;
+    }
+    if (format == GL_DEPTH_COMPONENT32F) {
+        upload_format = GL_DEPTH_COMPONENT;
+        type = GL_FLOAT;
+        return;
+    }
     type = format == GL_RGBA16F || format == GL_RG16F || format == GL_R16F ? GL_HALF_FLOAT : GL_FLOAT;
     upload_format = format == GL_RGBA32F || format == GL_RGBA16F ? GL_RGBA : format == GL_RG32F || format == GL_RG16F ? GL_RG : GL_RED;
 }
@@ -43,13 +54,14 @@ inline void float_upload_format(GLenum format, GLenum& upload_format, GLenum& ty
 
 // A 2D texture of `width` x `height` texels of a float `format` (GL_RGBA32F, GL_RG32F, GL_R32F or
 // their 16-bit forms), one level, read texel by texel (nearest, no mipmaps: complete in every
-// profile), edges clamped.
+// profile), edges clamped. Also for what one pass writes and the next reads texel by texel:
+// GL_RGBA32UI (bits a shader packed) and GL_DEPTH_COMPONENT32F (a depth buffer).
 inline Texture make_float_texture_2d(GLenum format, GLsizei width, GLsizei height) {
     Texture texture = make_texture(GL_TEXTURE_2D);
 #if OCEAN_GL_BIND_TO_EDIT
     detail::BindTextureForEdit edit(GL_TEXTURE_2D, texture.id());
     GLenum upload_format = 0, type = 0;
-    detail::float_upload_format(format, upload_format, type);
+    detail::upload_format_of(format, upload_format, type);
     glTexImage2D(GL_TEXTURE_2D, 0, GLint(format), width, height, 0, upload_format, type, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -71,7 +83,7 @@ inline Texture make_float_texture_2d(GLenum format, GLsizei width, GLsizei heigh
 inline void upload_float_texture_2d(const Texture& texture, GLenum format, GLsizei width, GLsizei height,
                                     const float* data) {
     GLenum upload_format = 0, type = 0;
-    detail::float_upload_format(format, upload_format, type);
+    detail::upload_format_of(format, upload_format, type);
 #if OCEAN_GL_BIND_TO_EDIT
     detail::BindTextureForEdit edit(GL_TEXTURE_2D, texture.id());
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, upload_format, GL_FLOAT, data);
@@ -96,17 +108,21 @@ inline bool float_textures_filterable() {
 #endif
 }
 
-// Attaches level 0 of a 2D texture to a framebuffer at `attachment`; returns whether the
-// framebuffer is complete afterwards (rendering to 32-bit floats needs EXT_color_buffer_float in ES).
-inline bool attach_texture_2d(const Framebuffer& framebuffer, GLenum attachment, const Texture& texture) {
+// Attaches level 0 of a 2D texture (by name: one another part owns, such as a shared depth
+// buffer) to a framebuffer at `attachment`; returns whether the framebuffer is complete afterwards
+// (rendering to 32-bit floats needs EXT_color_buffer_float in ES).
+inline bool attach_texture_2d(const Framebuffer& framebuffer, GLenum attachment, GLuint texture) {
 #if OCEAN_GL_BIND_TO_EDIT
     detail::BindForEdit edit(GL_DRAW_FRAMEBUFFER, framebuffer.id());
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture.id(), 0);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture, 0);
     return glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
 #else
-    glNamedFramebufferTexture(framebuffer.id(), attachment, texture.id(), 0);
+    glNamedFramebufferTexture(framebuffer.id(), attachment, texture, 0);
     return glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
 #endif
+}
+inline bool attach_texture_2d(const Framebuffer& framebuffer, GLenum attachment, const Texture& texture) {
+    return attach_texture_2d(framebuffer, attachment, texture.id());
 }
 
 // What a pass that draws into textures changes, kept while it lives and put back after: the draw
@@ -154,7 +170,7 @@ inline Texture make_map_texture_2d_array(GLenum format, GLsizei size, GLsizei la
 #if OCEAN_GL_BIND_TO_EDIT
     detail::BindTextureForEdit edit(GL_TEXTURE_2D_ARRAY, texture.id());
     GLenum upload_format = 0, type = 0;
-    detail::float_upload_format(format, upload_format, type);
+    detail::upload_format_of(format, upload_format, type);
     for (GLint level = 0; level < levels; ++level) {  // a level at a time: GL 4.1 has no glTexStorage
         const GLsizei side = std::max<GLsizei>(1, size >> level);
         glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GLint(format), side, side, layers, 0, upload_format, type, nullptr);
@@ -233,7 +249,7 @@ inline Texture make_cube_texture(GLenum format, GLsizei size, GLsizei levels) {
 #if OCEAN_GL_BIND_TO_EDIT
     detail::BindTextureForEdit edit(GL_TEXTURE_CUBE_MAP, texture.id());
     GLenum upload_format = 0, type = 0;
-    detail::float_upload_format(format, upload_format, type);
+    detail::upload_format_of(format, upload_format, type);
     for (GLint level = 0; level < levels; ++level)  // a level at a time: GL 4.1 has no glTexStorage
         for (GLenum face = 0; face < 6; ++face) {
             const GLsizei side = std::max<GLsizei>(1, size >> level);

@@ -1,27 +1,23 @@
 #include "step06_foam_sky/gbuffer.hpp"
 
+#include "common/gl_texture.hpp"
+
 namespace step06 {
 
 void GBuffer::resize(glm::ivec2 size, GLuint depth) {
     if ((size == size_ && depth == depth_) || size.x <= 0 || size.y <= 0) return;
     size_ = size;
     depth_ = depth;
-    world_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(world_.id(), 1, GL_RGBA32F, size.x, size.y);
-    rest_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(rest_.id(), 1, GL_RGBA32UI, size.x, size.y);
-    // Read with texelFetch only; an integer texture is incomplete (reads as zero) with GL's
-    // default mipmap-linear filter, so both are set to nearest.
-    for (GLuint t : {world_.id(), rest_.id()}) {
-        glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
+    // Read with texelFetch only: nearest, one level (an integer texture with GL's default
+    // mipmap-linear filter would be incomplete and read as zero).
+    world_ = ocean::make_float_texture_2d(GL_RGBA32F, size.x, size.y);
+    rest_ = ocean::make_float_texture_2d(GL_RGBA32UI, size.x, size.y);
     target_ = ocean::make_framebuffer();
-    glNamedFramebufferTexture(target_.id(), GL_COLOR_ATTACHMENT0, world_.id(), 0);
-    glNamedFramebufferTexture(target_.id(), GL_COLOR_ATTACHMENT1, rest_.id(), 0);
-    glNamedFramebufferTexture(target_.id(), GL_DEPTH_ATTACHMENT, depth, 0);
+    ocean::attach_texture_2d(target_, GL_COLOR_ATTACHMENT0, world_);
+    ocean::attach_texture_2d(target_, GL_COLOR_ATTACHMENT1, rest_);
+    ocean::attach_texture_2d(target_, GL_DEPTH_ATTACHMENT, depth);
     const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glNamedFramebufferDrawBuffers(target_.id(), 2, buffers);
+    ocean::draw_buffers(target_, 2, buffers);
 }
 
 void GBuffer::bind() const {

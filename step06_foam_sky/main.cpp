@@ -108,20 +108,23 @@ private:
                     sky_->uses_image() ? "from an image" : "procedural");
     }
 
-    // The framework's services: the split view (one effect with and without), --export (the
-    // rendered surface and its foam), and --bench's extra figures (the FFT backends).
+    // The framework's services: the split view (one effect with and without), and in the GL 4.5
+    // profile --export (the rendered surface and its foam, gathered by a compute pass) and
+    // --bench's extra figures (the FFT backends).
     void offer_services() {
         offer_split_view([this] {
             const std::string effect = step06::effect_name(step06::kSplitEffects[split_effect_]);
             return SplitVariants{"with " + effect, "without " + effect, {"show_" + effect + "=true"},
                                  {"show_" + effect + "=false"}};
         });
+#ifndef OCEAN_GL_PORTABLE
         offer_export([this](const std::string& dir) {
             ocean::ProgramFactory programs = program_factory();
             sea_.export_surface(dir, programs, time(), params());
         });
         offer_bench_figures([this] { return sea_.time_backends(time()); });
         offer_warm_up([this] { return sea_.choosing_backend(); });
+#endif
     }
 
     step06::Sea sea_;

@@ -22,12 +22,9 @@ public:
                 corners.insert(corners.end(), {p, p + glm::vec2(size, 0), p + glm::vec2(size, size), p + glm::vec2(0, size)});
             }
         vertices_ = ocean::make_buffer();
-        glNamedBufferStorage(vertices_.id(), GLsizeiptr(corners.size() * sizeof(glm::vec2)), corners.data(), 0);
+        ocean::buffer_data(vertices_, GLsizeiptr(corners.size() * sizeof(glm::vec2)), corners.data(), GL_STATIC_DRAW);
         vao_ = ocean::make_vertex_array();
-        glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(glm::vec2));
-        glEnableVertexArrayAttrib(vao_.id(), 0);
-        glVertexArrayAttribFormat(vao_.id(), 0, 2, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(vao_.id(), 0, 0);
+        ocean::vertex_attribute(vao_, 0, vertices_, 2, sizeof(glm::vec2));
         count_ = count;
     }
 

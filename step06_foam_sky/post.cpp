@@ -2,6 +2,8 @@
 
 #include "step06_foam_sky/bloom.hpp"
 
+#include "common/gl_texture.hpp"
+
 #include <string>
 #include <utility>
 
@@ -10,38 +12,26 @@ namespace step06 {
 void PostProcess::resize(glm::ivec2 size) {
     if (size == size_ || size.x <= 0 || size.y <= 0) return;
     size_ = size;
-    scene_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(scene_.id(), 1, GL_RGBA16F, size.x, size.y);
-    glTextureParameteri(scene_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(scene_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(scene_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    depth_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y);
+    scene_ = ocean::make_linear_float_texture_2d(GL_RGBA16F, size.x, size.y, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
+    depth_ = ocean::make_float_texture_2d(GL_DEPTH_COMPONENT32F, size.x, size.y);
     scene_target_ = ocean::make_framebuffer();
-    glNamedFramebufferTexture(scene_target_.id(), GL_COLOR_ATTACHMENT0, scene_.id(), 0);
-    glNamedFramebufferTexture(scene_target_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
+    ocean::attach_texture_2d(scene_target_, GL_COLOR_ATTACHMENT0, scene_);
+    ocean::attach_texture_2d(scene_target_, GL_DEPTH_ATTACHMENT, depth_);
 
     // Bloom level 0 is a quarter of the screen each way; each next level half the previous (at
     // least 1 pixel). A glow is blurry by nature: a half-size first level cost 16 ms of llvmpipe's
     // frame (its 13 taps read the whole screen) and added only the tightest 2-pixel halo, which
     // the scene itself already shows. A tiny window has fewer levels: a texture cannot have more
-    // than log2(side) + 1.
+    // than log2(side) + 1. Each level is a texture of its own, read with linear filtering: a pass
+    // samples the level above while it draws into the next, never the level it draws into.
     bloom_sizes_ = bloom_level_sizes(size, kBloomLevels);  // bloom.hpp
-    const int levels = int(bloom_sizes_.size());
-    bloom_ = ocean::make_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(bloom_.id(), levels, GL_RGBA16F, bloom_sizes_[0].x, bloom_sizes_[0].y);
-    bloom_views_.clear();
+    bloom_levels_.clear();
     bloom_targets_.clear();
-    for (int level = 0; level < levels; ++level) {
-        GLuint view = 0;
-        glGenTextures(1, &view);  // glTextureView needs a name that was never bound
-        glTextureView(view, GL_TEXTURE_2D, bloom_.id(), GL_RGBA16F, GLuint(level), 1, 0, 1);
-        glTextureParameteri(view, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(view, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(view, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        bloom_views_.emplace_back(view);
+    for (glm::ivec2 level_size : bloom_sizes_) {
+        bloom_levels_.push_back(ocean::make_linear_float_texture_2d(GL_RGBA16F, level_size.x, level_size.y,
+                                                                    GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE));
         ocean::Framebuffer target = ocean::make_framebuffer();
-        glNamedFramebufferTexture(target.id(), GL_COLOR_ATTACHMENT0, bloom_.id(), level);
+        ocean::attach_texture_2d(target, GL_COLOR_ATTACHMENT0, bloom_levels_.back());
         bloom_targets_.push_back(std::move(target));
     }
 }
@@ -73,8 +63,8 @@ void PostProcess::tonemap(const PostSettings& settings, GLuint fullscreen_vao) c
     tonemap->set("u_bloom", 1);
     tonemap->set("u_exposure", settings.exposure);
     tonemap->set("u_bloom_strength", settings.bloom ? settings.bloom_strength : 0.0f);
-    glBindTextureUnit(0, scene_texture());
-    glBindTextureUnit(1, bloom_texture());
+    ocean::bind_texture(0, GL_TEXTURE_2D, scene_texture());
+    ocean::bind_texture(1, GL_TEXTURE_2D, bloom_texture());
     glUseProgram(tonemap->id());
     glBindVertexArray(fullscreen_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -95,7 +85,7 @@ void PostProcess::bloom(const ocean::ShaderProgram& first, const ocean::ShaderPr
         p.set("u_source", 0);
         if (from_scene) p.set("u_threshold", threshold);
         p.set("u_source_texel", 1.0f / glm::vec2(from_scene ? size_ : bloom_sizes_[level - 1]));
-        glBindTextureUnit(0, from_scene ? scene_.id() : bloom_views_[level - 1].id());
+        ocean::bind_texture(0, GL_TEXTURE_2D, from_scene ? scene_.id() : bloom_levels_[level - 1].id());
         glBindFramebuffer(GL_FRAMEBUFFER, bloom_targets_[level].id());
         glViewport(0, 0, bloom_sizes_[level].x, bloom_sizes_[level].y);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -106,7 +96,7 @@ void PostProcess::bloom(const ocean::ShaderProgram& first, const ocean::ShaderPr
     glBlendFunc(GL_ONE, GL_ONE);
     for (std::size_t level = bloom_targets_.size() - 1; level > 0; --level) {
         up.set("u_source_texel", 1.0f / glm::vec2(bloom_sizes_[level]));
-        glBindTextureUnit(0, bloom_views_[level].id());
+        ocean::bind_texture(0, GL_TEXTURE_2D, bloom_levels_[level].id());
         glBindFramebuffer(GL_FRAMEBUFFER, bloom_targets_[level - 1].id());
         glViewport(0, 0, bloom_sizes_[level - 1].x, bloom_sizes_[level - 1].y);
         glDrawArrays(GL_TRIANGLES, 0, 3);

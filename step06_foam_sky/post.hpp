@@ -40,7 +40,7 @@ public:
     GLuint scene_framebuffer() const { return scene_target_.id(); }
     GLuint scene_texture() const { return scene_.id(); }
     GLuint depth_texture() const { return depth_.id(); }
-    GLuint bloom_texture() const { return bloom_views_.empty() ? 0 : bloom_views_[0].id(); }
+    GLuint bloom_texture() const { return bloom_levels_.empty() ? 0 : bloom_levels_[0].id(); }
 
     // Fills the bloom chain from the scene. `first` and `down`: bloom_down.frag with FIRST_LEVEL 1
     // and 0; `up`: bloom_up.frag.
@@ -50,8 +50,8 @@ public:
 private:
     ocean::ProgramFactory programs_;
     glm::ivec2 size_{0};
-    ocean::Texture scene_, depth_, bloom_;
-    std::vector<ocean::Texture> bloom_views_;  // one view per level: no sampling of the level being drawn
+    ocean::Texture scene_, depth_;
+    std::vector<ocean::Texture> bloom_levels_;  // a quarter of the screen, then halves
     ocean::Framebuffer scene_target_;
     std::vector<ocean::Framebuffer> bloom_targets_;
     std::vector<glm::ivec2> bloom_sizes_;

@@ -1,8 +1,10 @@
 #include "step06_foam_sky/sea.hpp"
 
 #include "step05_fft/spectrum.hpp"
-#include "step06_foam_sky/surface_export.hpp"
 #include "step06_foam_sky/texture_units.h"
+#ifndef OCEAN_GL_PORTABLE
+#include "step06_foam_sky/surface_export.hpp"
+#endif
 
 #include <algorithm>
 #include <cstdio>
@@ -31,7 +33,7 @@ void Sea::declare(ocean::ParamRegistry& p) {
 }
 
 void Sea::init(ocean::ProgramFactory programs) {
-    simulation_ = std::make_unique<step05::OceanSimulation>(programs);
+    simulation_ = std::make_unique<SeaSimulation>(programs);
     foam_ = std::make_unique<FoamSimulation>(programs);
 }
 
@@ -80,9 +82,13 @@ void Sea::simulate(double time, glm::dvec3 eye) {
         cascade_view_.enabled[std::size_t(c)] = cascade_shown_ == 0 || cascade_shown_ == c + 1;
     }
     cascade_view_.place_origin(world_origin_near({eye.x, eye.z}));
+#ifdef OCEAN_GL_PORTABLE
+    simulation_->simulate(time, params_.choppiness);
+#else
     // backend auto: FFTW and the GPU FFT timed on the first frames, the faster kept (step05).
     simulation_->simulate(time, step05::Backend::Auto, params_.choppiness);
     if (auto decision = simulation_->take_auto_decision()) std::cout << "backend auto " << *decision << std::endl;  // flushed: a log follows the run
+#endif
 }
 
 void Sea::update_foam(double dt, glm::dvec3 eye, glm::vec3 forward) {
@@ -114,6 +120,7 @@ std::vector<double> Sea::tile_sizes() const {
     return tiles;
 }
 
+#ifndef OCEAN_GL_PORTABLE
 std::vector<std::pair<std::string, double>> Sea::time_backends(double time) {
     const step05::BackendTimes times = step05::time_backends(*simulation_, time, 5);
     for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
@@ -125,5 +132,6 @@ void Sea::export_surface(const std::string& dir, ocean::ProgramFactory& programs
     step06::export_surface(dir, programs, *simulation_, *foam_, cascade_view_, time, params_.choppiness,
                            short_wave_slope_variance_, params);
 }
+#endif
 
 }  // namespace step06

@@ -1,5 +1,5 @@
 // step06's sea, the first part of its program: step05's spectrum split into four cascades
-// (cascades.hpp), simulated together each frame by step05's OceanSimulation, and the foam their
+// (cascades.hpp), simulated together each frame by step05's simulation, and the foam their
 // sum leaves behind (foam.hpp). What the passes that draw it need, it binds.
 //
 // A program declares the sea's parameters in its constructor (declare), makes its GPU side once a
@@ -10,7 +10,11 @@
 #include "common/params.hpp"
 #include "common/shader.hpp"
 #include "step05_fft/ocean_params.hpp"
+#ifdef OCEAN_GL_PORTABLE
+#include "step05_fft/fragment_simulation.hpp"
+#else
 #include "step05_fft/ocean_simulation.hpp"
+#endif
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/short_waves.hpp"
@@ -25,6 +29,15 @@
 #include <vector>
 
 namespace step06 {
+
+// The simulation the sea runs: step05's compute passes in the GL 4.5 profile (with its choice of
+// transform, timed), its fragment passes where there are no compute shaders (macOS's GL 4.1,
+// ES 3.0, WebGL 2). The same maps come out of both.
+#ifdef OCEAN_GL_PORTABLE
+using SeaSimulation = step05::FragmentSimulation;
+#else
+using SeaSimulation = step05::OceanSimulation;
+#endif
 
 class Sea {
 public:
@@ -59,8 +72,10 @@ public:
     // A line per cascade (tile and band), for the panel.
     const std::vector<std::string>& description() const { return description_; }
 
-    step05::OceanSimulation& simulation() { return *simulation_; }
-    const step05::OceanSimulation& simulation() const { return *simulation_; }
+    SeaSimulation& simulation() { return *simulation_; }
+    const SeaSimulation& simulation() const { return *simulation_; }
+#ifndef OCEAN_GL_PORTABLE
+    // GL 4.5 only (compute shaders: step05's backends, the export's grid).
     // Whether backend auto is still timing the two transforms (--bench waits for it).
     bool choosing_backend() const { return !simulation_ || simulation_->auto_deciding(); }
     // --bench's extra figures: the four cascades' transforms through each backend and the FFTW
@@ -69,6 +84,7 @@ public:
     // --export: the summed surface and the foam on one grid around the camera (surface_export.hpp).
     void export_surface(const std::string& dir, ocean::ProgramFactory& programs, double time,
                         const ocean::ParamRegistry& params) const;
+#endif
 
 private:
     void make_spectra();
@@ -76,7 +92,7 @@ private:
     step05::OceanParams params_;
     FoamSettings foam_settings_;
     int cascade_shown_ = 0;  // 0: all; c + 1: cascade c alone
-    std::unique_ptr<step05::OceanSimulation> simulation_;
+    std::unique_ptr<SeaSimulation> simulation_;
     std::unique_ptr<FoamSimulation> foam_;
     std::vector<std::unique_ptr<step05::InitialSpectrum>> spectra_;
     unsigned spectra_made_for_ = 0;  // params_.changes when the spectra were made

@@ -1,6 +1,7 @@
 #include "step06_foam_sky/sea_renderer.hpp"
 
 #include "common/frustum.hpp"
+#include "common/gl_texture.hpp"
 #include "step06_foam_sky/far_plane.hpp"
 #include "step06_foam_sky/texture_units.h"
 
@@ -96,8 +97,8 @@ void SeaRenderer::bind_shading(const ocean::ShaderProgram& shade, const Sea& sea
     look.upload_shading(shade);
     shade.set("u_eye", glm::vec3(frame.eye - sea.world_origin()));
     shade.set("u_sky_max_lod", sky.max_lod());
-    glBindTextureUnit(UNIT_GBUFFER_WORLD, gbuffer_.world_texture());
-    glBindTextureUnit(UNIT_GBUFFER_REST, gbuffer_.rest_texture());
+    ocean::bind_texture(UNIT_GBUFFER_WORLD, GL_TEXTURE_2D, gbuffer_.world_texture());
+    ocean::bind_texture(UNIT_GBUFFER_REST, GL_TEXTURE_2D, gbuffer_.rest_texture());
 }
 
 }  // namespace step06

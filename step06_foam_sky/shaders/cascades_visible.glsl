@@ -4,7 +4,19 @@
 // comes from the differences across a 2 x 2 quad, meaningless where the quad straddles a crest
 // and the water behind it, so every fetch here takes the bias that turns GL's level into the one
 // the footprint asks for.
+#ifdef OCEAN_GL_PORTABLE
+// No votes between neighbouring pixels in GL 4.1 or ES 3.0 (ARB_shader_group_vote is GL 4.6's):
+// every fetch takes its level from the pixel's own footprint (textureLod), so a pixel may take
+// its own loop length, or skip a cascade, whatever its neighbours do.
+#ifndef EXPLICIT_LEVELS
+#define EXPLICIT_LEVELS 1
+#endif
+#else
 #extension GL_ARB_shader_group_vote : enable  // sample_surface: one loop length for neighbours (below)
+#ifdef GL_ARB_shader_group_vote
+#define GROUP_VOTES 1
+#endif
+#endif
 #include "cascades.glsl"
 #include "foam_map.glsl"
 
@@ -63,7 +75,7 @@ void add_cascade(int c, vec2 p, vec2 long_axis, float long_length, float short_l
     // Rounded, not ceiled: a footprint less than 1.5 times longer than wide takes one fetch
     // (slightly over-blurred), which spares most of the near sea a second one.
     int taps = clamp(int(long_length / max(short_length, texel) + 0.5), 1, ANISOTROPIC_TAPS);
-#ifdef GL_ARB_shader_group_vote
+#ifdef GROUP_VOTES
     // Neighbouring pixels run in lockstep (a GPU's warp, llvmpipe's 8-wide vectors): a loop
     // whose length differs between them runs as long as the longest, its other pixels masked
     // off, and the masking itself costs (llvmpipe: 95 ms for the pass against 83). So the
@@ -80,7 +92,7 @@ void add_cascade(int c, vec2 p, vec2 long_axis, float long_length, float short_l
     // skipping it changes nothing but its variance, and saves its fetches (the small cascades,
     // over most of the distant sea).
     bool averaged_away = footprint >= 0.5 * u_patch_sizes[c];
-#ifdef GL_ARB_shader_group_vote
+#ifdef GROUP_VOTES
     // Skipped only where the whole group agrees: the texture() calls below take their level
     // from the 2 x 2 quad, which must all run them. A quad straddling two triangles of the
     // mesh (thin ones near the horizon) has two footprints; where only some of its pixels
@@ -100,7 +112,8 @@ void add_cascade(int c, vec2 p, vec2 long_axis, float long_length, float short_l
     // the loop comes from the recorded coarse (per 2 x 2) derivatives, so the 2 x 2 pixels
     // agree on it.
 #ifdef EXPLICIT_LEVELS
-    // A pass with no 2 x 2 quads (lab/compute_shading): each piece at its own footprint's level.
+    // A pass with no 2 x 2 quads (lab/compute_shading), or no votes (the portable profile): each
+    // piece at its own footprint's level.
     float lod = cascade_lod(c, footprint);
 #define SLOPE_PIECE(uv) textureLod(u_slopes, uv, lod)
 #else
@@ -164,7 +177,7 @@ vec2 foam_at(vec2 p, float long_side) {
     // neighbouring pixels in lockstep leaves a loop at its back edge once every pixel is done,
     // where an if runs both sides masked (llvmpipe).
     int fetches = weight < 1.0 && level + 1 < FOAM_LEVELS ? 2 : 1;
-#ifdef GL_ARB_shader_group_vote
+#ifdef GROUP_VOTES
     fetches = anyInvocationARB(fetches == 2) ? 2 : 1;
 #endif
     float texels = float(textureSize(u_foam, 0).x);

@@ -3,6 +3,7 @@
 // shading is ocean_shade.frag's. The derivatives of the rest position are taken here, on the
 // triangle: in the shading pass a 2 x 2 quad may straddle a crest and the water behind it, and
 // its differences would be meaningless.
+#include "half_pack.glsl"
 #include "level_colour.glsl"
 
 #ifndef WIREFRAME
@@ -32,5 +33,5 @@ void main() {
     g_world = vec4(v_world_position, LEVEL_VIEW == 1 ? v_level : v_cross_term);
     // Coarse (one per 2 x 2 quad), as the filtering expects: every decision that follows from
     // them is then the same for the four pixels of a quad.
-    g_rest = uvec4(floatBitsToUint(v_rest_xz), packHalf2x16(dFdxCoarse(v_rest_xz)), packHalf2x16(dFdyCoarse(v_rest_xz)));
+    g_rest = uvec4(floatBitsToUint(v_rest_xz), pack_halves(dFdxCoarse(v_rest_xz)), pack_halves(dFdyCoarse(v_rest_xz)));
 }

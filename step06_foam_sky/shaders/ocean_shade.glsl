@@ -4,6 +4,7 @@
 // height fog. Output: linear HDR. ocean_shade.frag runs it at every pixel the sea covers.
 #include "step06_foam_sky/texture_units.h"
 #include "cascades_visible.glsl"
+#include "half_pack.glsl"
 #include "shading.glsl"
 #include "fog.glsl"
 #include "sky_horizon.glsl"
@@ -46,7 +47,7 @@ vec4 shade_sea_pixel(ivec2 pixel) {
     uvec4 packed_rest = texelFetch(u_gbuffer_rest, pixel, 0);
     vec3 surface_point = world.xyz;
     vec2 rest_xz = uintBitsToFloat(packed_rest.xy);
-    SurfaceFootprint footprint = SurfaceFootprint(unpackHalf2x16(packed_rest.z), unpackHalf2x16(packed_rest.w));
+    SurfaceFootprint footprint = SurfaceFootprint(unpack_halves(packed_rest.z), unpack_halves(packed_rest.w));
     SurfaceSample surface = sample_surface(rest_xz, footprint);
     // The slopes per pixel; the choppy cross term l dDx/dz interpolated from the mesh's vertices
     // (ocean.frag says why). choppy_normal and jacobian read only its w.
