@@ -13,6 +13,7 @@ typedef GLADapiproc (*GLADloadfunc)(const char* name);
 #include <glad/gl.h>
 #endif
 
+#include <cstring>
 #include <utility>
 
 namespace ocean {
@@ -139,10 +140,11 @@ private:
     static GLenum binding_of(GLenum target) {
         switch (target) {
         case GL_ARRAY_BUFFER: return GL_ARRAY_BUFFER_BINDING;
+        case GL_PIXEL_PACK_BUFFER: return GL_PIXEL_PACK_BUFFER_BINDING;
         case GL_RENDERBUFFER: return GL_RENDERBUFFER_BINDING;
         case GL_READ_FRAMEBUFFER: return GL_READ_FRAMEBUFFER_BINDING;
         case GL_DRAW_FRAMEBUFFER: return GL_DRAW_FRAMEBUFFER_BINDING;
-        default: return target;  // GL_COPY_WRITE_BUFFER and the two above: their own names
+        default: return target;  // GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER and the two above: their own names
         }
     }
     static void bind(GLenum target, GLuint id) {
@@ -179,6 +181,25 @@ inline void buffer_sub_data(const Buffer& buffer, GLintptr offset, GLsizeiptr si
 #else
     glNamedBufferSubData(buffer.id(), offset, size, data);
 #endif
+}
+
+// Copies the first `size` bytes of a buffer's data into `out`; returns false where the buffer could
+// not be mapped. Waits for whatever the GPU still has to write into it (a fence tells when it
+// will not: step07's fenced_slots.hpp).
+inline bool read_buffer(const Buffer& buffer, GLsizeiptr size, void* out) {
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindForEdit edit(GL_COPY_READ_BUFFER, buffer.id());
+    const void* data = glMapBufferRange(GL_COPY_READ_BUFFER, 0, size, GL_MAP_READ_BIT);
+    if (data == nullptr) return false;
+    std::memcpy(out, data, std::size_t(size));
+    glUnmapBuffer(GL_COPY_READ_BUFFER);
+#else
+    const void* data = glMapNamedBufferRange(buffer.id(), 0, size, GL_MAP_READ_BIT);
+    if (data == nullptr) return false;
+    std::memcpy(out, data, std::size_t(size));
+    glUnmapNamedBuffer(buffer.id());
+#endif
+    return true;
 }
 
 // Vertex attribute `index` of the vertex array: `components` floats per vertex, read from `buffer`

@@ -366,4 +366,28 @@ inline std::vector<float> read_texture_layer(GLuint texture, GLint level, GLint 
     return texels;
 }
 
+// Queues a copy of level 0 of every layer of a 2D array texture of RGBA floats (`side` x `side`
+// texels a layer) into `buffer` from byte `offset`, layer after layer, and returns at once: the
+// copy runs when the GPU gets there (a fence after it says when; read_buffer then reads it).
+// GL 4.5 copies the texture by name; GL 4.1 and ES 3.0 read each layer through a framebuffer.
+inline void queue_layers_into_buffer(GLuint texture, GLsizei side, GLsizei layers, const Buffer& buffer, GLintptr offset) {
+    // With a buffer bound to GL_PIXEL_PACK_BUFFER the "pointer" is an offset into it.
+    const detail::BindForEdit pack(GL_PIXEL_PACK_BUFFER, buffer.id());
+    const GLsizeiptr layer_bytes = GLsizeiptr(side) * side * 4 * GLsizeiptr(sizeof(float));
+#if OCEAN_GL_BIND_TO_EDIT
+    GLuint reader = 0;
+    glGenFramebuffers(1, &reader);
+    {
+        const detail::BindForEdit edit(GL_READ_FRAMEBUFFER, reader);
+        for (GLint layer = 0; layer < layers; ++layer) {
+            glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, texture, 0, layer);
+            glReadPixels(0, 0, side, side, GL_RGBA, GL_FLOAT, reinterpret_cast<void*>(offset + layer * layer_bytes));
+        }
+    }
+    glDeleteFramebuffers(1, &reader);
+#else
+    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(layers * layer_bytes), reinterpret_cast<void*>(offset));
+#endif
+}
+
 }  // namespace ocean

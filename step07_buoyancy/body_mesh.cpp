@@ -11,14 +11,10 @@ namespace step07 {
 BodyMeshes::Mesh BodyMeshes::upload(const std::vector<glm::vec3>& data) {
     Mesh m;
     m.vertices = ocean::make_buffer();
-    glNamedBufferStorage(m.vertices.id(), GLsizeiptr(data.size() * sizeof(glm::vec3)), data.data(), 0);
+    ocean::buffer_data(m.vertices, GLsizeiptr(data.size() * sizeof(glm::vec3)), data.data(), GL_STATIC_DRAW);
     m.vao = ocean::make_vertex_array();
-    glVertexArrayVertexBuffer(m.vao.id(), 0, m.vertices.id(), 0, 2 * sizeof(glm::vec3));
-    for (GLuint a = 0; a < 2; ++a) {
-        glEnableVertexArrayAttrib(m.vao.id(), a);
-        glVertexArrayAttribFormat(m.vao.id(), a, 3, GL_FLOAT, GL_FALSE, a * GLuint(sizeof(glm::vec3)));
-        glVertexArrayAttribBinding(m.vao.id(), a, 0);
-    }
+    for (GLuint a = 0; a < 2; ++a)  // (position, normal) pairs: attribute a at a vec3 into each
+        ocean::vertex_attribute(m.vao, a, m.vertices, 3, 2 * sizeof(glm::vec3), GLintptr(a * sizeof(glm::vec3)));
     m.count = int(data.size() / 2);
     return m;
 }

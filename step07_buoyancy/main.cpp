@@ -63,8 +63,10 @@ public:
         queries_.declare(p);
         use_camera(ocean::camera_view("low"), ocean::kOceanReach);
         offer_export([this](const std::string& dir) { export_all(dir); });
+#ifndef OCEAN_GL_PORTABLE  // step05's backends: GL 4.5 only
         offer_bench_figures([this] { return sea_.time_backends(time()); });
         offer_warm_up([this] { return sea_.choosing_backend(); });
+#endif
     }
 
 private:
@@ -123,6 +125,7 @@ private:
         const std::vector<double> tiles = sea_.tile_sizes();
         // Each cascade's orbits shrink with depth by its band's wavenumber (sea_maps.hpp).
         const std::vector<double> wavenumbers = step07::band_wavenumbers(sea_.spectrum());
+#ifndef OCEAN_GL_PORTABLE  // the FFTW backend's maps are on the CPU already
         if (const step05::CpuSimulation* cpu = sea_.simulation().maps_on_cpu()) {
             readback_.forget();  // auto's trial frames switch backends: no older GPU maps after these
             const auto& level = cpu->levels()[0];
@@ -131,11 +134,18 @@ private:
                 step07::sea_from_layers(level.displacement, level.slopes, level.size, tiles, wavenumbers),
                 time()};
         }
-        // Last frame's copy first (exactly a frame late), then this frame's is queued.
+#endif
+        // Last frame's copy first (exactly a frame late), then this frame's is queued. The very
+        // first is waited for at once: with no bodies yet there is nothing to keep moving while
+        // it lands, and they are dropped on the sea of the frame they appear in.
         std::optional<step07::ArrivedMaps> arrived = readback_.take();
         readback_.request(sea_.simulation(), time());
-        if (!arrived) return std::nullopt;
         latency_frames_ = 1;
+        if (!arrived && !sea_now_) {
+            arrived = readback_.take();
+            latency_frames_ = 0;
+        }
+        if (!arrived) return std::nullopt;
         return TimedSea{
             step07::sea_from_layers(arrived->displacement, arrived->slopes, arrived->n, tiles, wavenumbers),
             arrived->time};
@@ -274,10 +284,13 @@ private:
                             bodies_[1].to_world({0.3 * body_params_.raft_size, 0.2, 0}));
     }
 
-    // step06's export (the surface and foam) and each body's trajectory, one row a body a frame.
+    // step06's export (the surface and foam; GL 4.5 only) and each body's trajectory, one row a
+    // body a frame.
     void export_all(const std::string& dir) {
+#ifndef OCEAN_GL_PORTABLE
         ocean::ProgramFactory programs = program_factory();
         sea_.export_surface(dir, programs, time(), params());
+#endif
         std::ostringstream out;
         out << "time,body,x,y,z,qw,qx,qy,qz\n";
         out.precision(10);

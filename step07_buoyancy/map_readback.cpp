@@ -1,10 +1,12 @@
 #include "step07_buoyancy/map_readback.hpp"
 
-#include <cstring>
+#include "common/gl_texture.hpp"
+
+#include <cstddef>
 
 namespace step07 {
 
-void MapReadback::request(const step05::OceanSimulation& ocean, double time) {
+void MapReadback::request(const step06::SeaSimulation& ocean, double time) {
     const std::optional<int> slot = slots_.free_slot();
     if (!slot) return;
     Copy* free = &copies_[std::size_t(*slot)];
@@ -12,16 +14,12 @@ void MapReadback::request(const step05::OceanSimulation& ocean, double time) {
     const std::size_t map_bytes = std::size_t(n) * std::size_t(n) * std::size_t(ocean.cascade_count()) * 4 * sizeof(float);
     if (free->bytes != 2 * map_bytes) {
         free->buffer = ocean::make_buffer();
-        glNamedBufferStorage(free->buffer.id(), GLsizeiptr(2 * map_bytes), nullptr, GL_MAP_READ_BIT);
+        ocean::buffer_data(free->buffer, GLsizeiptr(2 * map_bytes), nullptr, GL_STREAM_READ);  // the GPU writes, the CPU reads
         free->bytes = 2 * map_bytes;
     }
-    // With a buffer bound to GL_PIXEL_PACK_BUFFER the "pointer" is an offset into it: the copy is
-    // queued, not waited for.
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, free->buffer.id());
-    glGetTextureImage(ocean.displacement_texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(map_bytes), nullptr);
-    glGetTextureImage(ocean.slopes_texture(), 0, GL_RGBA, GL_FLOAT, GLsizei(map_bytes),
-                      reinterpret_cast<void*>(map_bytes));
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    // Queued, not waited for: the copies land in the buffer when the GPU gets there.
+    ocean::queue_layers_into_buffer(ocean.displacement_texture(), n, ocean.cascade_count(), free->buffer, 0);
+    ocean::queue_layers_into_buffer(ocean.slopes_texture(), n, ocean.cascade_count(), free->buffer, GLintptr(map_bytes));
     slots_.sent(*slot);
     free->time = time;
     free->n = n;
@@ -34,14 +32,12 @@ std::optional<ArrivedMaps> MapReadback::take() {
     ArrivedMaps out;
     out.time = oldest->time;
     out.n = oldest->n;
-    const std::size_t half = oldest->bytes / 2;
-    out.displacement.resize(half / sizeof(float));
-    out.slopes.resize(half / sizeof(float));
-    const auto* data = static_cast<const char*>(glMapNamedBufferRange(oldest->buffer.id(), 0, GLsizeiptr(oldest->bytes), GL_MAP_READ_BIT));
-    if (data == nullptr) return std::nullopt;
-    std::memcpy(out.displacement.data(), data, half);
-    std::memcpy(out.slopes.data(), data + half, half);
-    glUnmapNamedBuffer(oldest->buffer.id());
+    // Both maps in one read, the displacement then the slopes.
+    std::vector<float> both(oldest->bytes / sizeof(float));
+    if (!ocean::read_buffer(oldest->buffer, GLsizeiptr(oldest->bytes), both.data())) return std::nullopt;
+    const auto middle = both.begin() + std::ptrdiff_t(both.size() / 2);
+    out.displacement.assign(both.begin(), middle);
+    out.slopes.assign(middle, both.end());
     return out;
 }
 

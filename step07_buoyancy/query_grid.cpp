@@ -13,9 +13,11 @@ void QueryGrid::declare(ocean::ParamRegistry& p) {
     const auto group = p.group("queries");
     p.add_int("queries", &count_, 0, 100000,
               "height queries a frame on a grid ahead of the camera, drawn as dots where the water is");
+#ifndef OCEAN_GL_PORTABLE  // a compute shader answers them on the GPU: GL 4.5 only
     p.add_choice("query_device", &device_, {"cpu", "gpu"},
                  "where the queries are answered: cpu (sea_query.cpp, every core, this frame's maps) or gpu "
                  "(height_query.comp, answers a frame late)");
+#endif
 }
 
 void QueryGrid::update(const MapSea& maps, const step06::Sea& sea, glm::dvec3 eye, glm::vec3 forward, double time) {
@@ -34,6 +36,7 @@ void QueryGrid::update(const MapSea& maps, const step06::Sea& sea, glm::dvec3 ey
         for (std::size_t i = 0; i < world.size(); ++i) dots_[i] = {world[i].x, answers[i].height, world[i].y};
         return;
     }
+#ifndef OCEAN_GL_PORTABLE
     // On the GPU: this frame's points go up; last frame's answers come back.
     if (!gpu_) gpu_ = std::make_unique<GpuQueries>(programs_);
     std::vector<glm::vec2> relative;
@@ -47,6 +50,10 @@ void QueryGrid::update(const MapSea& maps, const step06::Sea& sea, glm::dvec3 ey
             dots_[i] = {w.x, arrived->answers[i].height, w.y};
         }
     }
+#else
+    (void)sea;  // read by the GPU's answers, which need compute shaders
+    (void)time;
+#endif
 }
 
 void QueryGrid::draw(glm::dvec3 origin, const glm::mat4& view_projection) {
@@ -57,15 +64,12 @@ void QueryGrid::draw(glm::dvec3 origin, const glm::mat4& view_projection) {
     if (p == nullptr) return;
     std::vector<glm::vec3> positions;
     for (const auto& d : dots) positions.emplace_back(d - origin);  // small floats anywhere on the ocean
-    buffer_ = ocean::make_buffer();
-    glNamedBufferStorage(buffer_.id(), GLsizeiptr(positions.size() * sizeof(glm::vec3)), positions.data(), 0);
     if (vao_.id() == 0) {
+        buffer_ = ocean::make_buffer();
         vao_ = ocean::make_vertex_array();
-        glEnableVertexArrayAttrib(vao_.id(), 0);
-        glVertexArrayAttribFormat(vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(vao_.id(), 0, 0);
+        ocean::vertex_attribute(vao_, 0, buffer_, 3, sizeof(glm::vec3));
     }
-    glVertexArrayVertexBuffer(vao_.id(), 0, buffer_.id(), 0, sizeof(glm::vec3));
+    ocean::buffer_data(buffer_, GLsizeiptr(positions.size() * sizeof(glm::vec3)), positions.data(), GL_STREAM_DRAW);
     p->set("u_view_projection", view_projection);
     glUseProgram(p->id());
     glEnable(GL_PROGRAM_POINT_SIZE);

@@ -8,7 +8,9 @@
 #include "common/params.hpp"
 #include "common/shader.hpp"
 #include "step06_foam_sky/sea.hpp"
+#ifndef OCEAN_GL_PORTABLE
 #include "step07_buoyancy/gpu_queries.hpp"
+#endif
 #include "step07_buoyancy/sea_maps.hpp"
 
 #include <glm/mat4x4.hpp>
@@ -33,7 +35,9 @@ public:
 private:
     ocean::ProgramFactory programs_;
     int count_ = 0, device_ = 0;  // the parameters queries and query_device (0: cpu)
+#ifndef OCEAN_GL_PORTABLE
     std::unique_ptr<GpuQueries> gpu_;
+#endif
     std::vector<glm::dvec3> dots_;  // world metres: the latest answers
     ocean::Buffer buffer_;
     ocean::VertexArray vao_;

@@ -5,7 +5,7 @@
 set(OCEAN_WEB_SITE "${PROJECT_SOURCE_DIR}/build/web/site" CACHE PATH "the pages ./ocean web builds (tests/web)")
 set(_web_smoke "${CMAKE_CURRENT_SOURCE_DIR}/web/smoke.sh")
 foreach(_step IN LISTS OCEAN_STEPS)
-  if(_step IN_LIST OCEAN_GL45_CHAPTERS OR _step IN_LIST OCEAN_TESSELLATION_CHAPTERS)
+  if(_step IN_LIST OCEAN_TESSELLATION_CHAPTERS)
     continue()
   endif()
   add_test(NAME ${_step}.web.smoke
