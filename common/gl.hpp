@@ -219,6 +219,18 @@ inline void vertex_attribute(const VertexArray& vao, GLuint index, const Buffer&
 #endif
 }
 
+// As vertex_attribute, but advanced once per instance of an instanced draw, not once per vertex.
+inline void instance_attribute(const VertexArray& vao, GLuint index, const Buffer& buffer, GLint components,
+                               GLsizei stride, GLintptr offset = 0) {
+    vertex_attribute(vao, index, buffer, components, stride, offset);
+#if OCEAN_GL_BIND_TO_EDIT
+    detail::BindForEdit edit_vao(GL_VERTEX_ARRAY_BINDING, vao.id());
+    glVertexAttribDivisor(index, 1);
+#else
+    glVertexArrayBindingDivisor(vao.id(), index, 1);  // vertex_attribute gives attribute i binding i
+#endif
+}
+
 // The vertex array's indices (glDrawElements reads them from `buffer`).
 inline void element_buffer(const VertexArray& vao, const Buffer& buffer) {
 #if OCEAN_GL_BIND_TO_EDIT

@@ -3,15 +3,24 @@
 #pragma once
 
 #include "common/gl.hpp"
+#include "common/shader.hpp"
+#include "step06_foam_sky/patch_view.hpp"
 
 #include <glm/vec2.hpp>
 
+#include <string>
 #include <vector>
 
 namespace step06 {
 
 class PatchGrid {
 public:
+    // The shaders that draw it into the G-buffer: the tessellation pipeline.
+    static std::vector<std::string> mesh_shaders() {
+        return {"step06_foam_sky/shaders/ocean.vert", "step06_foam_sky/shaders/ocean.tesc",
+                "step06_foam_sky/shaders/ocean.tese", "step06_foam_sky/shaders/ocean.frag"};
+    }
+
     // Called when patch_count or tess_patch_size changed (their Generation).
     void build(int count, float size) {
         std::vector<glm::vec2> corners;
@@ -28,10 +37,15 @@ public:
         count_ = count;
     }
 
-    void draw() const {
+    // Every patch, with `mesh` in use: the control shader culls and cuts them (the triangles'
+    // edges only when `wireframe`). Returns how many patches were sent.
+    int draw(const ocean::ShaderProgram& /*mesh*/, const PatchView& /*view*/, float /*tess_scale*/, bool wireframe) const {
         glBindVertexArray(vao_.id());
         glPatchParameteri(GL_PATCH_VERTICES, 4);
+        if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
         glDrawArrays(GL_PATCHES, 0, 4 * count_ * count_);
+        if (wireframe) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        return count_ * count_;
     }
 
     int patch_count() const { return count_ * count_; }

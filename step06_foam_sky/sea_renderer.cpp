@@ -57,31 +57,30 @@ void SeaRenderer::record(const Sea& sea, const SeaFrame& frame) {
 
 // The tessellated patches around the camera (depth tested and written): ocean.frag records the
 // G-buffer, or with WIREFRAME 1 draws the edges.
+// The patches around the camera (depth tested and written): ocean.frag records the G-buffer, or
+// with WIREFRAME 1 draws the edges.
 void SeaRenderer::draw_mesh(const std::string& name, const std::vector<std::string>& defines, const Sea& sea,
                             const SeaFrame& frame) {
-    ocean::ShaderProgram* mesh =
-        programs_(name, {"step06_foam_sky/shaders/ocean.vert", "step06_foam_sky/shaders/ocean.tesc",
-                         "step06_foam_sky/shaders/ocean.tese", "step06_foam_sky/shaders/ocean.frag"},
-                  defines);
+    ocean::ShaderProgram* mesh = programs_(name, SeaPatches::mesh_shaders(), defines);
     if (mesh == nullptr) return;
     sea.bind_maps(*mesh);
     // The grid follows the camera in whole patches of the world (in double), then is placed
     // from the world origin.
     const double patch = double(tess_patch_size_);
     const glm::dvec2 grid_offset = glm::floor(glm::dvec2(frame.eye.x, frame.eye.z) / patch) * patch;
-    mesh->set("u_view_projection", frame.view_projection);
-    mesh->set("u_eye", glm::vec3(frame.eye - sea.world_origin()));
-    mesh->set("u_grid_offset", glm::vec2(grid_offset - sea.cascades().origin));
+    const PatchView view{frame.view_projection, glm::vec3(frame.eye - sea.world_origin()),
+                         glm::vec2(grid_offset - sea.cascades().origin), float(sea.largest_displacement())};
+    mesh->set("u_view_projection", view.view_projection);
+    mesh->set("u_eye", view.eye);
+    mesh->set("u_grid_offset", view.grid_offset);
     mesh->set("u_tess_patch_size", tess_patch_size_);
     mesh->set("u_tess_scale", tess_scale_);
     mesh->set("u_frustum", ocean::frustum_planes(frame.view_projection));
     // The patches' boxes widened by how far the sea can move them.
-    mesh->set("u_max_displacement", float(sea.largest_displacement()));
+    mesh->set("u_max_displacement", view.max_displacement);
     glEnable(GL_DEPTH_TEST);
     glUseProgram(mesh->id());
-    if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    patches_.draw();
-    if (wireframe_) glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    patches_.draw(*mesh, view, tess_scale_, wireframe_);
     glDisable(GL_DEPTH_TEST);
 }
 

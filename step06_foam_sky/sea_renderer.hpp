@@ -8,7 +8,11 @@
 #include "common/shader.hpp"
 #include "step06_foam_sky/gbuffer.hpp"
 #include "step06_foam_sky/look_params.hpp"
+#ifdef OCEAN_GL_ES
+#include "step06_foam_sky/patch_lod.hpp"
+#else
 #include "step06_foam_sky/patch_grid.hpp"
+#endif
 #include "step06_foam_sky/sea.hpp"
 #include "step06_foam_sky/sky.hpp"
 
@@ -18,6 +22,15 @@
 #include <vector>
 
 namespace step06 {
+
+// The patches around the camera: cut by the tessellator where there are tessellation shaders
+// (GL 4.x), on the CPU where there are none (ES 3.0, WebGL 2: patch_lod.hpp). Both draw into the
+// same G-buffer with the same ocean.frag.
+#ifdef OCEAN_GL_ES
+using SeaPatches = PatchLod;
+#else
+using SeaPatches = PatchGrid;
+#endif
 
 // The `view` parameter's choices, in its order: the picture, or one of its ingredients. They are
 // also ocean_shade.glsl's DEBUG_VIEW numbers (0: the shaded picture).
@@ -62,7 +75,7 @@ private:
                    const SeaFrame& frame);
 
     ocean::ProgramFactory programs_;
-    PatchGrid patches_;
+    SeaPatches patches_;
     GBuffer gbuffer_;
     ocean::Generation patches_changed_;  // patch_count, tess_patch_size
     unsigned patches_built_for_ = 0;

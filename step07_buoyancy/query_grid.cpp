@@ -72,12 +72,16 @@ void QueryGrid::draw(glm::dvec3 origin, const glm::mat4& view_projection) {
     ocean::buffer_data(buffer_, GLsizeiptr(positions.size() * sizeof(glm::vec3)), positions.data(), GL_STREAM_DRAW);
     p->set("u_view_projection", view_projection);
     glUseProgram(p->id());
+#ifndef OCEAN_GL_ES  // ES always takes a point's size from gl_PointSize
     glEnable(GL_PROGRAM_POINT_SIZE);
+#endif
     glEnable(GL_DEPTH_TEST);
     glBindVertexArray(vao_.id());
     glDrawArrays(GL_POINTS, 0, GLsizei(positions.size()));
     glDisable(GL_DEPTH_TEST);
+#ifndef OCEAN_GL_ES
     glDisable(GL_PROGRAM_POINT_SIZE);
+#endif
 }
 
 }  // namespace step07

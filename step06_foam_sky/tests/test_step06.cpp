@@ -11,6 +11,7 @@
 #include "step06_foam_sky/foam.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
 #include "step06_foam_sky/look_params.hpp"
+#include "step06_foam_sky/patch_lod.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "step06_foam_sky/tessellation.hpp"
 #include "step06_foam_sky/tonemap.hpp"
@@ -723,6 +724,48 @@ TEST(Step06Tessellation, LevelFallsWithDistance) {
     EXPECT_EQ(step06::triangles_for_uniform_level(3.2), 2 * 4 * 4);
 }
 
+
+// Without tessellation shaders (ES) a patch is cut on the CPU at a power of two never coarser than
+// the tessellator's level at its centre, and at most twice as fine.
+TEST(Step06PatchLod, APowerOfTwoNeverCoarserThanTheTessellator) {
+    for (double d = 0.5; d < 5000; d *= 1.1) {
+        const int level = step06::patch_lod_level(d, 16, 12);
+        const double wanted = step06::tessellation_level(d, 16, 12);
+        EXPECT_EQ(level & (level - 1), 0) << level << " at " << d << " m";
+        EXPECT_GE(level, wanted - 1e-9) << d;
+        EXPECT_LT(level, 2 * wanted + 1e-9) << d;
+    }
+}
+
+// No crack: where two patches meet, the vertices each puts on the shared edge (as fractions of
+// the edge: snapped index / level) are the same set from both sides, for every pair of neighbours
+// of a grid seen from 3 m above the water, where the levels run from 64 down to 1.
+TEST(Step06PatchLod, NeighboursPutTheSameVerticesOnTheirSharedEdge) {
+    const int count = 48;
+    const float size = 16;
+    const step06::PatchView view{glm::mat4(1.0f), glm::vec3(13.0f, 3.0f, 8.0f), glm::vec2(0.0f), 0.0f};
+    const std::vector<int> levels = step06::patch_levels(count, size, 12, view);
+    std::set<int> seen(levels.begin(), levels.end());
+    EXPECT_EQ(seen, (std::set<int>{1, 2, 4, 8, 16, 32, 64})) << "every level is in the grid";
+    const auto edge = [](int level, int neighbour_level) {
+        std::set<double> fractions;
+        for (int i = 0; i <= level; ++i)
+            fractions.insert(double(step06::snap_to_neighbour(i, level, neighbour_level)) / level);
+        return fractions;
+    };
+    const auto level_at = [&](int i, int j) { return levels[std::size_t(j * count + i)]; };
+    int mixed = 0;
+    for (int j = 0; j < count; ++j)
+        for (int i = 0; i < count; ++i) {
+            const int a = level_at(i, j);
+            for (const int b : {i + 1 < count ? level_at(i + 1, j) : 0, j + 1 < count ? level_at(i, j + 1) : 0}) {
+                if (b == 0) continue;  // the grid's edge
+                EXPECT_EQ(edge(a, b), edge(b, a)) << "levels " << a << " and " << b;
+                mixed += a != b;
+            }
+        }
+    EXPECT_GT(mixed, 100) << "the test meets edges between levels";
+}
 
 // The clouds' lattice hash behaves as uniform noise: over 256 x 256 lattice points (negative
 // ones too) its mean is 1/2 and its variance 1/12 (a uniform variable's), neighbours are
