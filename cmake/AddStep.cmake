@@ -61,6 +61,12 @@ function(add_step name)
       if(EXISTS "${_dir}/shaders")
         target_link_options(${name} PRIVATE "SHELL:--preload-file ${_dir}/shaders@${_dir}/shaders")
       endif()
+      # And the headers the shaders include from the chapter's folder (step06's texture_units.h:
+      # the one table of texture units, read by the C++ and the GLSL alike).
+      file(GLOB _shared_headers "${_dir}/*.h")
+      foreach(_header IN LISTS _shared_headers)
+        target_link_options(${name} PRIVATE "SHELL:--preload-file ${_header}@${_header}")
+      endforeach()
     endforeach()
     set_property(GLOBAL APPEND PROPERTY OCEAN_STEP_SOURCE_DIRS "${CMAKE_CURRENT_SOURCE_DIR}")
     set_property(GLOBAL APPEND PROPERTY OCEAN_STEPS ${name})

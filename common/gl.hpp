@@ -16,6 +16,11 @@ typedef GLADapiproc (*GLADloadfunc)(const char* name);
 #include <cstring>
 #include <utility>
 
+#if defined(__EMSCRIPTEN__)
+// WebGL 2's getBufferSubData, which emscripten provides and ES 3.0's header does not declare.
+extern "C" void glGetBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, void* data);
+#endif
+
 namespace ocean {
 
 // How many GL objects the handles own right now: the soak test watches it for leaks. (One
@@ -187,7 +192,11 @@ inline void buffer_sub_data(const Buffer& buffer, GLintptr offset, GLsizeiptr si
 // not be mapped. Waits for whatever the GPU still has to write into it (a fence tells when it
 // will not: step07's fenced_slots.hpp).
 inline bool read_buffer(const Buffer& buffer, GLsizeiptr size, void* out) {
-#if OCEAN_GL_BIND_TO_EDIT
+#if defined(__EMSCRIPTEN__)
+    // WebGL 2 maps no buffer for reading; it copies out of one (getBufferSubData).
+    detail::BindForEdit edit(GL_COPY_READ_BUFFER, buffer.id());
+    glGetBufferSubData(GL_COPY_READ_BUFFER, 0, size, out);
+#elif OCEAN_GL_BIND_TO_EDIT
     detail::BindForEdit edit(GL_COPY_READ_BUFFER, buffer.id());
     const void* data = glMapBufferRange(GL_COPY_READ_BUFFER, 0, size, GL_MAP_READ_BIT);
     if (data == nullptr) return false;
@@ -231,7 +240,9 @@ inline void instance_attribute(const VertexArray& vao, GLuint index, const Buffe
 #endif
 }
 
-// The vertex array's indices (glDrawElements reads them from `buffer`).
+// The vertex array's indices (glDrawElements reads them from `buffer`). Call it before the buffer
+// gets its data: WebGL fixes a buffer as indices or not at its first binding, and buffer_data
+// binds it to a copy target, after which it could never hold indices.
 inline void element_buffer(const VertexArray& vao, const Buffer& buffer) {
 #if OCEAN_GL_BIND_TO_EDIT
     detail::BindForEdit edit(GL_VERTEX_ARRAY_BINDING, vao.id());

@@ -61,13 +61,7 @@ void PatchLod::build(int count, float size) {
         const std::vector<unsigned> edges = ocean::triangle_edges(triangles);
         m.grid = ocean::make_buffer();
         ocean::buffer_data(m.grid, GLsizeiptr(grid.size() * sizeof(glm::vec2)), grid.data(), GL_STATIC_DRAW);
-        m.triangles = ocean::make_buffer();
-        ocean::buffer_data(m.triangles, GLsizeiptr(triangles.size() * sizeof(unsigned)), triangles.data(), GL_STATIC_DRAW);
-        m.edges = ocean::make_buffer();
-        ocean::buffer_data(m.edges, GLsizeiptr(edges.size() * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
         m.instances = ocean::make_buffer();
-        m.triangle_indices = GLsizei(triangles.size());
-        m.edge_indices = GLsizei(edges.size());
         // Two vertex arrays alike but for their indices: the triangles, or their edges as lines.
         m.vao = ocean::make_vertex_array();
         m.edges_vao = ocean::make_vertex_array();
@@ -77,8 +71,15 @@ void PatchLod::build(int count, float size) {
             ocean::instance_attribute(*vao, 2, m.instances, 4, sizeof(PatchInstance),
                                       offsetof(PatchInstance, neighbour_levels));
         }
+        // Index buffers are made indices before they hold data (element_buffer says why).
+        m.triangles = ocean::make_buffer();
         ocean::element_buffer(m.vao, m.triangles);
+        ocean::buffer_data(m.triangles, GLsizeiptr(triangles.size() * sizeof(unsigned)), triangles.data(), GL_STATIC_DRAW);
+        m.edges = ocean::make_buffer();
         ocean::element_buffer(m.edges_vao, m.edges);
+        ocean::buffer_data(m.edges, GLsizeiptr(edges.size() * sizeof(unsigned)), edges.data(), GL_STATIC_DRAW);
+        m.triangle_indices = GLsizei(triangles.size());
+        m.edge_indices = GLsizei(edges.size());
     }
 }
 

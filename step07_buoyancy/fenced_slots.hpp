@@ -8,6 +8,10 @@
 
 #include "common/gl.hpp"
 
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
+
 #include <array>
 #include <optional>
 
@@ -43,8 +47,18 @@ public:
             if (fences_[std::size_t(s)] != nullptr && (oldest < 0 || order_[std::size_t(s)] < order_[std::size_t(oldest)])) oldest = s;
         if (oldest < 0) return std::nullopt;
         // GL_SYNC_FLUSH_COMMANDS_BIT makes sure the fence reaches the GPU; 10 s: a GPU that lost
-        // the copy rather than one that is slow.
+        // the copy rather than one that is slow. A web page may not block (WebGL's longest client
+        // wait is 0): it hands the browser its turn until the copy has landed (the frame loop's
+        // emscripten_sleep, through ASYNCIFY), which is the same wait, and the same one frame.
+#if defined(__EMSCRIPTEN__)
+        GLenum state = GL_TIMEOUT_EXPIRED;
+        for (int turns = 0; turns < 10000 && state == GL_TIMEOUT_EXPIRED; ++turns) {
+            state = glClientWaitSync(fences_[std::size_t(oldest)], 0, 0);
+            if (state == GL_TIMEOUT_EXPIRED) emscripten_sleep(1);
+        }
+#else
         const GLenum state = glClientWaitSync(fences_[std::size_t(oldest)], GL_SYNC_FLUSH_COMMANDS_BIT, 10000000000ull);
+#endif
         glDeleteSync(fences_[std::size_t(oldest)]);
         fences_[std::size_t(oldest)] = nullptr;
         if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED) return std::nullopt;

@@ -135,15 +135,16 @@ private:
                 time()};
         }
 #endif
-        // Last frame's copy first (exactly a frame late), then this frame's is queued. The very
-        // first is waited for at once: with no bodies yet there is nothing to keep moving while
-        // it lands, and they are dropped on the sea of the frame they appear in.
-        std::optional<step07::ArrivedMaps> arrived = readback_.take();
-        readback_.request(sea_.simulation(), time());
-        latency_frames_ = 1;
-        if (!arrived && !sea_now_) {
+        // The very first sea is read at once, waiting for the GPU: with no bodies yet there is
+        // nothing to keep moving meanwhile, and they are dropped on the sea of the frame they
+        // appear in. After it, last frame's copy first (a frame late), then this frame's is queued.
+        std::optional<step07::ArrivedMaps> arrived;
+        latency_frames_ = sea_now_ ? 1 : 0;
+        if (!sea_now_) {
+            arrived = step07::MapReadback::read_now(sea_.simulation(), time());
+        } else {
             arrived = readback_.take();
-            latency_frames_ = 0;
+            readback_.request(sea_.simulation(), time());
         }
         if (!arrived) return std::nullopt;
         return TimedSea{

@@ -3,6 +3,7 @@
 #include "common/gl_texture.hpp"
 
 #include <cstddef>
+#include <utility>
 
 namespace step07 {
 
@@ -38,6 +39,20 @@ std::optional<ArrivedMaps> MapReadback::take() {
     const auto middle = both.begin() + std::ptrdiff_t(both.size() / 2);
     out.displacement.assign(both.begin(), middle);
     out.slopes.assign(middle, both.end());
+    return out;
+}
+
+ArrivedMaps MapReadback::read_now(const step06::SeaSimulation& ocean, double time) {
+    ArrivedMaps out;
+    out.time = time;
+    out.n = ocean.resolution();
+    for (int layer = 0; layer < ocean.cascade_count(); ++layer) {
+        for (const auto& [texture, map] : {std::pair{ocean.displacement_texture(), &out.displacement},
+                                           std::pair{ocean.slopes_texture(), &out.slopes}}) {
+            const std::vector<float> texels = ocean::read_texture_layer(texture, 0, layer, out.n);
+            map->insert(map->end(), texels.begin(), texels.end());
+        }
+    }
     return out;
 }
 

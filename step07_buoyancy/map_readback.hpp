@@ -30,6 +30,8 @@ public:
     // The oldest copy in flight (an earlier frame's: call it before request), waited for if it has
     // not landed yet (fenced_slots.hpp says why that costs nothing on a GPU).
     std::optional<ArrivedMaps> take();
+    // The maps of this frame at once, waiting for the GPU: for the first sea, when nothing moves yet.
+    static ArrivedMaps read_now(const step06::SeaSimulation& ocean, double time);
     // Drops the copies in flight (this frame's maps came from the CPU).
     void forget() { slots_.forget(); }
 

@@ -59,7 +59,8 @@ vec4 shade_sea_pixel(ivec2 pixel) {
     if (dot(n, v) < 0.0) n = normalize(n + v * (0.01 - dot(n, v)));  // a normal facing away: bend it back
     // The two stages' cover (active whitecap, residual foam), and how much of the pixel foam
     // covers in all: the residual shows where the active foam leaves room.
-    FoamCover cover = u_show_foam ? foam_cover(rest_xz, footprint) : FoamCover(0.0, 0.0, 1.0);
+    FoamCover cover = FoamCover(0.0, 0.0, 1.0);  // not a ?: : WebGL allows no ternary on a struct
+    if (u_show_foam) cover = foam_cover(rest_xz, footprint);
     float foam = cover.whitecap + cover.residual * (1.0 - cover.whitecap);
     // How much of the light reaching the pixel its foam sends back, per unit of fresh foam's: the
     // breaking core's turbulence varies it a little, the residual is thinner (foam_pattern.hpp's

@@ -126,7 +126,8 @@ TEST_F(FoamOnOneWave, FoamIsDrawnWhereItsWaterParticleIs) {
         ocean.bind_maps(*mesh);
         glEnable(GL_DEPTH_TEST);
         glUseProgram(mesh->id());
-        grid.draw();
+        grid.draw(*mesh, step06::PatchView{view_projection, centre + glm::vec3(0, 10, 0), glm::vec2(32, 8), float(2 * amplitude + 1)},
+                  1000.0f, false);
         glDisable(GL_DEPTH_TEST);
         glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous_framebuffer));
 

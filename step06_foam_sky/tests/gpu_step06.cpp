@@ -764,7 +764,7 @@ struct Tessellated : Step06Gpu {
         glUseProgram(program->id());
         glEnable(GL_RASTERIZER_DISCARD);
         glBeginQuery(GL_PRIMITIVES_GENERATED, query.id());
-        grid.draw();
+        grid.draw(*program, step06::PatchView{vp, eye, glm::vec2(0.0f), 1.0f}, tess_scale, false);
         glEndQuery(GL_PRIMITIVES_GENERATED);
         glDisable(GL_RASTERIZER_DISCARD);
         GLuint64 count = 0;

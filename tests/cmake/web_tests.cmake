@@ -13,6 +13,12 @@ foreach(_step IN LISTS OCEAN_STEPS)
             "${PROJECT_SOURCE_DIR}/${_step}/golden.png" "${CMAKE_BINARY_DIR}/test-output/web/${_step}")
   set_tests_properties(${_step}.web.smoke PROPERTIES LABELS "web;${_step}" TIMEOUT 240 SKIP_RETURN_CODE 77)
 endforeach()
+# step07's bodies read the sea a frame late without compute shaders, the golden's on FFTW's maps of
+# each frame: natively its limit is 5 (step07_buoyancy/CMakeLists.txt), here the browser's 1.5 more.
+# Measured 4.02, as natively in ES 3.0 (3.95).
+if(TEST step07_buoyancy.web.smoke)
+  set_tests_properties(step07_buoyancy.web.smoke PROPERTIES ENVIRONMENT "SMOKE_RMSE=6.5")
+endif()
 add_test(NAME step02_sine3d.web.address_sets_a_parameter
   COMMAND bash "${_web_smoke}" "${OCEAN_WEB_SITE}" step02_sine3d $<TARGET_FILE:image_compare>
           "${PROJECT_SOURCE_DIR}/step02_sine3d/golden.png" "${CMAKE_BINARY_DIR}/test-output/web/step02_sine3d"
