@@ -5,8 +5,8 @@
 #
 # Installs what the browser build needs (Debian's emscripten and chromium; playwright-core from npm
 # for the browser tests), fetches Dear ImGui 1.86's sources from Debian's archive (checked by
-# their hash: the native build links the same version), builds every chapter that runs without
-# compute shaders to WebAssembly in build/web/site (cmake/Web.cmake), writes the index page
+# their hash: the native build links the same version), builds every chapter to WebAssembly in
+# build/web/site (cmake/Web.cmake: the portable profile, without compute shaders), writes the index page
 # (web/make_index.py) and serves it on http://127.0.0.1:PORT/ (web/serve.py; default 8080) until
 # Ctrl-C. --no-serve stops after the build (CI: the tests in tests/web drive the pages then).
 

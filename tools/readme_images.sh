@@ -66,6 +66,21 @@ panel "$root/step06_foam_sky/streaks_beaufort.png" 400x400 2 \
   "20 m/s (Beaufort 8): streaks along the wind|$scratch/beaufort20.png"
 echo step06_foam_sky/streaks_beaufort.png
 run step06_foam_sky tessellation.png --set wireframe=true --camera overview
+# The same patches cut on the CPU where there are no tessellation shaders (patch_lod.hpp): from the
+# ES build (OCEAN_ES_BUILD, default build/es), beside the tessellator's, from 3 m above the water.
+es_build=${OCEAN_ES_BUILD:-$root/build/es}
+if [ -x "$es_build/step06_foam_sky/step06_foam_sky" ]; then
+  lod_flags=(--size 480x270 --frames 11 --time 4 --dt 0.1 --set wireframe=true --set camera_pitch=30 --set camera_distance=6)
+  shot step06_foam_sky "$scratch/tessellated.png" "${lod_flags[@]}"
+  "$es_build/step06_foam_sky/step06_foam_sky" --headless --screenshot "$scratch/cut_on_cpu.png" "${lod_flags[@]}" > /dev/null \
+    || die "the ES build's step06_foam_sky failed drawing patch_lod.png"
+  panel "$root/step06_foam_sky/patch_lod.png" 480x270 2 \
+    "GL 4.5: the tessellator's levels, edge by edge|$scratch/tessellated.png" \
+    "ES 3.0: a power of two a patch, edges snapped|$scratch/cut_on_cpu.png"
+  echo step06_foam_sky/patch_lod.png
+else
+  echo "step06_foam_sky/patch_lod.png: kept (it needs the ES build: OCEAN_PRESET=es ./ocean test)"
+fi
 
 # The combed streaks and what removed them: the same mid-distance strip (no bloom) filtered four
 # ways, the last rendered at 4 x 4 the pixels and box-averaged down (what a pixel should show).

@@ -26,7 +26,7 @@ def chapter_row(step, readme, has_page):
     if has_page:
         open_link = f'<a href="{step}.html">open</a>'
     else:
-        open_link = ('<span class="needs">needs OpenGL 4.5 (compute shaders): '
+        open_link = ('<span class="needs">not in the browser build: '
                      f'<code>./ocean run {step}</code> natively</span>')
     return (f"<tr><td><b>{html.escape(step)}</b><br>{html.escape(title)}"
             f'<div class="notes">{html.escape(notes)}</div></td>'

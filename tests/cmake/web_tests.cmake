@@ -1,13 +1,10 @@
-# web: each chapter that runs without compute shaders, as a page in headless chromium (tests/web):
+# web: each chapter, as a page in headless chromium (tests/web):
 # its smoke run matches the native golden within the browser's tolerance with nothing in the
 # console but logs, and a parameter set from the address changes step02's picture. They drive the
 # pages ./ocean web built into OCEAN_WEB_SITE, and are skipped (77) where there are none.
 set(OCEAN_WEB_SITE "${PROJECT_SOURCE_DIR}/build/web/site" CACHE PATH "the pages ./ocean web builds (tests/web)")
 set(_web_smoke "${CMAKE_CURRENT_SOURCE_DIR}/web/smoke.sh")
 foreach(_step IN LISTS OCEAN_STEPS)
-  if(_step IN_LIST OCEAN_TESSELLATION_CHAPTERS)
-    continue()
-  endif()
   add_test(NAME ${_step}.web.smoke
     COMMAND bash "${_web_smoke}" "${OCEAN_WEB_SITE}" ${_step} $<TARGET_FILE:image_compare>
             "${PROJECT_SOURCE_DIR}/${_step}/golden.png" "${CMAKE_BINARY_DIR}/test-output/web/${_step}")
