@@ -7,8 +7,10 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace step06 {
 
@@ -37,12 +39,18 @@ int snap_to_neighbour(int index, int level, int neighbour_level) {
 
 std::vector<int> patch_levels(int count, float size, float tess_scale, const PatchView& view) {
     std::vector<int> levels(std::size_t(count) * std::size_t(count));
+    const glm::dvec2 midpoints[4] = {{0.0, 0.5}, {0.5, 0.0}, {1.0, 0.5}, {0.5, 1.0}};  // of the four edges, in patches
     for (int j = 0; j < count; ++j)
         for (int i = 0; i < count; ++i) {
-            const glm::dvec2 centre =
-                glm::dvec2(view.grid_offset) + (glm::dvec2(i, j) - 0.5 * count + 0.5) * double(size);
-            const double distance = glm::length(glm::dvec3(centre.x, 0.0, centre.y) - glm::dvec3(view.eye));
-            levels[std::size_t(j) * std::size_t(count) + std::size_t(i)] = patch_lod_level(distance, size, tess_scale);
+            // The tessellator cuts each edge by the distance to its midpoint and the inside as
+            // finely as the finest edge: so the distance to the nearest edge midpoint.
+            const glm::dvec2 corner = glm::dvec2(view.grid_offset) + (glm::dvec2(i, j) - 0.5 * count) * double(size);
+            double nearest = std::numeric_limits<double>::infinity();
+            for (const glm::dvec2& m : midpoints) {
+                const glm::dvec2 p = corner + m * double(size);
+                nearest = std::min(nearest, glm::length(glm::dvec3(p.x, 0.0, p.y) - glm::dvec3(view.eye)));
+            }
+            levels[std::size_t(j) * std::size_t(count) + std::size_t(i)] = patch_lod_level(nearest, size, tess_scale);
         }
     return levels;
 }

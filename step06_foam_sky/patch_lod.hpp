@@ -1,9 +1,10 @@
 // Chapter 5.1 without tessellation shaders (OpenGL ES 3.0, WebGL 2): the same patches around the
 // camera (patch_grid.hpp), each cut on the CPU instead of by the tessellator. A patch is drawn at
-// a level L, L x L quads, a power of two from 1 to 64: the tessellator's level at its centre
-// (tessellation.hpp), rounded up, so it is never coarser than the tessellated sea. There is one
-// mesh per level, drawn once a frame for all the patches of that level (instanced), each patch
-// given its place and its four neighbours' levels.
+// a level L, L x L quads, a power of two from 1 to 64: the tessellator's finest level for it (its
+// inner level: the level of its nearest edge, tessellation.hpp), rounded up, so it is never
+// coarser than the tessellated sea. There is one mesh per level, drawn once a frame for all the
+// patches of that level (instanced: the mesh repeated, each copy given its patch's place and its
+// four neighbours' levels as attributes that advance once a copy).
 //
 // Where two patches of different levels meet, the finer one has vertices the coarser one lacks.
 // Displaced by the waves, such a vertex would not lie on the coarser patch's edge, and a crack
@@ -25,8 +26,8 @@ namespace step06 {
 constexpr int kLodLevels = 7;      // levels 1, 2, 4, ..., 64 segments a side
 constexpr int kMaxLodLevel = 64;   // the tessellator's largest level (GL's least maximum)
 
-// The level a patch whose centre is `distance` metres from the eye is drawn at: the tessellator's
-// level there (tessellation_level), rounded up to a power of two.
+// The level a patch whose nearest edge midpoint is `distance` metres from the eye is drawn at: the
+// tessellator's level there (tessellation_level), rounded up to a power of two.
 int patch_lod_level(double distance, double patch_size, double tess_scale);
 
 // Where index `index` (0 to level) along an edge of a patch of `level` lands when the neighbour

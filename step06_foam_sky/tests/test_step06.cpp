@@ -737,6 +737,25 @@ TEST(Step06PatchLod, APowerOfTwoNeverCoarserThanTheTessellator) {
     }
 }
 
+// Every patch of a grid seen from 3 m up is cut at least as finely as the tessellator cuts any of
+// its edges (the distance to each edge's midpoint, ocean.tesc) or its inside (the finest edge's).
+TEST(Step06PatchLod, NoPatchIsCoarserThanTheTessellatorCutsIt) {
+    const int count = 48;
+    const float size = 16;
+    const step06::PatchView view{glm::mat4(1.0f), glm::vec3(13.0f, 3.0f, 8.0f), glm::vec2(0.0f), 0.0f};
+    const std::vector<int> levels = step06::patch_levels(count, size, 12, view);
+    for (int j = 0; j < count; ++j)
+        for (int i = 0; i < count; ++i) {
+            const glm::dvec2 corner = (glm::dvec2(i, j) - 0.5 * count) * double(size);
+            double finest = 0;
+            for (const glm::dvec2 m : {glm::dvec2(0, 0.5), glm::dvec2(0.5, 0), glm::dvec2(1, 0.5), glm::dvec2(0.5, 1)}) {
+                const glm::dvec2 p = corner + m * double(size);
+                finest = std::max(finest, step06::tessellation_level(glm::length(glm::dvec3(p.x, 0, p.y) - glm::dvec3(view.eye)), size, 12));
+            }
+            EXPECT_GE(levels[std::size_t(j * count + i)], finest - 1e-9) << "patch " << i << ", " << j;
+        }
+}
+
 // No crack: where two patches meet, the vertices each puts on the shared edge (as fractions of
 // the edge: snapped index / level) are the same set from both sides, for every pair of neighbours
 // of a grid seen from 3 m above the water, where the levels run from 64 down to 1.
