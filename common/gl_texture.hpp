@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -345,20 +346,38 @@ inline Texture make_tiling_colour_texture_2d(GLsizei width, GLsizei height, cons
     return texture;
 }
 
+#if OCEAN_GL_BIND_TO_EDIT
+namespace detail {
+// Layers first_layer .. first_layer + layers - 1 of level `level` of a float RGBA 2D array texture
+// (`side` x `side` texels a layer), read through a framebuffer, one after the other, to
+// `destination`: an address in client memory, or with a buffer bound to GL_PIXEL_PACK_BUFFER a
+// byte offset in it (glReadPixels then only queues the copy). Where GL has no glGetTexImage (ES)
+// and no glGetTextureImage (GL 4.1).
+inline void read_layers(GLuint texture, GLint level, GLint first_layer, GLsizei layers, GLsizei side,
+                        std::uintptr_t destination) {
+    const std::uintptr_t layer_bytes = std::uintptr_t(side) * std::uintptr_t(side) * 4 * sizeof(float);
+    GLuint reader = 0;
+    glGenFramebuffers(1, &reader);
+    {
+        const BindForEdit edit(GL_READ_FRAMEBUFFER, reader);
+        for (GLint i = 0; i < layers; ++i) {
+            glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, texture, level, first_layer + i);
+            glReadPixels(0, 0, side, side, GL_RGBA, GL_FLOAT,
+                         reinterpret_cast<void*>(destination + std::uintptr_t(i) * layer_bytes));
+        }
+    }
+    glDeleteFramebuffers(1, &reader);
+}
+}  // namespace detail
+#endif
+
 // Level `level` (`side` x `side` texels) of layer `layer` of a float RGBA 2D array texture, read
 // back to the CPU: through a framebuffer where GL cannot read a texture directly (ES has no
 // glGetTexImage). Row major, 4 floats a texel.
 inline std::vector<float> read_texture_layer(GLuint texture, GLint level, GLint layer, GLsizei side) {
     std::vector<float> texels(std::size_t(side) * std::size_t(side) * 4);
 #if OCEAN_GL_BIND_TO_EDIT
-    GLuint reader = 0;
-    glGenFramebuffers(1, &reader);
-    {
-        const detail::BindForEdit edit(GL_READ_FRAMEBUFFER, reader);
-        glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, texture, level, layer);
-        glReadPixels(0, 0, side, side, GL_RGBA, GL_FLOAT, texels.data());
-    }
-    glDeleteFramebuffers(1, &reader);
+    detail::read_layers(texture, level, layer, 1, side, reinterpret_cast<std::uintptr_t>(texels.data()));
 #else
     glGetTextureSubImage(texture, level, 0, 0, layer, side, side, 1, GL_RGBA, GL_FLOAT,
                          GLsizei(texels.size() * sizeof(float)), texels.data());
@@ -373,20 +392,11 @@ inline std::vector<float> read_texture_layer(GLuint texture, GLint level, GLint 
 inline void queue_layers_into_buffer(GLuint texture, GLsizei side, GLsizei layers, const Buffer& buffer, GLintptr offset) {
     // With a buffer bound to GL_PIXEL_PACK_BUFFER the "pointer" is an offset into it.
     const detail::BindForEdit pack(GL_PIXEL_PACK_BUFFER, buffer.id());
-    const GLsizeiptr layer_bytes = GLsizeiptr(side) * side * 4 * GLsizeiptr(sizeof(float));
 #if OCEAN_GL_BIND_TO_EDIT
-    GLuint reader = 0;
-    glGenFramebuffers(1, &reader);
-    {
-        const detail::BindForEdit edit(GL_READ_FRAMEBUFFER, reader);
-        for (GLint layer = 0; layer < layers; ++layer) {
-            glFramebufferTextureLayer(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, texture, 0, layer);
-            glReadPixels(0, 0, side, side, GL_RGBA, GL_FLOAT, reinterpret_cast<void*>(offset + layer * layer_bytes));
-        }
-    }
-    glDeleteFramebuffers(1, &reader);
+    detail::read_layers(texture, 0, 0, layers, side, std::uintptr_t(offset));
 #else
-    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(layers * layer_bytes), reinterpret_cast<void*>(offset));
+    const GLsizeiptr bytes = GLsizeiptr(side) * side * 4 * GLsizeiptr(sizeof(float)) * layers;
+    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(bytes), reinterpret_cast<void*>(offset));
 #endif
 }
 
