@@ -1,0 +1,40 @@
+// Chapter 8.2: the fast Fourier transform the wave field runs on, in double precision on the CPU.
+// step05 uses the FFT (on the GPU, and FFTW as its floor); here it is written out, because the
+// wave field around the boat is small (128 x 128) and its bodies need it on the CPU in the same
+// substep (README, section 2: why the field is on the CPU).
+//
+// Radix 2, in place (Cooley and Tukey): a transform of length N is two of length N/2, one over
+// the even samples and one over the odd, joined by N/2 "butterflies"
+//     X[k]       = E[k] + w^k O[k]
+//     X[k + N/2] = E[k] - w^k O[k],     w = e^{-2 pi i / N} (forward), e^{+2 pi i / N} (inverse)
+// log2 N times over: N log2 N work in place of the direct sum's N^2. The samples are first put in
+// bit-reversed order, so that each stage's pairs sit side by side.
+#pragma once
+
+#include <complex>
+#include <vector>
+
+namespace step08 {
+
+using Complex = std::complex<double>;
+
+class Fft2d {
+public:
+    // `n`: a power of two from 2 to 4096 (anything else throws ocean::Error).
+    explicit Fft2d(int n);
+    int size() const { return n_; }
+    // In place, on n x n samples, row (z) major. Forward: X[k] = sum_x x[x] e^{-2 pi i k x / N}
+    // on each axis; inverse: the same with e^{+...}, unnormalised (inverse(forward(x)) = N^2 x).
+    void forward(std::vector<Complex>& field) const { transform(field, -1); }
+    void inverse(std::vector<Complex>& field) const { transform(field, +1); }
+
+private:
+    void transform(std::vector<Complex>& field, int sign) const;
+    void transform_line(Complex* line, std::ptrdiff_t stride, int sign) const;
+
+    int n_;
+    std::vector<int> bit_reversed_;
+    std::vector<Complex> twiddles_;  // e^{-2 pi i j / N}, j < N/2
+};
+
+}  // namespace step08
