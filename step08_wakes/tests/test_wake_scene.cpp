@@ -1,0 +1,92 @@
+// The program's boat and stones, as a learner would check them: the boat goes where it is steered,
+// its wake lies behind it (none ahead), the grid keeps up with it, and a stone makes rings around
+// where it fell.
+#include "step08_wakes/wake_scene.hpp"
+
+#include "common/constants.hpp"
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+step08::WaveFieldSettings small_field() {
+    step08::WaveFieldSettings s;
+    s.n = 64;
+    s.cell = 1;
+    s.absorbing_width = 8;
+    return s;
+}
+
+// The mean of eta^2 over the cells within `radius` of `at`.
+double wave_power_near(const step08::WaveField& f, glm::dvec2 at, double radius) {
+    double sum = 0;
+    int count = 0;
+    for (int j = 0; j < f.n(); ++j)
+        for (int i = 0; i < f.n(); ++i)
+            if (glm::length(f.cell_centre(i, j) - at) < radius) {
+                sum += f.heights()[std::size_t(j * f.n() + i)] * f.heights()[std::size_t(j * f.n() + i)];
+                ++count;
+            }
+    return count > 0 ? sum / count : 0;
+}
+
+TEST(Step08WakeScene, TheBoatSailsWhereItIsSteeredAndTheGridFollows) {
+    step08::WakeScene scene(small_field());
+    step08::BoatSettings boat;  // 4 m/s, 20 degrees a second with the rudder hard over
+    scene.sail(5, boat, 0);
+    EXPECT_NEAR(scene.boat_position().x, 20, 1e-9);
+    EXPECT_NEAR(scene.boat_position().y, 0, 1e-9);
+    scene.sail(2, boat, 1);  // hard to starboard: 40 degrees, from +x towards +z
+    EXPECT_NEAR(std::atan2(scene.boat_heading().y, scene.boat_heading().x) * 180 / ocean::kPi, 40, 1e-9);
+    // The grid's centre within a cell of a quarter side behind the boat.
+    const step08::WaveField& f = scene.field();
+    const glm::dvec2 centre = 0.5 * (f.cell_centre(0, 0) + f.cell_centre(f.n() - 1, f.n() - 1));
+    const glm::dvec2 expected = scene.boat_position() - 0.25 * f.side() * scene.boat_heading();
+    EXPECT_LT(glm::length(centre - expected), 1.5 * f.settings().cell);
+}
+
+// The waves are behind the boat: a steady wake cannot run ahead of its source (deep water's
+// waves that keep pace with it are the transverse ones, behind), so ahead of the bow the water
+// is nearly still; behind, the wake.
+TEST(Step08WakeScene, TheWakeIsBehindTheBoatNotAhead) {
+    step08::WakeScene scene(small_field());
+    step08::BoatSettings boat;
+    boat.speed = 3;
+    scene.sail(30, boat, 0);
+    const glm::dvec2 at = scene.boat_position(), ahead = scene.boat_heading();
+    const double in_front = wave_power_near(scene.field(), at + 10.0 * ahead, 4);
+    const double behind = wave_power_near(scene.field(), at - 12.0 * ahead, 4);
+    std::cout << "rms ahead " << std::sqrt(in_front) << " m, behind " << std::sqrt(behind) << " m" << std::endl;
+    EXPECT_GT(behind, 0);
+    EXPECT_LT(in_front, 0.01 * behind);
+}
+
+// A stone on calm water: rings around it, the same height in every direction.
+TEST(Step08WakeScene, AStoneMakesRingsAroundWhereItFell) {
+    step08::WaveFieldSettings s;
+    s.n = 128;
+    s.cell = 0.1;
+    s.absorbing_width = 2;
+    step08::WakeScene scene(s);
+    step08::BoatSettings still;  // a boat at rest that does not touch the water: only the stone
+    still.speed = 0;
+    still.draft = 0;
+    scene.sail(0.1, still, 0);  // the grid takes its place around the boat
+    const glm::dvec2 stone = scene.field().cell_centre(64, 64);
+    scene.drop_stone(stone);
+    scene.sail(2, still, 0);
+    const step08::WaveField& f = scene.field();
+    double north = 0, east = 0, at_3m = 0;
+    for (double r = 2; r < 4; r += 0.05) {
+        north = std::max(north, std::abs(f.height_at(stone + glm::dvec2(0, r))));
+        east = std::max(east, std::abs(f.height_at(stone + glm::dvec2(r, 0))));
+    }
+    at_3m = std::max(north, east);
+    EXPECT_GT(at_3m, 1e-4) << "the rings reached 2 to 4 m in 2 s";
+    EXPECT_NEAR(north / east, 1, 0.02) << "round rings";
+}
+
+}  // namespace

@@ -1,0 +1,51 @@
+// Chapter 8.5: the boat and the stones, as the program runs them: a pressure patch the shape of a
+// hull's waterline sailing at the boat's speed and heading, and stones dropped where the learner
+// clicks, pushing on a wave field that follows the boat. The tests and the README's figures drive
+// the same class, so what they measure is what the window shows.
+#pragma once
+
+#include "step08_wakes/wave_field.hpp"
+
+#include <glm/vec2.hpp>
+
+namespace step08 {
+
+struct BoatSettings {
+    double speed = 4;     // m/s
+    double length = 6;    // m, at the waterline; the beam is a third of it
+    double draft = 0.4;   // m: the hull pushes on the water with rho g draft at its middle
+    double turn_rate = 20;  // degrees a second with the rudder hard over
+};
+
+// Where the patch's pressure is: p / rho = g draft exp(-(a^2 / (2 (L/4)^2) + b^2 / (2 (B/4)^2)))
+// at a metres along the hull from its middle and b across, so 95 % of it lies within the waterline
+// (L long, B = L / 3 wide).
+double hull_pressure(const BoatSettings& boat, glm::dvec2 along_across);
+
+class WakeScene {
+public:
+    explicit WakeScene(const WaveFieldSettings& field);
+
+    // `seconds` of sailing: the boat moves on (turning at `rudder` times its turn rate, -1 to 1;
+    // positive to starboard, its right), the grid follows it, the field is stepped with the boat's
+    // pressure. Cut into steps in which the boat moves at most a cell, so its patch slides
+    // smoothly over the grid.
+    void sail(double seconds, const BoatSettings& boat, double rudder);
+    // A stone's splash at `at` (x, z): an impulse of `impulse` m^4/s (its momentum over the
+    // water's density) spread over `radius` metres.
+    void drop_stone(glm::dvec2 at, double impulse = 0.02, double radius = 0.3);
+
+    const WaveField& field() const { return field_; }
+    glm::dvec2 boat_position() const { return position_; }
+    glm::dvec2 boat_heading() const;  // unit (x, z)
+    double sailed() const { return time_; }
+
+private:
+    WaveField field_;
+    Forcing forcing_;
+    glm::dvec2 position_{0.0};
+    double heading_ = 0;  // radians from +x towards +z
+    double time_ = 0;
+};
+
+}  // namespace step08
