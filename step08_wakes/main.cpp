@@ -38,6 +38,7 @@ public:
         p.add_float("cell", &cell_, 0.1f, 2, "the wave field's cell, metres");
         p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat sails before the first frame");
         p.add_float("relief", &relief_, 1, 50, "how many times the shading exaggerates the slopes").logarithmic();
+        p.add_bool("kelvin_lines", &kelvin_lines_, "draw Kelvin's edges, 19.47 degrees either side of the track");
         p.add_bool("show_field", &show_field_, "outline the field's grid and its absorbing layer");
     }
 
@@ -111,6 +112,8 @@ private:
         p->set("u_heading", glm::vec2(scene_->boat_heading()));
         p->set("u_boat_length", float(boat_.length));
         p->set("u_relief", relief_);
+        p->set("u_kelvin", kelvin_lines_ ? 1.0f : 0.0f);
+        p->set("u_pixels_high", float(framebuffer_size().y));
         p->set("u_show_field", show_field_ ? 1.0f : 0.0f);
         p->set("u_absorbing_width", float(f.settings().absorbing_width));
         ocean::bind_texture(0, GL_TEXTURE_2D, heights_.id());
@@ -134,7 +137,7 @@ private:
     step08::BoatSettings boat_;
     float rudder_ = 0, depth_ = 1000, cell_ = 0.5, warm_up_ = 20, relief_ = 8;
     int cells_choice_ = 1;
-    bool show_field_ = false;
+    bool show_field_ = false, kelvin_lines_ = false;
     double key_rudder_ = 0;
     std::unique_ptr<step08::WakeScene> scene_;
     std::vector<glm::dvec2> stones_;

@@ -125,3 +125,86 @@ std::vector<double> ring_crests(const WaveField& field, double from, double to) 
 
 }  // namespace step08
 
+
+namespace step08 {
+
+HeaveRecord release_hemisphere(const HeaveRelease& r) {
+    WaveFieldSettings settings;
+    settings.n = r.n;
+    settings.cell = r.cell;
+    settings.absorbing_width = 0.2 * r.n * r.cell;
+    settings.absorbing_rate = 3;
+    WaveField field(settings);
+    // Per unit density: the mass is the hemisphere's volume; forces are p / rho times areas.
+    const double mass = 2.0 / 3.0 * ocean::kPi * std::pow(r.radius, 3), area = r.cell * r.cell, g = ocean::kGravity;
+    // The sphere's underside under each cell, below its centre; cells outside it left out.
+    std::vector<std::size_t> under;
+    std::vector<double> below_centre;
+    for (int j = 0; j < r.n; ++j)
+        for (int i = 0; i < r.n; ++i) {
+            const glm::dvec2 x = field.cell_centre(i, j);
+            const double r2 = r.radius * r.radius - (x.x * x.x + x.y * x.y);
+            if (r2 > 0) under.push_back(std::size_t(j) * std::size_t(r.n) + std::size_t(i)), below_centre.push_back(std::sqrt(r2));
+        }
+    // The columns of still water it displaces with its centre at z.
+    const auto displaced = [&](double z) {
+        double v = 0;
+        for (double b : below_centre) v += std::max(0.0, b - z) * area;
+        return v;
+    };
+    HeaveRecord record;
+    double low = -r.radius, high = r.radius;  // the rest: the columns' volume is the mass's
+    for (int i = 0; i < 60; ++i) (displaced(0.5 * (low + high)) > mass ? low : high) = 0.5 * (low + high);
+    record.rest = 0.5 * (low + high);
+    for (double b : below_centre) record.waterplane += b > record.rest ? area : 0;
+    double z = record.rest + r.lift, v = 0;
+    // Held there until the water has settled: the surface under the hull at its underside (the
+    // pressure g d holds it there, exactly: -P / g is the steady state), flat elsewhere.
+    if (r.with_waves)
+        for (std::size_t c = 0; c < under.size(); ++c) field.heights()[under[c]] = std::min(0.0, z - below_centre[c]);
+    const int steps = int(std::lround(r.seconds / r.dt));
+    for (int s = 0; s <= steps; ++s) {
+        record.time.push_back(s * r.dt);
+        record.height.push_back(z - record.rest);
+        double force = 0;
+        if (r.with_waves) {
+            // Where the hull would be at the step's end if the water did not push it, and how much a
+            // push moves it: every cell's push lifts the whole body alike (heave only).
+            const double coasting = z + (v - g * r.dt) * r.dt;
+            Contact contact;
+            for (std::size_t c = 0; c < under.size(); ++c)
+                if (below_centre[c] > coasting) contact.cells.push_back(under[c]), contact.target.push_back(coasting - below_centre[c]);
+            contact.compliance.assign(contact.cells.size() * contact.cells.size(), r.dt * r.dt * area / mass);
+            for (double p : field.step(r.dt, contact)) force += p * area;
+        } else {
+            force = g * displaced(z);
+        }
+        v += (force / mass - g) * r.dt;  // semi-implicit Euler: the velocity, then the position with it
+        z += v * r.dt;
+    }
+    return record;
+}
+
+Decay measure_decay(const HeaveRecord& record, int crests) {
+    std::vector<double> times, heights;
+    const std::vector<double>& h = record.height;
+    const double dt = record.time.size() > 1 ? record.time[1] - record.time[0] : 0;
+    for (std::size_t i = 1; i + 1 < h.size() && int(times.size()) < crests; ++i)
+        if (h[i] > h[i - 1] && h[i] >= h[i + 1]) {
+            // The parabola through the three samples: its vertex's time and height.
+            const double curve = h[i - 1] - 2 * h[i] + h[i + 1], slope = 0.5 * (h[i + 1] - h[i - 1]);
+            const double shift = curve < 0 ? -slope / curve : 0;
+            times.push_back(record.time[i] + shift * dt);
+            heights.push_back(h[i] + 0.5 * slope * shift);
+        }
+    Decay d;
+    d.crests = int(times.size());
+    if (times.size() < 2) return d;
+    d.period = (times.back() - times.front()) / double(times.size() - 1);
+    const double delta = std::log(heights.front() / heights.back()) / double(times.size() - 1);
+    d.damping_ratio = delta / std::sqrt(4 * ocean::kPi * ocean::kPi + delta * delta);
+    d.natural_frequency = ocean::kTwoPi / d.period / std::sqrt(1 - d.damping_ratio * d.damping_ratio);
+    return d;
+}
+
+}  // namespace step08

@@ -48,3 +48,36 @@ std::vector<double> ring_crests(const WaveField& field, double from, double to);
 
 }  // namespace step08
 
+
+namespace step08 {
+
+// A floating hemisphere (a sphere of half the water's density) released `lift` metres above its
+// rest on calm water, heaving only. `with_waves`: in contact with the wave field (README 8.4: the
+// water under it ends each step where its hull is, and pushes it with that pressure); without, the
+// still water's buoyancy alone (the columns of water it displaces, cell by cell).
+struct HeaveRelease {
+    double radius = 1;  // m
+    double lift = 0.05; // m
+    double seconds = 10;
+    double dt = 1.0 / 60;
+    bool with_waves = true;
+    int n = 128;
+    double cell = 0.25;  // m
+};
+struct HeaveRecord {
+    std::vector<double> time, height;  // the centre's height above its rest, each step
+    double rest = 0;                   // where that rest is: the centre's height above the still water
+    double waterplane = 0;             // m^2: the cells' area under the sphere at rest
+};
+HeaveRecord release_hemisphere(const HeaveRelease& release);
+
+// A decaying oscillation read from its first `crests` crests after the release: the damped
+// period, the damping ratio (from the logarithmic decrement delta between successive crests,
+// zeta = delta / sqrt(4 pi^2 + delta^2)) and the undamped angular frequency.
+struct Decay {
+    double period = 0, damping_ratio = 0, natural_frequency = 0;
+    int crests = 0;
+};
+Decay measure_decay(const HeaveRecord& record, int crests);
+
+}  // namespace step08

@@ -22,6 +22,30 @@ TwoSpectra separate(Complex at_k, Complex at_minus_k) {
     return {(at_k + mirrored) * 0.5, (at_k - mirrored) * Complex(0, -0.5)};
 }
 
+// Solves A x = b in place (b becomes x) for a symmetric positive definite A (m x m, row major),
+// by Cholesky's factorisation A = L L^T.
+void solve_symmetric(std::vector<double>& a, std::vector<double>& b, std::size_t m) {
+    for (std::size_t j = 0; j < m; ++j) {
+        double d = a[j * m + j];
+        for (std::size_t k = 0; k < j; ++k) d -= a[j * m + k] * a[j * m + k];
+        if (!(d > 0)) throw ocean::Error("wave field: a contact's system is not positive definite");
+        a[j * m + j] = std::sqrt(d);
+        for (std::size_t i = j + 1; i < m; ++i) {
+            double s = a[i * m + j];
+            for (std::size_t k = 0; k < j; ++k) s -= a[i * m + k] * a[j * m + k];
+            a[i * m + j] = s / a[j * m + j];
+        }
+    }
+    for (std::size_t i = 0; i < m; ++i) {  // L y = b
+        for (std::size_t k = 0; k < i; ++k) b[i] -= a[i * m + k] * b[k];
+        b[i] /= a[i * m + i];
+    }
+    for (std::size_t i = m; i-- > 0;) {  // L^T x = y
+        for (std::size_t k = i + 1; k < m; ++k) b[i] -= a[k * m + i] * b[k];
+        b[i] /= a[i * m + i];
+    }
+}
+
 }  // namespace
 
 double vertical_speed_factor(double wavenumber, double depth) {
@@ -65,6 +89,11 @@ glm::dvec2 WaveField::wavenumber(int i, int j) const {
 }
 
 void WaveField::step(double dt, const Forcing& forcing) {
+    turn(dt, forcing);
+    absorb(dt);
+}
+
+void WaveField::turn(double dt, const Forcing& forcing) {
     if (!(dt > 0) || !std::isfinite(dt)) throw ocean::Error("wave field: a step must last a positive time");
     const int n = settings_.n;
     const std::size_t cells = eta_.size();
@@ -120,7 +149,71 @@ void WaveField::step(double dt, const Forcing& forcing) {
         eta_[c] = work_[c].real() * scale;
         phi_[c] = work_[c].imag() * scale;
     }
+}
+
+void WaveField::make_kernels(double dt) {
+    if (kernels_for_ == dt) return;
+    // From rest, a pressure P held for dt leaves mode k at eta^ = -(P^ / g)(1 - cos omega dt) and
+    // phi^ = -(P^ / omega) sin omega dt (step()'s formulas with eta = phi = 0); the mean level's
+    // (omega = 0) eta^ = 0 and phi^ = -P^ dt. Their inverse transforms, for a unit P on one cell,
+    // are the kernels, real and even (both fields at once: eta + i phi).
+    const int n = settings_.n;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec2 k = wavenumber(i, j);
+            const double K = vertical_speed_factor(std::hypot(k.x, k.y), settings_.depth);
+            if (K == 0) {
+                work_[index(i, j)] = Complex(0, -dt);
+                continue;
+            }
+            const double omega = std::sqrt(g * K);
+            work_[index(i, j)] = Complex(-(1 - std::cos(omega * dt)) / g, -std::sin(omega * dt) / omega);
+        }
+    fft_.inverse(work_);
+    const double scale = 1.0 / (double(n) * double(n));
+    height_kernel_.resize(work_.size());
+    potential_kernel_.resize(work_.size());
+    for (std::size_t c = 0; c < work_.size(); ++c) {
+        height_kernel_[c] = work_[c].real() * scale;
+        potential_kernel_[c] = work_[c].imag() * scale;
+    }
+    kernels_for_ = dt;
+}
+
+std::vector<double> WaveField::step(double dt, const Contact& contact, const Forcing& forcing) {
+    const std::size_t m = contact.cells.size();
+    if (contact.target.size() != m || contact.compliance.size() != m * m)
+        throw ocean::Error("wave field: a contact's targets or compliance do not match its cells");
+    turn(dt, forcing);  // where the surface would go if nothing pushed on it
+    make_kernels(dt);
+    const int n = settings_.n;
+    const auto offset = [n](std::size_t to, std::size_t from) {  // index of the periodic offset
+        const int di = (int(to % std::size_t(n)) - int(from % std::size_t(n)) + n) % n;
+        const int dj = (int(to / std::size_t(n)) - int(from / std::size_t(n)) + n) % n;
+        return std::size_t(dj) * std::size_t(n) + std::size_t(di);
+    };
+    // The pressures P_j on the contact cells: the surface there ends at the hull,
+    //     eta_free(i) + sum_j kernel(i - j) P_j = target(i) - sum_j compliance(i, j) P_j
+    // (the hull moves up by compliance P as the water pushes it), a symmetric positive definite
+    // system: -kernel is (1 - cos omega dt) / g >= 0 mode by mode, the compliance a body's.
+    std::vector<double> a(m * m), p(m);
+    for (std::size_t i = 0; i < m; ++i) {
+        for (std::size_t j = 0; j < m; ++j)
+            a[i * m + j] = -height_kernel_[offset(contact.cells[i], contact.cells[j])] + contact.compliance[i * m + j];
+        p[i] = eta_[contact.cells[i]] - contact.target[i];
+    }
+    solve_symmetric(a, p, m);
+    // The pressures' own waves, added to the free step's.
+    for (std::size_t j = 0; j < m; ++j) {
+        if (p[j] == 0) continue;
+        for (std::size_t c = 0; c < eta_.size(); ++c) {
+            const std::size_t d = offset(c, contact.cells[j]);
+            eta_[c] += height_kernel_[d] * p[j];
+            phi_[c] += potential_kernel_[d] * p[j];
+        }
+    }
     absorb(dt);
+    return p;
 }
 
 void WaveField::absorb(double dt) {

@@ -48,6 +48,19 @@ struct Forcing {
     std::vector<double> volume_rate;  // m/s: water pushed up through the surface (hulls moving)
 };
 
+// A body in contact with the water over some cells (README 8.4): under its hull the surface must
+// end each step where the hull is. `cells` are the field's cell indices under it; `target` the
+// height (m) the field must reach there if the body felt no push from the water (the hull's
+// underside, moved on by its own velocity and gravity, less the incident sea's height); and
+// `compliance`, M x M row major (M cells), how far the hull under cell i moves in the step per unit
+// of p / rho on cell j (m per m^2/s^2): the body's response to the water's push, dt^2 dA times
+// (1 / m + (r_i x y) . I^-1 (r_j x y)) per unit density.
+struct Contact {
+    std::vector<std::size_t> cells;
+    std::vector<double> target;
+    std::vector<double> compliance;
+};
+
 class WaveField {
 public:
     // Throws ocean::Error on settings it cannot run (n not a power of two, a cell or depth not
@@ -60,6 +73,11 @@ public:
     // Advances `dt` seconds (> 0): every mode turned exactly, the forcing held constant, then the
     // absorbing layer applied.
     void step(double dt, const Forcing& forcing = {});
+    // The same step with a body in contact: the pressure p / rho on its cells (returned, one a
+    // contact cell, held over the step) is the one that leaves the surface under it exactly where
+    // its hull ends the step, the body's response to that pressure included. The body's force is
+    // rho dA times their sum (and its torque their moments).
+    std::vector<double> step(double dt, const Contact& contact, const Forcing& forcing = {});
 
     // Moves the grid by whole cells so that its centre is the cell nearest `centre` (x, z): the
     // samples keep their world positions; those that leave are dropped, the new ones are calm.
@@ -87,7 +105,11 @@ public:
 
 private:
     std::size_t index(int i, int j) const { return std::size_t(j) * std::size_t(settings_.n) + std::size_t(i); }
+    void turn(double dt, const Forcing& forcing);  // every mode turned, the layer not applied
     void absorb(double dt);
+    // The height and potential a unit p / rho held on one cell over dt adds, by offset from it
+    // (n x n, periodic): kernels_for_ holds the dt they are for.
+    void make_kernels(double dt);
 
     WaveFieldSettings settings_;
     Fft2d fft_;
@@ -95,6 +117,8 @@ private:
     std::vector<double> absorbing_rate_;  // 1/s, a cell
     std::int64_t origin_i_ = 0, origin_j_ = 0;  // the grid's centre, in whole cells from the world origin
     mutable std::vector<Complex> work_, forcing_work_;
+    std::vector<double> height_kernel_, potential_kernel_;
+    double kernels_for_ = 0;
 };
 
 }  // namespace step08

@@ -10,11 +10,13 @@ uniform int u_cells;             // n
 uniform float u_cell;            // metres
 uniform vec2 u_first_cell;       // cell (0, 0)'s centre, metres from the view's centre (x, z)
 uniform vec2 u_half_view;        // metres from the view's centre to its right and top edges
+uniform float u_pixels_high;     // the picture's height in pixels
 uniform vec2 u_boat;             // the boat's middle, from the view's centre
 uniform vec2 u_heading;          // unit, (x, z)
 uniform float u_boat_length;     // metres
 uniform float u_show_field;      // 1: the grid's edge and absorbing layer are outlined
 uniform float u_absorbing_width; // metres
+uniform float u_kelvin;          // 1: Kelvin's edges drawn, arcsin(1/3) = 19.47 degrees either side of the track behind
 uniform float u_relief;          // how many times the slopes are exaggerated in the shading
 
 // The height at a point (x, z) from the view's centre: 0 outside the grid, as height_at.
@@ -53,9 +55,15 @@ void main() {
         if (to_edge < 0.0) colour *= 0.7;
         else if (to_edge < u_absorbing_width) colour = mix(colour, vec3(0.2, 0.1, 0.05), 0.12);
     }
-    // The boat's waterline: an ellipse L long and L / 3 wide, white with a dark rim.
     vec2 d = p - u_boat;
-    vec2 local = vec2(dot(d, u_heading), dot(d, vec2(-u_heading.y, u_heading.x)));
+    vec2 local = vec2(dot(d, u_heading), dot(d, vec2(-u_heading.y, u_heading.x)));  // along, across
+    // Kelvin's edges: where |across| = -along tan(19.47 degrees), a line about a pixel wide.
+    if (u_kelvin > 0.5 && local.x < 0.0) {
+        float miss = abs(abs(local.y) + local.x * 0.35355339) * 0.94280904;  // distance to the line: cos(19.47)
+        float pixel = 2.0 * u_half_view.y / u_pixels_high;
+        colour = mix(colour, vec3(1.0, 0.8, 0.3), 0.8 * (1.0 - smoothstep(0.5 * pixel, 1.5 * pixel, miss)));
+    }
+    // The boat's waterline: an ellipse L long and L / 3 wide, white with a dark rim.
     float r = length(local / vec2(0.5 * u_boat_length, u_boat_length / 6.0));
     if (r < 1.0) colour = r < 0.8 ? vec3(0.92, 0.9, 0.86) : vec3(0.25, 0.08, 0.05);
     out_colour = vec4(colour, 1.0);

@@ -1,0 +1,76 @@
+// The waves a body makes take its energy away: a floating hemisphere released above its rest on
+// calm water decays, and rings for ever without them. Against Hulme (1982), who solved the real
+// hemisphere: the chapter's contact is a pressure on the surface (a body of no draft, README 8.4),
+// whose waves are not weakened by depth as a real hull's are (e^(-k z) for a hull z deep): it
+// radiates more and drags more water than the hemisphere. The test holds it to Hulme within a
+// factor of two and prints both (measured: damping 1.7 times Hulme's, added mass 2.0 times).
+#include "step08_wakes/wake_experiments.hpp"
+
+#include "common/constants.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace {
+
+// Hulme's heave coefficients for a floating hemisphere of radius a in deep water, against
+// nu = omega^2 a / g: added mass A / (rho 2/3 pi a^3) and damping B / (rho 2/3 pi a^3 omega).
+// From A. Hulme, "The wave forces acting on a floating hemisphere undergoing forced periodic
+// oscillations", J. Fluid Mech. 121 (1982) 443-463, table 1, as tabulated in the repositories
+// LHEEA/Hulme_Heaving_Sphere (comparison/HulmeResult.dat) and symbiotic-engineering/MarineHydro.jl
+// (test/consistency_with_analytical_solutions.jl), which agree digit for digit.
+struct HulmeRow {
+    double nu, added_mass, damping;
+};
+constexpr HulmeRow kHulme[] = {{0.5, 0.5861, 0.3391}, {0.6, 0.5381, 0.3271}, {0.7, 0.4999, 0.3098},
+                               {0.8, 0.4698, 0.2899}, {0.9, 0.4464, 0.2691}, {1.0, 0.4284, 0.2484},
+                               {1.2, 0.4047, 0.2096}, {1.4, 0.3924, 0.1756}, {1.6, 0.3871, 0.1469}};
+
+HulmeRow hulme_at(double nu) {
+    for (std::size_t i = 0; i + 1 < std::size(kHulme); ++i)
+        if (nu >= kHulme[i].nu && nu <= kHulme[i + 1].nu) {
+            const double f = (nu - kHulme[i].nu) / (kHulme[i + 1].nu - kHulme[i].nu);
+            return {nu, kHulme[i].added_mass + f * (kHulme[i + 1].added_mass - kHulme[i].added_mass),
+                    kHulme[i].damping + f * (kHulme[i + 1].damping - kHulme[i].damping)};
+        }
+    ADD_FAILURE() << "nu = " << nu << " outside the table";
+    return {nu, 0, 0};
+}
+
+TEST(Step08Radiation, AHeavingHemisphereDecaysAsHulmePredicts) {
+    step08::HeaveRelease release;
+    const step08::Decay decay = step08::measure_decay(step08::release_hemisphere(release), 4);
+    ASSERT_EQ(decay.crests, 4);
+    // From the motion: (m + A) omega_n^2 = rho g S (S the waterplane's area) and m = rho 2/3 pi a^3,
+    // so the added mass share is g S / (omega_n^2 2/3 pi a^3) - 1; the damping B = 2 zeta (m + A) omega_n.
+    const step08::HeaveRecord record = step08::release_hemisphere(release);
+    const double a = release.radius, w = decay.natural_frequency, m = 2.0 / 3.0 * ocean::kPi * a * a * a;
+    const double added = ocean::kGravity * record.waterplane / (w * w * m) - 1;
+    const double damping = 2 * decay.damping_ratio * (1 + added);
+    const HulmeRow hulme = hulme_at(w * w * a / ocean::kGravity);
+    std::cout << "period " << decay.period << " s, damping ratio " << decay.damping_ratio << ", nu " << hulme.nu
+              << ": added mass " << added << " (Hulme " << hulme.added_mass << "), damping " << damping
+              << " (Hulme " << hulme.damping << ")" << std::endl;
+    EXPECT_GT(decay.damping_ratio, 0.05) << "it loses its energy to the waves it makes";
+    EXPECT_GT(damping / hulme.damping, 0.5);
+    EXPECT_LT(damping / hulme.damping, 2.0);
+    EXPECT_GT(added / hulme.added_mass, 0.5);
+    EXPECT_LT(added / hulme.added_mass, 2.5);
+}
+
+TEST(Step08Radiation, WithoutItsWavesItRingsForEver) {
+    step08::HeaveRelease release;
+    release.with_waves = false;
+    const step08::Decay decay = step08::measure_decay(step08::release_hemisphere(release), 4);
+    ASSERT_EQ(decay.crests, 4);
+    std::cout << "without waves: period " << decay.period << " s, damping ratio " << decay.damping_ratio << std::endl;
+    EXPECT_LT(std::abs(decay.damping_ratio), 0.003);
+    // No added mass either: omega_n^2 = g S / V, the bare hydrostatic spring of the cells' waterplane.
+    const step08::HeaveRecord record = step08::release_hemisphere(release);
+    const double volume = 2.0 / 3.0 * ocean::kPi * std::pow(release.radius, 3);
+    EXPECT_NEAR(decay.natural_frequency, std::sqrt(ocean::kGravity * record.waterplane / volume), 0.01 * decay.natural_frequency);
+}
+
+}  // namespace
