@@ -14,6 +14,8 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -40,6 +42,7 @@ public:
         p.add_float("relief", &relief_, 1, 50, "how many times the shading exaggerates the slopes").logarithmic();
         p.add_bool("kelvin_lines", &kelvin_lines_, "draw Kelvin's edges, 19.47 degrees either side of the track");
         p.add_bool("show_field", &show_field_, "outline the field's grid and its absorbing layer");
+        offer_bench_figures([this] { return time_the_field(); });
     }
 
 private:
@@ -63,6 +66,21 @@ private:
         for (const glm::dvec2& stone : stones_) scene_->drop_stone(stone);
         stones_.clear();
         scene_->sail(dt, boat_, double(rudder_) + key_rudder_);
+    }
+
+    // --bench: the wave field runs on the CPU, outside the GPU passes the table times; here a copy
+    // of the scene sails 15 frames of 1/60 s, each timed (median, milliseconds).
+    BenchFigures time_the_field() const {
+        if (!scene_) return {};
+        step08::WakeScene scene = *scene_;
+        std::vector<double> times;
+        for (int i = 0; i < 15; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            scene.sail(1.0 / 60, boat_, double(rudder_));
+            times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        }
+        std::sort(times.begin(), times.end());
+        return {{"wave field per 1/60 s frame (CPU)", times[times.size() / 2]}};
     }
 
     void read_input() {
