@@ -11,12 +11,11 @@
 // bit-reversed order, so that each stage's pairs sit side by side.
 #pragma once
 
-#include <complex>
+#include "step08_wakes/mode_step.hpp"
+
 #include <vector>
 
 namespace step08 {
-
-using Complex = std::complex<double>;
 
 class Fft2d {
 public:

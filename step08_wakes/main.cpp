@@ -8,6 +8,7 @@
 #include "common/app.hpp"
 #include "common/error.hpp"
 #include "common/gl_texture.hpp"
+#include "step08_wakes/kelvin.hpp"
 #include "step08_wakes/wake_experiments.hpp"
 #include "step08_wakes/wake_scene.hpp"
 
@@ -131,6 +132,7 @@ private:
         p->set("u_boat_length", float(boat_.length));
         p->set("u_relief", relief_);
         p->set("u_kelvin", kelvin_lines_ ? 1.0f : 0.0f);
+        p->set("u_kelvin_angle", float(step08::kelvin_edge_angle(0.5)));  // deep water: c_g = c / 2
         p->set("u_pixels_high", float(framebuffer_size().y));
         p->set("u_show_field", show_field_ ? 1.0f : 0.0f);
         p->set("u_absorbing_width", float(f.settings().absorbing_width));

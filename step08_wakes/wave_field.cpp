@@ -1,5 +1,7 @@
 #include "step08_wakes/wave_field.hpp"
 
+#include "step08_wakes/mode_step.hpp"
+
 #include "common/constants.hpp"
 #include "common/error.hpp"
 
@@ -124,21 +126,10 @@ void WaveField::turn(double dt, const Forcing& forcing) {
                 if (pushed)
                     push = side == 0 ? separate(forcing_work_[a], forcing_work_[b])
                                      : separate(forcing_work_[b], forcing_work_[a]);
-                const Complex P = push.first, s = push.second;
-                Complex eta = field.first, phi = field.second;
                 const glm::dvec2 k2 = here == a ? wavenumber(i, j) : wavenumber(mi, mj);
                 const double K = vertical_speed_factor(std::hypot(k2.x, k2.y), settings_.depth);
-                if (K == 0) {  // the mean level: no restoring force, the sources only fill it
-                    phi -= (g * eta + P) * dt + 0.5 * g * s * dt * dt;
-                    eta += s * dt;
-                } else {
-                    const double omega = std::sqrt(g * K), c = std::cos(omega * dt), sn = std::sin(omega * dt);
-                    const Complex rest_eta = -P / g, rest_phi = -s / K;  // the constant solution
-                    const Complex e = eta - rest_eta, f = phi - rest_phi;
-                    eta = rest_eta + e * c + (K / omega) * f * sn;
-                    phi = rest_phi + f * c - (g / omega) * e * sn;
-                }
-                (side == 0 ? out_a : out_b) = eta + Complex(0, 1) * phi;
+                const Mode turned = turn_mode({field.first, field.second}, K, dt, push.first, push.second);
+                (side == 0 ? out_a : out_b) = turned.eta + Complex(0, 1) * turned.phi;
             }
             work_[a] = out_a;
             if (a != b) work_[b] = out_b;

@@ -141,10 +141,10 @@ echo step07_buoyancy/screenshot.png
 
 # step08's wake from above after its 20 s warm-up: the default boat (4 m/s, 6 m: Fr 0.52), and
 # the same boat at 9 m/s (Fr 1.17), Kelvin's edges drawn on both.
-shot step08_wakes "$root/step08_wakes/screenshot.png" --size 640x360 --frames 2
+shot step08_wakes "$root/step08_wakes/screenshot.png" --size 640x360 --frames 2 --dt 0.1
 echo step08_wakes/screenshot.png
-shot step08_wakes "$scratch/wake_slow.png" --size 640x360 --frames 2 --set kelvin_lines=true
-shot step08_wakes "$scratch/wake_fast.png" --size 640x360 --frames 2 --set kelvin_lines=true --set boat_speed=9
+shot step08_wakes "$scratch/wake_slow.png" --size 640x360 --frames 2 --dt 0.1 --set kelvin_lines=true
+shot step08_wakes "$scratch/wake_fast.png" --size 640x360 --frames 2 --dt 0.1 --set kelvin_lines=true --set boat_speed=9
 panel "$root/step08_wakes/wake_speeds.png" 480x270 2 \
   "4 m/s, Fr 0.52: the edge at 19.47 degrees|$scratch/wake_slow.png|0.1,0,0.9,1" \
   "9 m/s, Fr 1.17: the largest waves inside it|$scratch/wake_fast.png|0.1,0,0.9,1"

@@ -16,7 +16,8 @@ uniform vec2 u_heading;          // unit, (x, z)
 uniform float u_boat_length;     // metres
 uniform float u_show_field;      // 1: the grid's edge and absorbing layer are outlined
 uniform float u_absorbing_width; // metres
-uniform float u_kelvin;          // 1: Kelvin's edges drawn, arcsin(1/3) = 19.47 degrees either side of the track behind
+uniform float u_kelvin;          // 1: Kelvin's edges drawn either side of the track behind
+uniform float u_kelvin_angle;    // their half-angle, radians (kelvin.cpp; deep water: arcsin(1/3))
 uniform float u_relief;          // how many times the slopes are exaggerated in the shading
 
 // The height at a point (x, z) from the view's centre: 0 outside the grid, as height_at.
@@ -57,9 +58,9 @@ void main() {
     }
     vec2 d = p - u_boat;
     vec2 local = vec2(dot(d, u_heading), dot(d, vec2(-u_heading.y, u_heading.x)));  // along, across
-    // Kelvin's edges: where |across| = -along tan(19.47 degrees), a line about a pixel wide.
+    // Kelvin's edges: where |across| = -along tan(angle), a line about a pixel wide.
     if (u_kelvin > 0.5 && local.x < 0.0) {
-        float miss = abs(abs(local.y) + local.x * 0.35355339) * 0.94280904;  // distance to the line: cos(19.47)
+        float miss = abs(abs(local.y) * cos(u_kelvin_angle) + local.x * sin(u_kelvin_angle));  // distance to the line
         float pixel = 2.0 * u_half_view.y / u_pixels_high;
         colour = mix(colour, vec3(1.0, 0.8, 0.3), 0.8 * (1.0 - smoothstep(0.5 * pixel, 1.5 * pixel, miss)));
     }

@@ -42,6 +42,10 @@ refuses() {
 }
 # Archimedes without the torque: the force alone does not tip a heeled hull back.
 refuses force-without-torque step07_buoyancy 2 hull_forces.cpp '    return {};' '    Wrench w; for (std::size_t i = 0; i < cells.size(); ++i) w.force.y += kWaterDensity * ocean::kGravity * wet_share(water_lines[i], centre_of_mass.y + (rotation * cells[i].offset).y, vertical_half_extent(rotation, cells[i])) * cells[i].volume; return w;' 'value 3'
+# A mode turned without its sources (free rotation only): no dent under the boat, no wake.
+refuses mode-without-sources step08_wakes 1 mode_step.cpp '    return mode;' '    if (K == 0) return mode; const double w = std::sqrt(9.81 * K); return {mode.eta * std::cos(w * dt) + (K / w) * mode.phi * std::sin(w * dt), mode.phi * std::cos(w * dt) - (9.81 / w) * mode.eta * std::sin(w * dt)};'
+# Kelvin's angle with the energy at the phase speed (n taken as 1 everywhere): every wake 90 degrees.
+refuses kelvin-phase-speed step08_wakes 2 kelvin.cpp '    return 0;' '    return std::asin(1.0);' 'value 0'
 # The notes' Fresnel, F = (1 - cos theta)^5, forgets F0.
 refuses notes-fresnel step06_foam_sky 1 shading.glsl '    return 0.0;' '    return pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);'
 # The notes' 2.2 slope, cos(x w + phase) without w a.
