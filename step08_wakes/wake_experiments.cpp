@@ -10,13 +10,23 @@ namespace step08 {
 double transverse_wavelength(double speed) { return ocean::kTwoPi * speed * speed / ocean::kGravity; }
 double froude_number(double speed, double length) { return speed / std::sqrt(ocean::kGravity * length); }
 
-TowedWake tow(const TowedPatch& t) {
+namespace {
+
+// A deep-water field of n cells of `cell` metres, an absorbing layer `layer` of its side wide at
+// each edge, damping at `rate` per second at the very edge.
+WaveFieldSettings deep_field(int n, double cell, double layer, double rate) {
     WaveFieldSettings settings;
-    settings.n = t.n;
-    settings.cell = t.cell;
-    settings.absorbing_width = 0.12 * t.n * t.cell;
-    settings.absorbing_rate = 4;
-    WaveField field(settings);
+    settings.n = n;
+    settings.cell = cell;
+    settings.absorbing_width = layer * n * cell;
+    settings.absorbing_rate = rate;
+    return settings;
+}
+
+}  // namespace
+
+TowedWake tow(const TowedPatch& t) {
+    WaveField field(deep_field(t.n, t.cell, 0.12, 4));
     const double sigma = t.length / 4;
     const double dt = std::min(t.cell / t.speed, 1.0 / 30);  // the patch moves at most a cell a step
     const int steps = int(std::ceil(t.seconds / dt));
@@ -123,18 +133,9 @@ std::vector<double> ring_crests(const WaveField& field, double from, double to) 
     return crests;
 }
 
-}  // namespace step08
-
-
-namespace step08 {
 
 HeaveRecord release_hemisphere(const HeaveRelease& r) {
-    WaveFieldSettings settings;
-    settings.n = r.n;
-    settings.cell = r.cell;
-    settings.absorbing_width = 0.2 * r.n * r.cell;
-    settings.absorbing_rate = 3;
-    WaveField field(settings);
+    WaveField field(deep_field(r.n, r.cell, 0.2, 3));
     // Per unit density: the mass is the hemisphere's volume; forces are p / rho times areas.
     const double mass = 2.0 / 3.0 * ocean::kPi * std::pow(r.radius, 3), area = r.cell * r.cell, g = ocean::kGravity;
     // The sphere's underside under each cell, below its centre; cells outside it left out.

@@ -8,9 +8,10 @@
 
 namespace step08 {
 
-// A pressure patch (a Gaussian of standard deviation length / 4: 95 % of it within `length`)
-// towed along +x at `speed` over deep water for `seconds`, on a grid following it by whole cells
-// (the patch a quarter of the grid ahead of its centre, so the wake fills the rest).
+// A pressure patch (a Gaussian of standard deviation length / 4: 86 % of it within a circle
+// `length` across) towed along +x at `speed` over deep water for `seconds`, on a grid following
+// it by whole cells (the patch a quarter of the grid ahead of its centre, so the wake fills the
+// rest).
 struct TowedPatch {
     double speed = 2;          // m/s
     double length = 0.85;      // m
@@ -46,10 +47,6 @@ double wake_edge_angle(const TowedWake& wake, double speed, double from, double 
 // local maxima).
 std::vector<double> ring_crests(const WaveField& field, double from, double to);
 
-}  // namespace step08
-
-
-namespace step08 {
 
 // A floating hemisphere (a sphere of half the water's density) released `lift` metres above its
 // rest on calm water, heaving only. `with_waves`: in contact with the wave field (README 8.4: the

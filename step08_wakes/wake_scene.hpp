@@ -18,7 +18,7 @@ struct BoatSettings {
 };
 
 // Where the patch's pressure is: p / rho = g draft exp(-(a^2 / (2 (L/4)^2) + b^2 / (2 (B/4)^2)))
-// at a metres along the hull from its middle and b across, so 95 % of it lies within the waterline
+// at a metres along the hull from its middle and b across, so 86 % of it lies within the waterline
 // (L long, B = L / 3 wide).
 double hull_pressure(const BoatSettings& boat, glm::dvec2 along_across);
 

@@ -184,7 +184,7 @@ std::vector<double> WaveField::step(double dt, const Contact& contact, const For
         return std::size_t(dj) * std::size_t(n) + std::size_t(di);
     };
     // The pressures P_j on the contact cells: the surface there ends at the hull,
-    //     eta_free(i) + sum_j kernel(i - j) P_j = target(i) - sum_j compliance(i, j) P_j
+    //     eta_free(i) + sum_j kernel(i - j) P_j = target(i) + sum_j compliance(i, j) P_j
     // (the hull moves up by compliance P as the water pushes it), a symmetric positive definite
     // system: -kernel is (1 - cos omega dt) / g >= 0 mode by mode, the compliance a body's.
     std::vector<double> a(m * m), p(m);
