@@ -19,11 +19,12 @@ case "$what" in
     ./ocean bench --size 160x90 --frames 3 --out "$out" || { echo "FAIL: ./ocean bench"; exit 1; }
     [ -s "$out/bench.png" ] || { echo "FAIL: no bench.png"; exit 1; }
     awk -F, -v steps="$steps" '
-      NR == 1 { if ($0 != "step,size,fps,total_ms,passes,dft_ms,gpu_fft_ms,gpu_radix2_ms,fftw_ms,simulation_ms") { print "FAIL: header " $0; bad = 1 }; next }
+      NR == 1 { if ($0 != "step,size,fps,total_ms,passes,dft_ms,gpu_fft_ms,gpu_radix2_ms,fftw_ms,simulation_ms,wave_field_ms") { print "FAIL: header " $0; bad = 1 }; next }
       {
         rows++
-        if (NF != 10 || $1 !~ /^step[0-9][0-9]_/ || !($3 > 0) || !($4 > 0) || $5 !~ /=[0-9.]+/) { print "FAIL: row " $0; bad = 1 }
+        if (NF != 11 || $1 !~ /^step[0-9][0-9]_/ || !($3 > 0) || !($4 > 0) || $5 !~ /=[0-9.]+/) { print "FAIL: row " $0; bad = 1 }
         if ($1 ~ /^step0[56]_/ && !($7 > 0 && $8 > 0 && $9 > 0 && $10 > 0)) { print "FAIL: no FFT backends in " $1; bad = 1 }
+        if ($1 ~ /^step08_/ && !($11 > 0)) { print "FAIL: no wave field time in " $1; bad = 1 }
       }
       END {
         if (rows != steps) { print "FAIL: " rows " rows for " steps " steps"; bad = 1 }
