@@ -41,7 +41,6 @@ void WakeScene::sail(double seconds, const BoatSettings& boat, double rudder) {
             }
         field_.step(h, forcing_);
         position_ += boat.speed * h * ahead;
-        time_ += h;
     }
 }
 

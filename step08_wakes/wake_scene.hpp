@@ -38,14 +38,12 @@ public:
     const WaveField& field() const { return field_; }
     glm::dvec2 boat_position() const { return position_; }
     glm::dvec2 boat_heading() const;  // unit (x, z)
-    double sailed() const { return time_; }
 
 private:
     WaveField field_;
     Forcing forcing_;
     glm::dvec2 position_{0.0};
     double heading_ = 0;  // radians from +x towards +z
-    double time_ = 0;
 };
 
 }  // namespace step08

@@ -54,10 +54,6 @@ double vertical_speed_factor(double wavenumber, double depth) {
     return std::isinf(depth) ? wavenumber : wavenumber * std::tanh(wavenumber * depth);
 }
 
-double angular_frequency(double wavenumber, double depth) {
-    return std::sqrt(g * vertical_speed_factor(wavenumber, depth));
-}
-
 WaveField::WaveField(const WaveFieldSettings& settings) : settings_(settings), fft_(settings.n) {
     const auto fail = [](const std::string& what) { throw ocean::Error("wave field: " + what); };
     if (!(settings.cell > 0) || !std::isfinite(settings.cell)) fail("the cell must be a positive length");
@@ -74,6 +70,13 @@ WaveField::WaveField(const WaveFieldSettings& settings) : settings_(settings), f
     // smooth start reflects less) to absorbing_rate at the grid's edge; corners take the larger.
     absorbing_rate_.assign(cells, 0.0);
     const int n = settings.n;
+    // Each mode's K, once: every step, kernel and energy reads it.
+    speed_factor_.resize(cells);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec2 k = wavenumber(i, j);
+            speed_factor_[index(i, j)] = vertical_speed_factor(std::hypot(k.x, k.y), settings.depth);
+        }
     const double width = settings.absorbing_width;
     if (width > 0)
         for (int j = 0; j < n; ++j)
@@ -99,16 +102,14 @@ void WaveField::turn(double dt, const Forcing& forcing) {
     if (!(dt > 0) || !std::isfinite(dt)) throw ocean::Error("wave field: a step must last a positive time");
     const int n = settings_.n;
     const std::size_t cells = eta_.size();
-    const bool pushed = !forcing.pressure.empty() || !forcing.volume_rate.empty();
-    for (const auto* f : {&forcing.pressure, &forcing.volume_rate})
-        if (!f->empty() && f->size() != cells) throw ocean::Error("wave field: forcing of the wrong size");
+    const bool pushed = !forcing.pressure.empty();
+    if (pushed && forcing.pressure.size() != cells) throw ocean::Error("wave field: forcing of the wrong size");
     for (std::size_t c = 0; c < cells; ++c) work_[c] = Complex(eta_[c], phi_[c]);
     fft_.forward(work_);
     if (pushed) {
         forcing_work_.resize(cells);
         for (std::size_t c = 0; c < cells; ++c)
-            forcing_work_[c] = Complex(forcing.pressure.empty() ? 0.0 : forcing.pressure[c],
-                                       forcing.volume_rate.empty() ? 0.0 : forcing.volume_rate[c]);
+            forcing_work_[c] = forcing.pressure[c];
         fft_.forward(forcing_work_);
     }
     // Each pair (k, -k) at once: both are read before either is written.
@@ -122,13 +123,8 @@ void WaveField::turn(double dt, const Forcing& forcing) {
             for (int side = 0; side < (a == b ? 1 : 2); ++side) {
                 const std::size_t here = side == 0 ? a : b;
                 const TwoSpectra field = side == 0 ? separate(at_a, at_b) : separate(at_b, at_a);
-                TwoSpectra push{0.0, 0.0};
-                if (pushed)
-                    push = side == 0 ? separate(forcing_work_[a], forcing_work_[b])
-                                     : separate(forcing_work_[b], forcing_work_[a]);
-                const glm::dvec2 k2 = here == a ? wavenumber(i, j) : wavenumber(mi, mj);
-                const double K = vertical_speed_factor(std::hypot(k2.x, k2.y), settings_.depth);
-                const Mode turned = turn_mode({field.first, field.second}, K, dt, push.first, push.second);
+                const Complex pressure = pushed ? forcing_work_[here] : Complex(0.0);  // a real field's transform
+                const Mode turned = turn_mode({field.first, field.second}, speed_factor_[here], dt, pressure, 0.0);
                 (side == 0 ? out_a : out_b) = turned.eta + Complex(0, 1) * turned.phi;
             }
             work_[a] = out_a;
@@ -151,8 +147,7 @@ void WaveField::make_kernels(double dt) {
     const int n = settings_.n;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            const glm::dvec2 k = wavenumber(i, j);
-            const double K = vertical_speed_factor(std::hypot(k.x, k.y), settings_.depth);
+            const double K = speed_factor_[index(i, j)];
             if (K == 0) {
                 work_[index(i, j)] = Complex(0, -dt);
                 continue;
@@ -263,12 +258,6 @@ double WaveField::height_at(glm::dvec2 at) const {
            fv * ((1 - fu) * eta_[index(i, j + 1)] + fu * eta_[index(i + 1, j + 1)]);
 }
 
-glm::dvec2 WaveField::gradient_at(glm::dvec2 at) const {
-    const double h = settings_.cell;
-    return {(height_at(at + glm::dvec2(h, 0)) - height_at(at - glm::dvec2(h, 0))) / (2 * h),
-            (height_at(at + glm::dvec2(0, h)) - height_at(at - glm::dvec2(0, h))) / (2 * h)};
-}
-
 double WaveField::energy() const {
     const int n = settings_.n;
     for (std::size_t c = 0; c < eta_.size(); ++c) work_[c] = Complex(eta_[c], phi_[c]);
@@ -277,8 +266,7 @@ double WaveField::energy() const {
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const TwoSpectra f = separate(work_[index(i, j)], work_[index((n - i) % n, (n - j) % n)]);
-            const glm::dvec2 k = wavenumber(i, j);
-            sum += g * std::norm(f.first) + vertical_speed_factor(std::hypot(k.x, k.y), settings_.depth) * std::norm(f.second);
+            sum += g * std::norm(f.first) + speed_factor_[index(i, j)] * std::norm(f.second);
         }
     // Parseval: sum over cells of x^2 = sum over modes of |X^|^2 / n^2; times the cell's area.
     return 0.5 * sum * settings_.cell * settings_.cell / (double(n) * double(n));

@@ -10,8 +10,9 @@
 // omega^2 = g k tanh(k h). step() turns every mode by its own omega dt, exactly (README 8.2):
 // waves of every length travel at their own speed, whatever dt, and the energy
 //     E = rho / 2 * integral of (g eta^2 + phi K phi)    (potential + kinetic)
-// is kept to rounding. Sources held constant over a step are integrated exactly too: the
-// constant solution (eta = -P / g, phi = -s / K) is taken away, the rest turned, and added back.
+// is kept to rounding. A pressure held constant over a step is integrated exactly too: the
+// constant solution (eta = -P / g) is taken away, the rest turned, and added back (turn_mode,
+// which also takes a source s; everything in this chapter pushes with pressure).
 //
 // The grid is periodic (the FFT's), so a wave leaving at one edge would come back at the other:
 // an absorbing layer damps eta and phi near the edges (README 8.3). The grid follows the boat by
@@ -36,16 +37,14 @@ struct WaveFieldSettings {
     double absorbing_rate = 3;                                 // 1/s at the very edge, falling as the square to 0 inside
 };
 
-// omega(k) = sqrt(g k tanh(k h)), k >= 0 (h infinite: sqrt(g k)).
-double angular_frequency(double wavenumber, double depth);
 // K = k tanh(k h): what turns a potential into a surface's vertical speed (k in deep water).
 double vertical_speed_factor(double wavenumber, double depth);
 
 // What pushes the water during one step, one value a cell (row (z) major), held constant over it;
-// an empty vector is none.
+// an empty vector is none. (The boat, the stones and the bodies all push with pressure: turn_mode's
+// volume source is the same mathematics, which no part of the program needs.)
 struct Forcing {
-    std::vector<double> pressure;     // p / rho, m^2/s^2: a pressure on the surface (the Kelvin patch)
-    std::vector<double> volume_rate;  // m/s: water pushed up through the surface (hulls moving)
+    std::vector<double> pressure;  // p / rho, m^2/s^2: a pressure on the surface
 };
 
 // A body in contact with the water over some cells (README 8.4): under its hull the surface must
@@ -90,8 +89,6 @@ public:
     glm::dvec2 cell_centre(int i, int j) const;
     // The height at a world point, bilinear between cell centres; 0 outside the grid.
     double height_at(glm::dvec2 at) const;
-    // Its gradient (d eta/dx, d eta/dz), central differences read bilinearly; 0 outside.
-    glm::dvec2 gradient_at(glm::dvec2 at) const;
 
     const std::vector<double>& heights() const { return eta_; }     // n * n, metres
     const std::vector<double>& potentials() const { return phi_; }  // n * n, m^2/s
@@ -115,6 +112,7 @@ private:
     Fft2d fft_;
     std::vector<double> eta_, phi_;
     std::vector<double> absorbing_rate_;  // 1/s, a cell
+    std::vector<double> speed_factor_;    // K = |k| tanh(|k| h) of each mode, by transform index
     std::int64_t origin_i_ = 0, origin_j_ = 0;  // the grid's centre, in whole cells from the world origin
     mutable std::vector<Complex> work_, forcing_work_;
     std::vector<double> height_kernel_, potential_kernel_;
