@@ -17,6 +17,7 @@
 #endif
 #include "step06_foam_sky/cascades.hpp"
 #include "step06_foam_sky/foam.hpp"
+#include "step06_foam_sky/local_waves.hpp"
 #include "step06_foam_sky/short_waves.hpp"
 
 #include <glm/vec2.hpp>
@@ -61,6 +62,12 @@ public:
     // resolve (the slope variance per mip level, and the waves shorter than the last cascade).
     void bind_for_shading(const ocean::ShaderProgram& p) const;
     bool has_streaks() const { return foam_->streaks(); }  // the residual combed into streaks (Beaufort 7 and up)
+    // Waves a later chapter adds on a grid of its own (step08's wake; local_waves.hpp), drawn,
+    // shaded and foaming with the cascades from the next frame on; nullptr: none (step06). The
+    // sea does not own them: they must outlive it or be taken away first.
+    void add_local_waves(const LocalWaves* waves) { local_waves_ = waves; }
+    // The variant every program that reads the maps is compiled in: with or without local waves.
+    std::vector<std::string> shader_defines() const;
 
     const CascadeView& cascades() const { return cascade_view_; }
     glm::dvec3 world_origin() const { return {cascade_view_.origin.x, 0.0, cascade_view_.origin.y}; }
@@ -101,6 +108,7 @@ private:
     std::vector<float> unresolved_by_level_;  // kMaxMipLevels per cascade
     SlopeVariance short_wave_slope_variance_;
     glm::dvec2 wind_heading_{1.0, 0.0};
+    const LocalWaves* local_waves_ = nullptr;
     std::vector<std::string> description_;
 };
 

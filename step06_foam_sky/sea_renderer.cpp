@@ -55,13 +55,13 @@ void SeaRenderer::record(const Sea& sea, const SeaFrame& frame) {
     glViewport(0, 0, frame.size.x, frame.size.y);
 }
 
-// The tessellated patches around the camera (depth tested and written): ocean.frag records the
-// G-buffer, or with WIREFRAME 1 draws the edges.
 // The patches around the camera (depth tested and written): ocean.frag records the G-buffer, or
 // with WIREFRAME 1 draws the edges.
 void SeaRenderer::draw_mesh(const std::string& name, const std::vector<std::string>& defines, const Sea& sea,
                             const SeaFrame& frame) {
-    ocean::ShaderProgram* mesh = programs_(name, SeaPatches::mesh_shaders(), defines);
+    std::vector<std::string> variant = defines;
+    for (const std::string& d : sea.shader_defines()) variant.push_back(d);  // local waves or none
+    ocean::ShaderProgram* mesh = programs_(name, SeaPatches::mesh_shaders(), variant);
     if (mesh == nullptr) return;
     sea.bind_maps(*mesh);
     // The grid follows the camera in whole patches of the world (in double), then is placed
@@ -85,8 +85,11 @@ void SeaRenderer::draw_mesh(const std::string& name, const std::vector<std::stri
 }
 
 std::vector<std::string> SeaRenderer::shading_defines(const Sea& sea, const LookParams& look) const {
-    return {"MICROFACET " + std::to_string(look.microfacet), "DEBUG_VIEW " + std::to_string(view_),
-            "ANISOTROPIC_TAPS " + std::to_string(anisotropy_), "STREAKS " + std::to_string(int(sea.has_streaks()))};
+    std::vector<std::string> defines = {"MICROFACET " + std::to_string(look.microfacet), "DEBUG_VIEW " + std::to_string(view_),
+                                        "ANISOTROPIC_TAPS " + std::to_string(anisotropy_),
+                                        "STREAKS " + std::to_string(int(sea.has_streaks()))};
+    for (const std::string& d : sea.shader_defines()) defines.push_back(d);  // local waves or none
+    return defines;
 }
 
 void SeaRenderer::bind_shading(const ocean::ShaderProgram& shade, const Sea& sea, const Sky& sky,

@@ -2,6 +2,8 @@
 
 #include "common/constants.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -21,27 +23,51 @@ glm::dvec2 WakeScene::boat_heading() const { return {std::cos(heading_), std::si
 
 void WakeScene::sail(double seconds, const BoatSettings& boat, double rudder) {
     if (!(seconds > 0)) return;
-    const double cell = field_.settings().cell;
-    const int steps = std::max(1, int(std::ceil(boat.speed * seconds / cell)));
+    const int steps = std::max(1, int(std::ceil(boat.speed * seconds / field_.settings().cell)));
     const double h = seconds / steps;
-    const int n = field_.n();
     rudder = std::clamp(rudder, -1.0, 1.0);
     for (int s = 0; s < steps; ++s) {
         heading_ += rudder * boat.turn_rate * ocean::kPi / 180 * h;
-        // The patch where the boat is in the middle of the step; the grid's centre a quarter of
-        // its side behind, so that most of the grid holds the wake.
-        const glm::dvec2 ahead = boat_heading(), middle = position_ + 0.5 * boat.speed * h * ahead;
-        field_.follow(middle - 0.25 * field_.side() * ahead);
-        const glm::dvec2 across(-ahead.y, ahead.x);
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const glm::dvec2 d = field_.cell_centre(i, j) - middle;
-                forcing_.pressure[std::size_t(j) * std::size_t(n) + std::size_t(i)] =
-                    hull_pressure(boat, {d.x * ahead.x + d.y * ahead.y, d.x * across.x + d.y * across.y});
-            }
-        field_.step(h, forcing_);
+        const glm::dvec2 ahead = boat_heading();
+        press_once(h, position_ + 0.5 * boat.speed * h * ahead, ahead, boat);
         position_ += boat.speed * h * ahead;
     }
+}
+
+void WakeScene::place(glm::dvec2 position, glm::dvec2 heading) {
+    position_ = position;
+    heading_ = std::atan2(heading.y, heading.x);
+    field_.follow(position_ - 0.25 * field_.side() * boat_heading());
+}
+
+void WakeScene::press(double seconds, glm::dvec2 to, glm::dvec2 heading, const BoatSettings& hull) {
+    if (!(seconds > 0)) return;
+    const glm::dvec2 from = position_;
+    const double from_heading = heading_;
+    // The turn taken the short way round.
+    const double turn = std::remainder(std::atan2(heading.y, heading.x) - from_heading, 2 * ocean::kPi);
+    const int steps = std::max(1, int(std::ceil(glm::length(to - from) / field_.settings().cell)));
+    const double h = seconds / steps;
+    for (int s = 0; s < steps; ++s) {
+        const double middle = (s + 0.5) / steps;
+        heading_ = from_heading + middle * turn;
+        press_once(h, from + middle * (to - from), boat_heading(), hull);
+    }
+    position_ = to;
+    heading_ = from_heading + turn;
+}
+
+void WakeScene::press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const BoatSettings& hull) {
+    field_.follow(middle - 0.25 * field_.side() * ahead);
+    const int n = field_.n();
+    const glm::dvec2 across(-ahead.y, ahead.x);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec2 d = field_.cell_centre(i, j) - middle;
+            forcing_.pressure[std::size_t(j) * std::size_t(n) + std::size_t(i)] =
+                hull_pressure(hull, {d.x * ahead.x + d.y * ahead.y, d.x * across.x + d.y * across.y});
+        }
+    field_.step(h, forcing_);
 }
 
 void WakeScene::drop_stone(glm::dvec2 at, double impulse, double radius) { field_.add_impulse(at, impulse, radius); }

@@ -31,6 +31,14 @@ public:
     // pressure. Cut into steps in which the boat moves at most a cell, so its patch slides
     // smoothly over the grid.
     void sail(double seconds, const BoatSettings& boat, double rudder);
+    // The boat put at `position` (x, z), heading along `heading` (x, z; any length), the grid
+    // following it; the field is left as it is.
+    void place(glm::dvec2 position, glm::dvec2 heading);
+    // A hull the program moves itself (step08's main: step07's boat, pushed by its engine): over
+    // `seconds` its middle goes on from where it was to `to` (x, z) and its heading turns to
+    // `heading` (x, z), pressing with `hull`'s patch (its speed and turn rate unused). Cut into steps
+    // in which it moves at most a cell, as sail() is.
+    void press(double seconds, glm::dvec2 to, glm::dvec2 heading, const BoatSettings& hull);
     // A stone's splash at `at` (x, z): an impulse of `impulse` m^4/s (its momentum over the
     // water's density) spread over `radius` metres.
     void drop_stone(glm::dvec2 at, double impulse = 0.02, double radius = 0.3);
@@ -40,6 +48,10 @@ public:
     glm::dvec2 boat_heading() const;  // unit (x, z)
 
 private:
+    // One step of h seconds with the patch at `middle`, heading `ahead` (unit); the grid's centre a
+    // quarter of its side behind it, so that most of the grid holds the wake.
+    void press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const BoatSettings& hull);
+
     WaveField field_;
     Forcing forcing_;
     glm::dvec2 position_{0.0};

@@ -1,0 +1,24 @@
+// Chapter 8.6: the wake drawn on step06's sea. The renderer draws a sea as step05's two maps,
+// (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz): the wave field becomes the same
+// two maps over its own grid, and step06's shaders add them to the cascades (local_waves.glsl).
+//
+// The field holds heights only. Its horizontal motion follows from them as it does for every
+// linear wave (step05's choppy waves): a mode of height eta^(k) moves the water sideways by
+// D^(k) = i (k / |k|) eta^(k), so that a crest h = A cos(k.x) is drawn with D = -k^ A sin(k.x)
+// (step05's Gerstner form, which pulls the points towards the crest). Every map is then the
+// transform of the heights times a factor: i kx for dh/dx, -kx kx / |k| for dDx/dx, and so on;
+// four inverse FFTs (two real maps in each complex one) make all eight. The Jacobian of the wake's
+// choppy displacement falls below one on its steep crests, and step06's foam forms there.
+#pragma once
+
+#include "step06_foam_sky/local_waves.hpp"
+#include "step08_wakes/wave_field.hpp"
+
+namespace step08 {
+
+// The field's maps with choppiness l (step05's: how far the crests are pulled together), in
+// double then rounded to float, laid out as step06::LocalWaves takes them. The transform's Nyquist
+// row and column are left out: their horizontal motion is not a real field (i kx is odd there).
+step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness);
+
+}  // namespace step08
