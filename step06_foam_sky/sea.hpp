@@ -43,6 +43,9 @@ using SeaSimulation = step05::OceanSimulation;
 class Sea {
 public:
     Sea();  // step06's sea: a near gale (14 m/s) over a 500 m first tile (use_default_sea)
+    // Another wind for a later chapter's default (step08's breeze, in which a wake shows): before
+    // declare(), so that it is the parameter's default.
+    void use_wind_speed(double metres_per_second) { params_.spectrum.wind_speed = metres_per_second; }
 
     // The sea state (wind, fetch, swell, choppiness, resolution), which cascades are drawn, and the
     // foam's two rates. The spectrum's shape (model, gamma, cut-offs, ...) is step05's lesson: its
@@ -73,6 +76,7 @@ public:
     glm::dvec3 world_origin() const { return {cascade_view_.origin.x, 0.0, cascade_view_.origin.y}; }
     // How far the waves can move a point, metres: the mesh's culling boxes are widened by it.
     double largest_displacement() const;
+    double choppiness() const { return params_.choppiness; }  // l: how far the crests are pulled together
     const step05::SpectrumParams& spectrum() const { return params_.spectrum; }
     double wind_direction() const { return params_.spectrum.wind_direction; }  // degrees, where it blows to
     std::vector<double> tile_sizes() const;  // metres, the four cascades'

@@ -2,7 +2,7 @@
 // Beyond the notes. The sea is step06's: this program owns step06's parts (the Sea, the Sky, the
 // SeaRenderer, the PostProcess) and composes them as step06's main.cpp does, adding the bodies
 // between the sea and the sky behind it; this chapter asks the sea questions. Each frame the maps the renderer draws reach the CPU (from the FFTW backend
-// directly, or from the GPU through map_readback.hpp, a frame late), the height above each hull
+// directly, or from the GPU through map_readback.hpp, a frame late: sea_feed.hpp), the height above each hull
 // cell is found by inverting the choppy displacement (sea_query.hpp), and a buoy, a raft and a
 // boat move under buoyancy and drag (floating_body.hpp).
 // Controls: step06's; the arrows (held) steer the boat, a right click pushes the body under the cursor;
@@ -15,12 +15,11 @@
 #include "step06_foam_sky/sea_renderer.hpp"
 #include "step06_foam_sky/sky.hpp"
 #include "step07_buoyancy/bodies.hpp"
-#include "step07_buoyancy/body_mesh.hpp"
+#include "step07_buoyancy/body_painter.hpp"
 #include "step07_buoyancy/body_params.hpp"
 #include "step07_buoyancy/floating_body.hpp"
-#include "step07_buoyancy/map_readback.hpp"
 #include "step07_buoyancy/query_grid.hpp"
-#include "step07_buoyancy/sea_maps.hpp"
+#include "step07_buoyancy/sea_feed.hpp"
 #include "step07_buoyancy/sea_query.hpp"
 
 #include "common/error.hpp"
@@ -39,12 +38,6 @@
 #include <sstream>
 
 namespace {
-
-// A sea the bodies can read, and the time it belongs to.
-struct TimedSea {
-    step07::MapSea sea;
-    double time = 0;
-};
 
 class Buoyancy : public ocean::App {
 public:
@@ -76,6 +69,7 @@ private:
         renderer_.init(program_factory());
         post_.init(program_factory());
         queries_.init(program_factory());
+        painter_.init(program_factory());
     }
 
     // step06's frame (its main.cpp), then the bodies on the sea it made.
@@ -95,61 +89,19 @@ private:
         }
         ocean::GpuScope timed(timers(), "bodies");
         const auto started = std::chrono::steady_clock::now();
-        std::optional<TimedSea> sea = newest_sea();
-        const bool arrived = sea.has_value();
-        if (arrived) {
-            sea_before_ = sea_now_ ? std::move(sea_now_) : std::optional<TimedSea>(*sea);
-            sea_now_ = std::move(sea);
-        }
+        feed_.update(sea_, time);
         read_input();  // every frame: a click before the first sea arrives is answered, not lost
-        if (!sea_now_) return;
-        // The sea moved from before to now over this frame only if a new one came; a frame with
-        // none (the read-back still in flight) holds the latest (still water for its drag) rather
-        // than replaying the last frame's motion.
-        const step07::MapSea& before = arrived ? sea_before_->sea : sea_now_->sea;
+        if (!feed_.ready()) return;
         if (bodies_built_for_ != body_params_.changed.value || bodies_.empty()) {
             bodies_built_for_ = body_params_.changed.value;
             drop_bodies();
         }
         steer_boat();
-        const double sea_interval = sea_now_->time - sea_before_->time;
-        step07::advance_bodies(bodies_, before, sea_now_->sea, dt, sea_interval);
-        queries_.update(sea_now_->sea, sea_, camera().eye_world(), camera().forward(), time);
+        step07::advance_bodies(bodies_, feed_.before(), feed_.now(), dt, feed_.interval());
+        queries_.update(feed_.now(), sea_, camera().eye_world(), camera().forward(), time);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             trajectory_.push_back({time, int(b), bodies_[b].position(), bodies_[b].orientation()});
         bodies_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    }
-
-    // The maps of this frame (FFTW) or the latest read back from the GPU (a frame late).
-    std::optional<TimedSea> newest_sea() {
-        const std::vector<double> tiles = sea_.tile_sizes();
-        // Each cascade's orbits shrink with depth by its band's wavenumber (sea_maps.hpp).
-        const std::vector<double> wavenumbers = step07::band_wavenumbers(sea_.spectrum());
-#ifndef OCEAN_GL_PORTABLE  // the FFTW backend's maps are on the CPU already
-        if (const step05::CpuSimulation* cpu = sea_.simulation().maps_on_cpu()) {
-            readback_.forget();  // auto's trial frames switch backends: no older GPU maps after these
-            const auto& level = cpu->levels()[0];
-            latency_frames_ = 0;
-            return TimedSea{
-                step07::sea_from_layers(level.displacement, level.slopes, level.size, tiles, wavenumbers),
-                time()};
-        }
-#endif
-        // The very first sea is read at once, waiting for the GPU: with no bodies yet there is
-        // nothing to keep moving meanwhile, and they are dropped on the sea of the frame they
-        // appear in. After it, last frame's copy first (a frame late), then this frame's is queued.
-        std::optional<step07::ArrivedMaps> arrived;
-        latency_frames_ = sea_now_ ? 1 : 0;
-        if (!sea_now_) {
-            arrived = step07::MapReadback::read_now(sea_.simulation(), time());
-        } else {
-            arrived = readback_.take();
-            readback_.request(sea_.simulation(), time());
-        }
-        if (!arrived) return std::nullopt;
-        return TimedSea{
-            step07::sea_from_layers(arrived->displacement, arrived->slopes, arrived->n, tiles, wavenumbers),
-            arrived->time};
     }
 
     // The three bodies, in front of the camera (anywhere on the ocean: positions in double).
@@ -179,7 +131,7 @@ private:
                             post_.depth_texture(), fullscreen_vao()});
         }
         queries_.draw(sea_.world_origin(), view_projection);
-        draw_bodies(view_projection);
+        painter_.draw(bodies_, sea_.world_origin(), view_projection, camera().eye_world(), *sky_, look_);
         {
             ocean::GpuScope timed(timers(), "background");
             sky_->draw_background(view_projection, fullscreen_vao());
@@ -192,35 +144,6 @@ private:
         ocean::GpuScope timed(timers(), "tonemap");
         bind_target();
         post_.tonemap(image, fullscreen_vao());
-    }
-
-    void draw_bodies(const glm::mat4& view_projection) {
-        ocean::ShaderProgram* p = program("body", {"body.vert", "body.frag"});
-        if (p == nullptr || bodies_.empty()) return;
-        if (!meshes_) meshes_ = std::make_unique<step07::BodyMeshes>();
-        look_.upload_shading(*p);
-        p->set("u_view_projection", view_projection);
-        p->set("u_eye", glm::vec3(camera().eye_world() - sea_.world_origin()));
-        p->set("u_sky_max_lod", sky_->max_lod());
-        sky_->bind();
-        glUseProgram(p->id());
-        glEnable(GL_DEPTH_TEST);
-        const glm::vec3 colours[3] = {{0.8f, 0.12f, 0.03f}, {0.35f, 0.22f, 0.12f}, {0.75f, 0.75f, 0.72f}};
-        for (std::size_t b = 0; b < bodies_.size(); ++b) {
-            const step07::FloatingBody& body = bodies_[b];
-            const step07::Shape& shape = body.settings().shape;
-            const glm::vec3 scale = shape.kind == step07::ShapeKind::Sphere ? glm::vec3(float(shape.size.x)) : glm::vec3(shape.size);  // box and hull: (length, depth, beam)
-            // From the world origin near the camera, in double, then float: small numbers anywhere.
-            const glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(body.position() - sea_.world_origin())) *
-                                    glm::mat4_cast(glm::quat(body.orientation())) *
-                                    glm::translate(glm::mat4(1.0f), glm::vec3(body.shape_centre())) *
-                                    glm::scale(glm::mat4(1.0f), scale);
-            p->set("u_model", model);
-            p->set("u_scale", scale);
-            p->set("u_colour", colours[b % 3]);
-            meshes_->draw(shape.kind);
-        }
-        glDisable(GL_DEPTH_TEST);
     }
 
     // The keys and the mouse (windowed; each frame in update(), the panel shown or not): the arrows,
@@ -272,7 +195,7 @@ private:
         ImGui::Separator();
         // Wrapped at the panel's edge, however narrow it is.
         ImGui::TextWrapped("bodies and queries: %.2f ms a frame; the maps %s", bodies_ms_,
-                           latency_frames_ == 0 ? "of this frame (FFTW)" : "read back, a frame late");
+                           feed_.latency_frames() == 0 ? "of this frame (FFTW)" : "read back, a frame late");
         ImGui::TextWrapped("arrows: steer the boat; right click: push a body");
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             ImGui::TextWrapped("%s: %.2f m above the mean level, %.0f%% under water, %.1f m/s", step07::kBodyNames[b % 3],
@@ -318,14 +241,12 @@ private:
     // The bodies, and what asks the sea.
     std::vector<step07::FloatingBody> bodies_;
     std::vector<TrajectoryRow> trajectory_;
-    std::optional<TimedSea> sea_before_, sea_now_;
-    step07::MapReadback readback_;
-    std::unique_ptr<step07::BodyMeshes> meshes_;
+    step07::SeaFeed feed_;
+    step07::BodyPainter painter_;
     unsigned bodies_built_for_ = 0;
     step07::BodyParams body_params_;
     step07::Steering steering_;
     double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held
-    int latency_frames_ = 0;
     double bodies_ms_ = 0;
     step07::QueryGrid queries_;
 };

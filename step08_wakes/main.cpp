@@ -1,52 +1,104 @@
-// step08_wakes: the waves a boat makes, seen from above.
-// Beyond the notes. A wave field around the boat (wave_field.hpp: heights and a velocity potential,
-// each Fourier mode turned by its own frequency omega = sqrt(g k tanh kh)) is pushed by the boat's
-// hull, a patch of pressure sailing with it (wake_scene.hpp), and by stones dropped with a click;
-// Kelvin's wake opens behind the boat at 19.5 degrees, narrower when it goes fast.
-// Controls: the left and right arrows (held) turn the boat; a left click drops a stone; the panel
-// sets the boat's speed, length and draft.
+// step08_wakes: the waves a boat makes, on step06's sea.
+// Beyond the notes. The program composes the earlier chapters' parts: step06's sea, sky, renderer
+// and post-processing, step07's bodies and the feed of the sea they float on. To them it adds the
+// wave field around step07's boat (wave_field.hpp: each Fourier mode turned at its own frequency
+// sqrt(g k tanh kh)), pushed each frame by the boat's hull, a patch of pressure that displaces the
+// water the hull does (wake_scene.hpp), and by stones dropped with a click. The field becomes two
+// maps in step05's layout (wake_maps.hpp) that step06's shaders add to the cascades
+// (local_waves.glsl): the wake moves the mesh, shades the pixels and folds into foam; the buoy and
+// the raft float on the sea with the wake in it (wake_sea.hpp).
+// `plan` shows the wake alone from above, a boat at a set speed on still water (plan_view.hpp):
+// the lesson's laboratory, where Kelvin's angle is measured.
+// Controls: step06's; the arrows (held) steer the boat; a left click drops a stone.
 #include "common/app.hpp"
-#include "common/error.hpp"
-#include "common/gl_texture.hpp"
-#include "step08_wakes/kelvin.hpp"
+#include "step06_foam_sky/look_params.hpp"
+#include "step06_foam_sky/post.hpp"
+#include "step06_foam_sky/sea.hpp"
+#include "step06_foam_sky/sea_renderer.hpp"
+#include "step06_foam_sky/sky.hpp"
+#include "step07_buoyancy/bodies.hpp"
+#include "step07_buoyancy/body_painter.hpp"
+#include "step07_buoyancy/body_params.hpp"
+#include "step07_buoyancy/hull_forces.hpp"
+#include "step07_buoyancy/sea_feed.hpp"
+#include "step08_wakes/plan_view.hpp"
 #include "step08_wakes/wake_experiments.hpp"
+#include "step08_wakes/wake_maps.hpp"
 #include "step08_wakes/wake_scene.hpp"
+#include "step08_wakes/wake_sea.hpp"
 
 #include <GLFW/glfw3.h>
+#include <glm/gtc/quaternion.hpp>
 #include <imgui.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
-#include <string>
 #include <vector>
 
 namespace {
+
+// A moderate breeze (Beaufort 4): waves a metre high, a few whitecaps, and a wake that shows in
+// them. step06's near gale would hide it.
+constexpr double kBreeze = 6;
+
+bool same_field(const step08::WaveFieldSettings& a, const step08::WaveFieldSettings& b) {
+    return a.n == b.n && a.cell == b.cell && a.depth == b.depth;
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
 
 class Wakes : public ocean::App {
 public:
     Wakes()
         : App({"Wakes", "-",
-               "The waves a boat makes: a field of heights and potentials around it, each wave turned at its own "
-               "frequency sqrt(g k tanh kh). The wake opens at Kelvin's 19.5 degrees; faster, it narrows. "
-               "Arrows: turn the boat; left click: drop a stone."}) {
+               "The waves a boat makes, on step06's sea: a field of heights and potentials around step07's boat, each "
+               "wave turned at its own frequency sqrt(g k tanh kh), drawn with the sea, foaming where it folds, rocking "
+               "the buoy. Arrows: steer the boat; left click: drop a stone; plan: the wake alone, from above.",
+               /*window_samples=*/0}) {
+        sea_.use_wind_speed(kBreeze);
+        body_params_.boat_length = 6;  // Froude number 0.5 at 4 m/s: a Kelvin wake
+        steering_.throttle = 0.5f;     // about 4 m/s (the thrust against the hull's drag)
         ocean::ParamRegistry& p = params();
-        p.add_float("boat_speed", &boat_.speed, 0, 12, "the boat's speed, metres per second");
-        p.add_float("boat_length", &boat_.length, 1, 20, "the boat's length at the waterline, metres");
-        p.add_float("draft", &boat_.draft, 0, 2, "how deep the hull presses the water at its middle, metres");
-        p.add_float("rudder", &rudder_, -1, 1, "the rudder, -1 (port) to 1 (starboard); the arrows add to it");
-        p.add_float("depth", &depth_, 0.5f, 1000, "the water's depth, metres (1000: deep)").logarithmic();
-        p.add_choice("cells", &cells_choice_, {"64", "128", "256"}, "the wave field's cells a side");
-        p.add_float("cell", &cell_, 0.1f, 2, "the wave field's cell, metres");
-        p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat sails before the first frame");
-        p.add_float("relief", &relief_, 1, 50, "how many times the shading exaggerates the slopes").logarithmic();
-        p.add_bool("kelvin_lines", &kelvin_lines_, "draw Kelvin's edges, 19.47 degrees either side of the track");
-        p.add_bool("show_field", &show_field_, "outline the field's grid and its absorbing layer");
-        offer_bench_figures([this] { return time_the_field(); });
+        sea_.declare(p);
+        renderer_.declare(p);
+        look_.declare(p);
+        body_params_.declare(p);
+        steering_.declare(p);
+        {
+            const auto group = p.group("wake");
+            p.add_bool("plan", &plan_, "the wake alone, from above: a boat at boat_speed on still water");
+            p.add_float("depth", &depth_, 0.5f, 1000, "the water's depth under the wake, metres (1000: deep)").logarithmic();
+            p.add_choice("cells", &cells_choice_, {"64", "128", "256"}, "the wave field's cells a side");
+            p.add_float("cell", &cell_, 0.1f, 2, "the wave field's cell, metres");
+            p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat has sailed before the first frame");
+            p.add_bool("follow_boat", &follow_boat_, "the camera keeps the boat where it is in the view");
+        }
+        plan_view_.declare(p);
+        use_camera({{0, 0, 0}, 45, 35, 22}, ocean::kOceanReach);
+        offer_bench_figures([this] { return bench_figures(); });
+#ifndef OCEAN_GL_PORTABLE  // step05's backends: GL 4.5 only
+        offer_warm_up([this] { return !plan_ && sea_.choosing_backend(); });
+#endif
     }
 
 private:
+    void init() override {
+        sea_.init(program_factory());
+        sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
+        renderer_.init(program_factory());
+        post_.init(program_factory());
+        painter_.init(program_factory());
+        plan_view_.init(program_factory());
+        sea_.add_local_waves(&local_waves_);
+    }
+
     step08::WaveFieldSettings field_settings() const {
         step08::WaveFieldSettings s;
         s.n = 64 << cells_choice_;
@@ -56,114 +108,237 @@ private:
         return s;
     }
 
-    void update(double, double dt) override {
+    void update(double time, double dt) override {
         read_input();
-        const step08::WaveFieldSettings wanted = field_settings();
-        if (!scene_ || wanted.n != scene_->field().n() || wanted.cell != scene_->field().settings().cell ||
-            wanted.depth != scene_->field().settings().depth) {
-            scene_ = std::make_unique<step08::WakeScene>(wanted);
-            scene_->sail(warm_up_, boat_, rudder_);  // the window opens on a wake already made
+        if (plan_) {
+            plan_view_.update(dt, field_settings(), body_params_.boat_length, warm_up_, key_rudder_);
+            for (const glm::dvec2& stone : stones_) plan_view_.drop_stone(stone);
+            stones_.clear();
+            return;
         }
-        for (const glm::dvec2& stone : stones_) scene_->drop_stone(stone);
+        const glm::dvec3 eye = camera().eye_world();
+        {
+            ocean::GpuScope timed(timers(), "simulation");
+            sea_.simulate(time, eye);
+        }
+        {
+            ocean::GpuScope timed(timers(), "foam");
+            sea_.update_foam(dt, eye, camera().forward());
+        }
+        {
+            ocean::GpuScope timed(timers(), "sky");
+            sky_->update(look_.sky(time, sea_.wind_direction()), look_.sky_image, look_.sky_image_changes.value);
+        }
+        ocean::GpuScope timed(timers(), "bodies and wake");
+        feed_.update(sea_, time);
+        if (!feed_.ready()) return;
+        if (bodies_built_for_ != body_params_.changed.value || bodies_.empty() || !wake_ ||
+            !same_field(wake_settings_, field_settings())) {
+            drop_bodies_and_warm_up();
+        }
+        sail(std::min(dt, step07::kMaxBodyFrame));
+    }
+
+    // One frame of the bodies and the wake. The boat floats on the sea without its wake: the hull's
+    // own depression is the water it displaces, which its buoyancy already counts. It then presses
+    // on the field along the way it went; the buoy and the raft float on the sea with the wake in
+    // it, the wake moving from last frame's to this frame's as the sea does.
+    void sail(double dt) {
+        const auto started = std::chrono::steady_clock::now();
+        step07::FloatingBody& boat = bodies_[step07::kBoat];
+        step07::steer(boat, double(steering_.throttle) + key_throttle_, double(steering_.rudder) + key_rudder_);
+        const glm::dvec3 boat_before = boat.position();
+        boat.step(feed_.before(), feed_.now(), dt, feed_.interval());
+        press(*wake_, boat, dt);
+        wake_before_ = std::move(wake_now_);
+        wake_now_ = step08::wake_maps(wake_->field(), sea_.choppiness());
+        const step08::SeaWithWake before(feed_.before(), wake_before_), now(feed_.now(), wake_now_);
+        for (std::size_t b = 0; b < bodies_.size(); ++b)
+            if (b != step07::kBoat) bodies_[b].step(before, now, dt, feed_.interval());
+        for (const glm::dvec2& stone : stones_) wake_->drop_stone(stone);
         stones_.clear();
-        scene_->sail(dt, boat_, double(rudder_) + key_rudder_);
+        local_waves_.upload(wake_now_);
+        if (follow_boat_) camera().target += glm::dvec3(boat.position().x - boat_before.x, 0, boat.position().z - boat_before.z);
+        wake_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     }
 
-    // --bench: the wave field runs on the CPU, outside the GPU passes the table times; here a copy
-    // of the scene sails 15 frames of 1/60 s, each timed (median, milliseconds).
-    BenchFigures time_the_field() const {
-        if (!scene_) return {};
-        step08::WakeScene scene = *scene_;
+    // The hull's patch pressed on the field over dt, from where it was to where the boat is now.
+    static void press(step08::WakeScene& wake, const step07::FloatingBody& boat, double dt) {
+        const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
+        wake.press(dt, {boat.position().x, boat.position().z}, {along.x, along.z},
+                   step08::hull_of(boat.settings().shape.size.x, boat.submerged_volume()));
+    }
+
+    // step07's bodies dropped in front of the camera; the boat already under way at the speed its
+    // throttle holds (thrust against drag), its wake made by `warm_up` seconds of sailing the
+    // same line, so the window opens on a wake.
+    void drop_bodies_and_warm_up() {
+        bodies_built_for_ = body_params_.changed.value;
+        const glm::vec3 f = camera().forward();
+        const glm::dvec2 ahead = glm::normalize(glm::dvec2(f.x, f.z) + glm::dvec2(1e-9, 0));
+        bodies_ = step07::drop_bodies(body_params_, camera().eye_world(), ahead);
+        step07::FloatingBody& boat = bodies_[step07::kBoat];
+        const double speed = step07::kFullThrust * double(steering_.throttle) * ocean::kGravity /
+                             std::max(double(body_params_.drag), 0.05);
+        const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
+        const glm::dvec2 heading = glm::normalize(glm::dvec2(along.x, along.z));
+        boat.push(boat.mass() * speed * glm::dvec3(heading.x, 0, heading.y), boat.position());
+        wake_settings_ = field_settings();
+        wake_ = std::make_unique<step08::WakeScene>(wake_settings_);
+        // Afloat at rest the hull displaces its own mass of water (Archimedes).
+        step08::BoatSettings hull = step08::hull_of(boat.settings().shape.size.x, boat.mass() / step07::kWaterDensity);
+        hull.speed = speed;
+        const glm::dvec2 at(boat.position().x, boat.position().z);
+        wake_->place(at - double(warm_up_) * speed * heading, heading);
+        wake_->sail(warm_up_, hull, 0);
+        wake_now_ = step08::wake_maps(wake_->field(), sea_.choppiness());
+        if (follow_boat_) look_from_behind(boat.position(), heading);
+    }
+
+    // The camera on the boat, from behind it and a little to port, high enough to see the wake's V
+    // open behind it (the view aerial photographs of wakes take).
+    void look_from_behind(glm::dvec3 boat, glm::dvec2 heading) {
+        ocean::Camera& c = camera();
+        c.target = glm::dvec3(boat.x, 0, boat.z);
+        // forward() is (sin yaw, -cos yaw) on the water: yaw along the heading, turned 20 degrees.
+        c.yaw_deg = float(glm::degrees(std::atan2(heading.x, -heading.y))) + 20;
+    }
+
+    // --bench: the wake's CPU time per 1/60 s of sailing (a copy of the field pressed 15 times by a
+    // boat going straight on, and its maps made each time; median, milliseconds), and step05's
+    // backends as step07 times them.
+    BenchFigures bench_figures() {
+        BenchFigures figures;
+#ifndef OCEAN_GL_PORTABLE
+        if (!plan_) figures = sea_.time_backends(time());
+#endif
         std::vector<double> times;
-        for (int i = 0; i < 15; ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            scene.sail(1.0 / 60, boat_, double(rudder_));
-            times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        if (plan_ && plan_view_.scene() != nullptr) {
+            step08::WakeScene scene = *plan_view_.scene();
+            for (int i = 0; i < 15; ++i) {
+                const auto start = std::chrono::steady_clock::now();
+                scene.sail(1.0 / 60, plan_view_.boat(), plan_view_.rudder());
+                times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            }
+        } else if (wake_ && !bodies_.empty()) {
+            step08::WakeScene scene = *wake_;
+            const step07::FloatingBody& boat = bodies_[step07::kBoat];
+            step08::BoatSettings hull = step08::hull_of(boat.settings().shape.size.x, boat.submerged_volume());
+            hull.speed = glm::length(glm::dvec2(boat.velocity().x, boat.velocity().z));
+            for (int i = 0; i < 15; ++i) {
+                const auto start = std::chrono::steady_clock::now();
+                scene.sail(1.0 / 60, hull, 0);
+                const step06::LocalWaveMaps maps = step08::wake_maps(scene.field(), sea_.choppiness());
+                times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            }
         }
-        std::sort(times.begin(), times.end());
-        return {{"wave_field_ms", times[times.size() / 2]}};
+        figures.push_back({"wave_field_ms", median(times)});
+        return figures;
     }
 
+    // The arrows (held) steer the boat; a left click drops a stone where the cursor meets the sea.
     void read_input() {
         const ImGuiIO& io = ImGui::GetIO();
-        key_rudder_ = 0;
-        if (!io.WantCaptureKeyboard)
+        key_throttle_ = key_rudder_ = 0;
+        if (!io.WantCaptureKeyboard) {
+            key_throttle_ = double(ImGui::IsKeyDown(GLFW_KEY_UP)) - double(ImGui::IsKeyDown(GLFW_KEY_DOWN));
             key_rudder_ = double(ImGui::IsKeyDown(GLFW_KEY_RIGHT)) - double(ImGui::IsKeyDown(GLFW_KEY_LEFT));
+        }
         for (const ocean::InputEvent& press : frame_input().presses)
-            if (press.code == ocean::input::kMouseLeft && !io.WantCaptureMouse && scene_) stones_.push_back(to_world(press.at));
+            if (press.code == ocean::input::kMouseLeft && !io.WantCaptureMouse) drop_stone_at(glm::dvec2(press.at));
     }
 
-    // A window pixel (from the top left) to the world point under it (x, z).
-    glm::dvec2 to_world(glm::dvec2 pixel) const {
+    void drop_stone_at(glm::dvec2 cursor) {
         const ImGuiIO& io = ImGui::GetIO();
-        const glm::dvec2 size(std::max(1.0f, io.DisplaySize.x), std::max(1.0f, io.DisplaySize.y));
-        const glm::dvec2 uv(pixel.x / size.x, 1 - pixel.y / size.y);
-        return view_centre() + (2.0 * uv - 1.0) * half_view();
-    }
-    glm::dvec2 view_centre() const {
-        const step08::WaveField& f = scene_->field();
-        return 0.5 * (f.cell_centre(0, 0) + f.cell_centre(f.n() - 1, f.n() - 1));
-    }
-    // The grid's side fills the window's height.
-    glm::dvec2 half_view() const {
-        const double half = 0.5 * scene_->field().side();
-        return {half * aspect(), half};
+        if (io.DisplaySize.x <= 0 || io.DisplaySize.y <= 0) return;
+        const glm::dvec2 uv(cursor.x / io.DisplaySize.x, 1 - cursor.y / io.DisplaySize.y);
+        if (plan_) {
+            stones_.push_back(plan_view_.to_world(uv, aspect()));
+            return;
+        }
+        // The cursor's ray from the eye, to where it meets the mean level (y = 0).
+        const glm::mat4 inverse = glm::inverse(camera().projection(aspect()) * camera().view(sea_.world_origin()));
+        const glm::vec4 near = inverse * glm::vec4(2.0f * glm::vec2(uv) - 1.0f, -1, 1);
+        const glm::vec4 far = inverse * glm::vec4(2.0f * glm::vec2(uv) - 1.0f, 1, 1);
+        const glm::dvec3 from = sea_.world_origin() + glm::dvec3(glm::vec3(near) / near.w);
+        const glm::dvec3 ray = glm::dvec3(glm::vec3(far) / far.w - glm::vec3(near) / near.w);
+        if (!(ray.y < 0)) return;  // above the horizon: no sea there
+        const glm::dvec3 hit = from - (from.y / ray.y) * ray;
+        stones_.push_back({hit.x, hit.z});
     }
 
     void render() override {
-        clear_target({0, 0, 0});
-        if (!scene_) return;
-        const step08::WaveField& f = scene_->field();
-        if (heights_.id() == 0 || texture_cells_ != f.n()) {
-            heights_ = ocean::make_float_texture_2d(GL_R32F, f.n(), f.n());
-            texture_cells_ = f.n();
+        if (plan_) {
+            clear_target({0, 0, 0});
+            ocean::GpuScope timed(timers(), "wake");
+            plan_view_.draw(aspect(), framebuffer_size().y, fullscreen_vao());
+            return;
         }
-        upload_.assign(f.heights().begin(), f.heights().end());
-        ocean::upload_float_texture_2d(heights_, GL_R32F, f.n(), f.n(), upload_.data());
-        ocean::ShaderProgram* p = program("wake", {"fullscreen.vert", "wake.frag"});
-        if (p == nullptr) return;
-        const glm::dvec2 centre = view_centre();
-        p->set("u_cells", f.n());
-        p->set("u_cell", float(f.settings().cell));
-        p->set("u_first_cell", glm::vec2(f.cell_centre(0, 0) - centre));
-        p->set("u_half_view", glm::vec2(half_view()));
-        p->set("u_boat", glm::vec2(scene_->boat_position() - centre));
-        p->set("u_heading", glm::vec2(scene_->boat_heading()));
-        p->set("u_boat_length", float(boat_.length));
-        p->set("u_relief", relief_);
-        p->set("u_kelvin", kelvin_lines_ ? 1.0f : 0.0f);
-        p->set("u_kelvin_angle", float(step08::kelvin_edge_angle(0.5)));  // deep water: c_g = c / 2
-        p->set("u_pixels_high", float(framebuffer_size().y));
-        p->set("u_show_field", show_field_ ? 1.0f : 0.0f);
-        p->set("u_absorbing_width", float(f.settings().absorbing_width));
-        ocean::bind_texture(0, GL_TEXTURE_2D, heights_.id());
-        ocean::GpuScope timed(timers(), "wake");
-        glUseProgram(p->id());
-        draw_fullscreen_triangle();
+        post_.begin(framebuffer_size());
+        const glm::mat4 view_projection = camera().projection(aspect()) * camera().view(sea_.world_origin());
+        {
+            ocean::GpuScope timed(timers(), "ocean");
+            renderer_.draw(sea_, *sky_, look_,
+                           {view_projection, camera().eye_world(), framebuffer_size(), post_.scene_framebuffer(),
+                            post_.depth_texture(), fullscreen_vao()});
+        }
+        painter_.draw(bodies_, sea_.world_origin(), view_projection, camera().eye_world(), *sky_, look_);
+        {
+            ocean::GpuScope timed(timers(), "background");
+            sky_->draw_background(view_projection, fullscreen_vao());
+        }
+        const step06::PostSettings image = look_.post(renderer_.view() == step06::kViewShaded);
+        {
+            ocean::GpuScope timed(timers(), "bloom");
+            post_.bloom(image, fullscreen_vao());
+        }
+        ocean::GpuScope timed(timers(), "tonemap");
+        bind_target();
+        post_.tonemap(image, fullscreen_vao());
     }
 
     void ui() override {
-        if (!scene_) return;
         ImGui::Separator();
-        const double froude = step08::froude_number(boat_.speed, boat_.length);
-        ImGui::TextWrapped("Froude number U / sqrt(g L) = %.2f; transverse waves %.1f m long", froude,
-                           step08::transverse_wavelength(boat_.speed));
+        ImGui::TextWrapped("arrows: steer the boat; left click: drop a stone");
+        double speed = plan_view_.boat().speed, length = body_params_.boat_length;
+        if (!plan_ && !bodies_.empty()) {
+            const glm::dvec3 v = bodies_[step07::kBoat].velocity();
+            speed = glm::length(glm::dvec2(v.x, v.z));
+            ImGui::TextWrapped("the wake: %.2f ms a frame on the CPU", wake_ms_);
+        }
+        const double froude = step08::froude_number(speed, length);
+        ImGui::TextWrapped("boat %.1f m/s; Froude number U / sqrt(g L) = %.2f; transverse waves %.1f m long", speed,
+                           froude, step08::transverse_wavelength(speed));
         ImGui::TextWrapped("%s", froude < 0.6 ? "a Kelvin wake: its edge at 19.5 degrees"
                                               : "fast: the largest waves at a narrower angle, about 1 / Fr");
-        ImGui::TextWrapped("arrows: turn the boat; left click: drop a stone");
-        if (ImGui::Button("drop a stone ahead")) stones_.push_back(scene_->boat_position() + 10.0 * scene_->boat_heading());
+        if (plan_ && ImGui::Button("drop a stone ahead")) plan_view_.drop_stone_ahead();
     }
 
-    step08::BoatSettings boat_;
-    float rudder_ = 0, depth_ = 1000, cell_ = 0.5, warm_up_ = 20, relief_ = 8;
+    // step06's parts.
+    step06::Sea sea_;
+    std::unique_ptr<step06::Sky> sky_;
+    step06::SeaRenderer renderer_;
+    step06::PostProcess post_;
+    step06::LookParams look_;
+    // step07's bodies.
+    std::vector<step07::FloatingBody> bodies_;
+    step07::SeaFeed feed_;
+    step07::BodyPainter painter_;
+    step07::BodyParams body_params_;
+    step07::Steering steering_;
+    unsigned bodies_built_for_ = 0;
+    // The wake: its field, its maps last frame and now, and the textures step06's shaders read.
+    std::unique_ptr<step08::WakeScene> wake_;
+    step08::WaveFieldSettings wake_settings_;
+    step06::LocalWaveMaps wake_before_, wake_now_;
+    step06::LocalWaves local_waves_;
+    step08::PlanView plan_view_;
+    bool plan_ = false, follow_boat_ = true;
+    float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;
     int cells_choice_ = 1;
-    bool show_field_ = false, kelvin_lines_ = false;
-    double key_rudder_ = 0;
-    std::unique_ptr<step08::WakeScene> scene_;
+    double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held
     std::vector<glm::dvec2> stones_;
-    ocean::Texture heights_;
-    int texture_cells_ = 0;
-    std::vector<float> upload_;
+    double wake_ms_ = 0;
 };
 
 }  // namespace

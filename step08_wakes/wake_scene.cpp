@@ -15,6 +15,13 @@ double hull_pressure(const BoatSettings& boat, glm::dvec2 along_across) {
     return ocean::kGravity * boat.draft * std::exp(-0.5 * (a * a + b * b));
 }
 
+BoatSettings hull_of(double length, double submerged_volume) {
+    BoatSettings hull;
+    hull.length = length;
+    hull.draft = 24 * submerged_volume / (ocean::kPi * length * length);
+    return hull;
+}
+
 WakeScene::WakeScene(const WaveFieldSettings& field) : field_(field) {
     forcing_.pressure.assign(field_.heights().size(), 0.0);
 }

@@ -22,6 +22,12 @@ struct BoatSettings {
 // (L long, B = L / 3 wide).
 double hull_pressure(const BoatSettings& boat, glm::dvec2 along_across);
 
+// The patch of a hull `length` metres long (at the waterline) that displaces `submerged_volume` m^3
+// of water: the depression the patch alone would hold, g draft times the Gaussian's area
+// 2 pi (L/4) (L/12) over g, is that volume, so draft = 24 V / (pi L^2). For step07's boat, whose
+// submerged volume its buoyancy already gives.
+BoatSettings hull_of(double length, double submerged_volume);
+
 class WakeScene {
 public:
     explicit WakeScene(const WaveFieldSettings& field);
