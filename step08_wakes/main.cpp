@@ -79,6 +79,7 @@ public:
             p.add_float("cell", &cell_, 0.1f, 2, "the wave field's cell, metres");
             p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat has sailed before the first frame");
             p.add_bool("follow_boat", &follow_boat_, "the camera keeps the boat where it is in the view");
+            p.add_bool("show_wake", &show_wake_, "the wake added to the sea (off: step07's sea, which no body disturbs)");
         }
         plan_view_.declare(p);
         use_camera({{0, 0, 0}, 45, 35, 22}, ocean::kOceanReach);
@@ -96,7 +97,6 @@ private:
         post_.init(program_factory());
         painter_.init(program_factory());
         plan_view_.init(program_factory());
-        sea_.add_local_waves(&local_waves_);
     }
 
     step08::WaveFieldSettings field_settings() const {
@@ -152,12 +152,15 @@ private:
         press(*wake_, boat, dt);
         wake_before_ = std::move(wake_now_);
         wake_now_ = step08::wake_maps(wake_->field(), sea_.choppiness());
-        const step08::SeaWithWake before(feed_.before(), wake_before_), now(feed_.now(), wake_now_);
+        const step06::LocalWaveMaps calm;
+        const step08::SeaWithWake before(feed_.before(), show_wake_ ? wake_before_ : calm),
+            now(feed_.now(), show_wake_ ? wake_now_ : calm);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             if (b != step07::kBoat) bodies_[b].step(before, now, dt, feed_.interval());
         for (const glm::dvec2& stone : stones_) wake_->drop_stone(stone);
         stones_.clear();
         local_waves_.upload(wake_now_);
+        sea_.add_local_waves(show_wake_ ? &local_waves_ : nullptr);
         if (follow_boat_) camera().target += glm::dvec3(boat.position().x - boat_before.x, 0, boat.position().z - boat_before.z);
         wake_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     }
@@ -333,7 +336,7 @@ private:
     step06::LocalWaveMaps wake_before_, wake_now_;
     step06::LocalWaves local_waves_;
     step08::PlanView plan_view_;
-    bool plan_ = false, follow_boat_ = true;
+    bool plan_ = false, follow_boat_ = true, show_wake_ = true;
     float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;
     int cells_choice_ = 1;
     double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held

@@ -14,6 +14,15 @@ void PlanView::declare(ocean::ParamRegistry& p) {
     p.add_bool("show_field", &show_field_, "from above: outline the field's grid and its absorbing layer");
 }
 
+void PlanView::init(ocean::ProgramFactory programs) {
+    programs_ = std::move(programs);
+    program();
+}
+
+ocean::ShaderProgram* PlanView::program() const {
+    return programs_("wake", {"common/shaders/fullscreen.vert", "step08_wakes/shaders/wake.frag"}, {});
+}
+
 void PlanView::update(double dt, const WaveFieldSettings& field, double boat_length, double warm_up,
                       double extra_rudder) {
     boat_.length = boat_length;
@@ -57,7 +66,7 @@ void PlanView::draw(float aspect, int pixels_high, GLuint fullscreen_vao) {
     }
     upload_.assign(f.heights().begin(), f.heights().end());
     ocean::upload_float_texture_2d(heights_, GL_R32F, f.n(), f.n(), upload_.data());
-    ocean::ShaderProgram* p = programs_("wake", {"common/shaders/fullscreen.vert", "step08_wakes/shaders/wake.frag"}, {});
+    ocean::ShaderProgram* p = program();
     if (p == nullptr) return;
     const glm::dvec2 centre = view_centre();
     p->set("u_cells", f.n());

@@ -21,7 +21,9 @@ public:
     // Its own parameters (the boat's speed, draft and rudder, the shading's relief, Kelvin's lines,
     // the grid's outline); the boat's length is the program's (step07's boat_length).
     void declare(ocean::ParamRegistry& p);
-    void init(ocean::ProgramFactory programs) { programs_ = std::move(programs); }
+    // Builds the view's program at once, whichever view is shown: a shader broken by an edit is
+    // reported when the program starts, not when the view is first chosen.
+    void init(ocean::ProgramFactory programs);
 
     // A new scene when the field's settings change (sailing `warm_up` seconds first, so the view
     // opens on a wake), then `dt` seconds of sailing, the rudder plus `extra_rudder` (the arrows).
@@ -40,6 +42,7 @@ public:
     double rudder() const { return rudder_; }
 
 private:
+    ocean::ShaderProgram* program() const;
     glm::dvec2 view_centre() const;
     glm::dvec2 half_view(float aspect) const;  // the grid's side fills the picture's height
 

@@ -139,12 +139,17 @@ echo step06_foam_sky/reflection_on_off.png
 shot step07_buoyancy "$root/step07_buoyancy/screenshot.png" --size 640x360 --frames 61 --time 0 --dt 0.1
 echo step07_buoyancy/screenshot.png
 
-# step08's wake from above after its 20 s warm-up: the default boat (4 m/s, 6 m: Fr 0.52), and
-# the same boat at 9 m/s (Fr 1.17), Kelvin's edges drawn on both.
-shot step08_wakes "$root/step08_wakes/screenshot.png" --size 640x360 --frames 2 --dt 0.1
+# step08's wake on step06's sea, 0.1 s after the bodies are dropped (the boat's 20 s warm-up made
+# the wake already), with the wake off and on; then the wake alone from above (plan=true): the
+# default boat (4 m/s, 6 m: Fr 0.52) and the same boat at 9 m/s (Fr 1.17), Kelvin's edges drawn.
+shot step08_wakes "$root/step08_wakes/screenshot.png" --size 640x360 --frames 2 --time 0 --dt 0.1
 echo step08_wakes/screenshot.png
-shot step08_wakes "$scratch/wake_slow.png" --size 640x360 --frames 2 --dt 0.1 --set kelvin_lines=true
-shot step08_wakes "$scratch/wake_fast.png" --size 640x360 --frames 2 --dt 0.1 --set kelvin_lines=true --set boat_speed=9
+shot step08_wakes "$scratch/sea_alone.png" --size 640x360 --frames 2 --time 0 --dt 0.1 --set show_wake=false
+panel "$root/step08_wakes/wake_on_the_sea.png" 480x270 2 \
+  "show_wake=false: step07's sea|$scratch/sea_alone.png" "show_wake=true: the boat's wake in it|$root/step08_wakes/screenshot.png"
+echo step08_wakes/wake_on_the_sea.png
+shot step08_wakes "$scratch/wake_slow.png" --size 640x360 --frames 2 --dt 0.1 --set plan=true --set kelvin_lines=true
+shot step08_wakes "$scratch/wake_fast.png" --size 640x360 --frames 2 --dt 0.1 --set plan=true --set kelvin_lines=true --set boat_speed=9
 panel "$root/step08_wakes/wake_speeds.png" 480x270 2 \
   "4 m/s, Fr 0.52: the edge at 19.47 degrees|$scratch/wake_slow.png|0.1,0,0.9,1" \
   "9 m/s, Fr 1.17: the largest waves inside it|$scratch/wake_fast.png|0.1,0,0.9,1"
