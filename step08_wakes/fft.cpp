@@ -38,7 +38,7 @@ void Fft2d::transform_line(Complex* line, std::ptrdiff_t stride, int sign) const
                 const Complex w = sign < 0 ? twiddles_[std::size_t(j * step)] : std::conj(twiddles_[std::size_t(j * step)]);
                 Complex& even = at(start + j);
                 Complex& odd = at(start + j + span / 2);
-                const Complex turned = w * odd;
+                const Complex turned = times(w, odd);
                 odd = even - turned;
                 even += turned;
             }
@@ -49,7 +49,14 @@ void Fft2d::transform(std::vector<Complex>& field, int sign) const {
     if (field.size() != std::size_t(n_) * std::size_t(n_))
         throw ocean::Error("FFT of " + std::to_string(field.size()) + " samples, not " + std::to_string(n_) + " squared");
     for (int row = 0; row < n_; ++row) transform_line(field.data() + std::ptrdiff_t(row) * n_, 1, sign);
-    for (int column = 0; column < n_; ++column) transform_line(field.data() + column, n_, sign);
+    // Each column copied into a line of its own and back: transformed in place, its samples n
+    // apart would each fall on another cache line.
+    std::vector<Complex> line(static_cast<std::size_t>(n_));
+    for (int column = 0; column < n_; ++column) {
+        for (int row = 0; row < n_; ++row) line[std::size_t(row)] = field[std::size_t(row) * std::size_t(n_) + std::size_t(column)];
+        transform_line(line.data(), 1, sign);
+        for (int row = 0; row < n_; ++row) field[std::size_t(row) * std::size_t(n_) + std::size_t(column)] = line[std::size_t(row)];
+    }
 }
 
 }  // namespace step08

@@ -149,19 +149,28 @@ private:
         step07::steer(boat, double(steering_.throttle) + key_throttle_, double(steering_.rudder) + key_rudder_);
         const glm::dvec3 boat_before = boat.position();
         boat.step(feed_.before(), feed_.now(), dt, feed_.interval());
+        if (follow_boat_) camera().target += glm::dvec3(boat.position().x - boat_before.x, 0, boat.position().z - boat_before.z);
+        if (!show_wake_) {
+            // step07's sea: the field waits where the boat is, to take up from there.
+            const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
+            wake_->place({boat.position().x, boat.position().z}, {along.x, along.z});
+            for (std::size_t b = 0; b < bodies_.size(); ++b)
+                if (b != step07::kBoat) bodies_[b].step(feed_.before(), feed_.now(), dt, feed_.interval());
+            sea_.add_local_waves(nullptr);
+            stones_.clear();
+            wake_ms_ = 0;
+            return;
+        }
         press(*wake_, boat, dt);
-        wake_before_ = std::move(wake_now_);
-        wake_now_ = step08::wake_maps(wake_->field(), sea_.choppiness());
-        const step06::LocalWaveMaps calm;
-        const step08::SeaWithWake before(feed_.before(), show_wake_ ? wake_before_ : calm),
-            now(feed_.now(), show_wake_ ? wake_now_ : calm);
-        for (std::size_t b = 0; b < bodies_.size(); ++b)
-            if (b != step07::kBoat) bodies_[b].step(before, now, dt, feed_.interval());
         for (const glm::dvec2& stone : stones_) wake_->drop_stone(stone);
         stones_.clear();
+        wake_before_ = std::move(wake_now_);
+        wake_now_ = step08::wake_maps(wake_->field(), sea_.choppiness());
+        const step08::SeaWithWake before(feed_.before(), wake_before_), now(feed_.now(), wake_now_);
+        for (std::size_t b = 0; b < bodies_.size(); ++b)
+            if (b != step07::kBoat) bodies_[b].step(before, now, dt, feed_.interval());
         local_waves_.upload(wake_now_);
-        sea_.add_local_waves(show_wake_ ? &local_waves_ : nullptr);
-        if (follow_boat_) camera().target += glm::dvec3(boat.position().x - boat_before.x, 0, boat.position().z - boat_before.z);
+        sea_.add_local_waves(&local_waves_);
         wake_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     }
 

@@ -8,6 +8,14 @@ namespace step08 {
 
 using Complex = std::complex<double>;
 
+// Products written out. A general product of two std::complex calls a library routine that checks
+// for infinities and NaNs (C's Annex G): several times slower than the four multiplications, in
+// the FFT's inner loop and for every mode. times_i(z) = i z; times(a, b) = a b.
+inline Complex times_i(Complex z) { return {-z.imag(), z.real()}; }
+inline Complex times(Complex a, Complex b) {
+    return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
+}
+
 // One mode's amplitudes: the height eta^ (m) and the surface potential phi^ (m^2/s).
 struct Mode {
     Complex eta, phi;

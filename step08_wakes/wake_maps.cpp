@@ -13,23 +13,27 @@ step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness) {
     fft.forward(heights);
 
     // Four complex maps, each carrying two real ones (first + i second): the transform of a real
-    // map is Hermitian, so the inverse transform of A + i B is a + i b.
-    const Complex i1(0, 1);
+    // map is Hermitian, so the inverse transform of A + i B is a + i b. Every map is eta^ times a
+    // factor (real, or i times real), so each complex map is eta^ times one factor A + i B:
+    //   h + i l Dx:           1 + i (i l ux)               = 1 - l ux
+    //   l Dz + i l dDx/dz:    i l uz + i (-l kz ux)         = i l (uz - kz ux)
+    //   dh/dx + i dh/dz:      i kx + i (i kz)               = -kz + i kx
+    //   l dDx/dx + i l dDz/dz: -l kx ux + i (-l kz uz)      = -l (kx ux + i kz uz)
+    // with u = k / |k| (D^ = i u eta^; a derivative along x is a factor i kx).
     std::vector<Complex> height_dx(cells), dz_cross(cells), slopes(cells), stretch(cells);
     const double l = choppiness;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
+            if (i == n / 2 || j == n / 2) continue;  // Nyquist: left out (the header says why)
             const std::size_t c = std::size_t(j) * std::size_t(n) + std::size_t(i);
             const glm::dvec2 k = field.wavenumber(i, j);
             const double length = std::hypot(k.x, k.y);
-            if (i == n / 2 || j == n / 2) continue;  // Nyquist: left out (the header says why)
+            const glm::dvec2 u = length > 0 ? k / length : glm::dvec2(0.0);
             const Complex eta = heights[c];
-            const glm::dvec2 unit = length > 0 ? k / length : glm::dvec2(0.0);
-            const Complex dx = i1 * unit.x * eta, dz = i1 * unit.y * eta;  // D^ = i k^ eta^
-            height_dx[c] = eta + i1 * (l * dx);                           // h, l Dx
-            dz_cross[c] = l * dz + i1 * (l * i1 * k.y * dx);              // l Dz, l dDx/dz
-            slopes[c] = i1 * k.x * eta + i1 * (i1 * k.y * eta);           // dh/dx, dh/dz
-            stretch[c] = l * i1 * k.x * dx + i1 * (l * i1 * k.y * dz);    // l dDx/dx, l dDz/dz
+            height_dx[c] = (1 - l * u.x) * eta;
+            dz_cross[c] = l * (u.y - k.y * u.x) * times_i(eta);
+            slopes[c] = times(Complex(-k.y, k.x), eta);
+            stretch[c] = -l * times(Complex(k.x * u.x, k.y * u.y), eta);
         }
     for (auto* map : {&height_dx, &dz_cross, &slopes, &stretch}) fft.inverse(*map);
 

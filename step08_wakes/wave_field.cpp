@@ -21,7 +21,7 @@ struct TwoSpectra {
 };
 TwoSpectra separate(Complex at_k, Complex at_minus_k) {
     const Complex mirrored = std::conj(at_minus_k);
-    return {(at_k + mirrored) * 0.5, (at_k - mirrored) * Complex(0, -0.5)};
+    return {(at_k + mirrored) * 0.5, -0.5 * times_i(at_k - mirrored)};
 }
 
 // Solves A x = b in place (b becomes x) for a symmetric positive definite A (m x m, row major),
@@ -125,7 +125,7 @@ void WaveField::turn(double dt, const Forcing& forcing) {
                 const TwoSpectra field = side == 0 ? separate(at_a, at_b) : separate(at_b, at_a);
                 const Complex pressure = pushed ? forcing_work_[here] : Complex(0.0);  // a real field's transform
                 const Mode turned = turn_mode({field.first, field.second}, speed_factor_[here], dt, pressure, 0.0);
-                (side == 0 ? out_a : out_b) = turned.eta + Complex(0, 1) * turned.phi;
+                (side == 0 ? out_a : out_b) = turned.eta + times_i(turned.phi);
             }
             work_[a] = out_a;
             if (a != b) work_[b] = out_b;
