@@ -6,6 +6,9 @@
 #include "step08_wakes/wake_scene.hpp"
 #include "step08_wakes/wake_sea.hpp"
 
+#include "step07_buoyancy/bodies.hpp"
+#include "step07_buoyancy/body_params.hpp"
+
 #include "common/constants.hpp"
 
 #include <glm/glm.hpp>
@@ -119,6 +122,109 @@ TEST(Step08WakeMaps, NothingOutsideTheGrid) {
         EXPECT_EQ(step08::wake_at(maps, outside).displacement, glm::dvec4(0.0));
     const step08::WakeSample at = step08::wake_at(maps, w.field.cell_centre(10, 20));
     EXPECT_DOUBLE_EQ(at.displacement.y, double(maps.displacement[4 * (20 * 64 + 10) + 1]));
+}
+
+}  // namespace
+
+// The program's coupling, as a learner would check it: the hull's dent holds the water the hull
+// displaces, a hull the program moves makes the wake a boat sailing the same line makes, and a
+// buoy in the wake rides it.
+namespace {
+
+// Archimedes for the patch: the dent it alone would hold, the integral of (p / rho) / g over the
+// plane, is the submerged volume hull_of was given (midpoint sum on 2 cm cells over +-4 lengths).
+TEST(Step08WakeOnTheSea, TheHullsDentHoldsTheWaterItDisplaces) {
+    const double length = 6, volume = 2.1;
+    const step08::BoatSettings hull = step08::hull_of(length, volume);
+    double dent = 0;
+    const double h = 0.02;
+    for (double a = -4 * length + h / 2; a < 4 * length; a += h)
+        for (double b = -2 * length + h / 2; b < 2 * length; b += h) dent += step08::hull_pressure(hull, {a, b}) / ocean::kGravity * h * h;
+    std::printf("draft %.3f m; dent %.6f m^3 for %.1f m^3\n", hull.draft, dent, volume);
+    EXPECT_NEAR(dent, volume, 1e-6 * volume);
+}
+
+// press() is sail() with the path given: a hull pressed along the straight line a boat sails at
+// 4 m/s, frame by frame, leaves the same field, to rounding.
+TEST(Step08WakeOnTheSea, AHullMovedByTheProgramMakesTheWakeOfOneSailingTheSameLine) {
+    step08::WaveFieldSettings s;
+    s.n = 64;
+    s.cell = 0.5;
+    s.absorbing_width = 4;
+    step08::BoatSettings boat;
+    step08::WakeScene sailed(s), pressed(s);
+    const glm::dvec2 heading = glm::normalize(glm::dvec2(1, 0.5));
+    sailed.place({0, 0}, heading);
+    pressed.place({0, 0}, heading);
+    for (int frame = 0; frame < 80; ++frame) {
+        sailed.sail(0.1, boat, 0);
+        pressed.press(0.1, (frame + 1) * 0.1 * boat.speed * heading, heading, boat);
+    }
+    double largest = 0, difference = 0;
+    for (std::size_t c = 0; c < sailed.field().heights().size(); ++c) {
+        largest = std::max(largest, std::abs(sailed.field().heights()[c]));
+        difference = std::max(difference, std::abs(sailed.field().heights()[c] - pressed.field().heights()[c]));
+    }
+    std::printf("largest height %.3f m, largest difference %.1e m\n", largest, difference);
+    EXPECT_GT(largest, 0.05);
+    EXPECT_LT(difference, 1e-9 * largest);
+}
+
+// A buoy (step07's, 1.2 m) 8 m abeam of the boat's track, on still water with the wake in it
+// (SeaWithWake): it rises and falls as the wake's waves pass, at least half as much as the water
+// under it (the waves are several times its size: it follows the surface), and at most three
+// times: its own period (about 1.3 s) is near the divergent waves' (1.4 to 2 s), and its drag
+// (0.5/s) damps it little, so it may overshoot the water, but not run away.
+TEST(Step08WakeOnTheSea, ABuoyRidesTheWake) {
+    step08::WaveFieldSettings s;
+    s.n = 128;
+    s.cell = 0.5;
+    s.absorbing_width = 8;
+    step08::WakeScene scene(s);
+    step08::BoatSettings boat;
+    boat.draft = 0.5;
+    scene.place({-40, 0}, {1, 0});
+    step07::BodyParams params;
+    const step07::BodySettings buoy_settings = step07::body_settings(params)[step07::kBuoy];
+    const step07::FlatSea still;
+    // Afloat first: on still water for 20 s (its drag calms it).
+    step07::FloatingBody buoy(buoy_settings, {0, 0, 8});
+    for (int i = 0; i < 400; ++i) buoy.step(still, still, 0.05);
+    const double rest = buoy.position().y;
+    step06::LocalWaveMaps before = step08::wake_maps(scene.field(), 1.0), now;
+    double lowest = rest, highest = rest, water_low = 0, water_high = 0;
+    for (int i = 0; i < 400; ++i) {  // 20 s: the boat from 40 m before the buoy to 40 m past it
+        scene.sail(0.05, boat, 0);
+        now = step08::wake_maps(scene.field(), 1.0);
+        buoy.step(step08::SeaWithWake(still, before), step08::SeaWithWake(still, now), 0.05);
+        before = now;
+        lowest = std::min(lowest, buoy.position().y);
+        highest = std::max(highest, buoy.position().y);
+        const double water = step08::wake_at(now, {buoy.position().x, buoy.position().z}).displacement.y;
+        water_low = std::min(water_low, water);
+        water_high = std::max(water_high, water);
+    }
+    std::printf("the buoy moved %.3f m up and down; the water under it %.3f m\n", highest - lowest, water_high - water_low);
+    EXPECT_GT(water_high - water_low, 0.05);
+    EXPECT_GT(highest - lowest, 0.5 * (water_high - water_low));
+    EXPECT_LT(highest - lowest, 3 * (water_high - water_low));
+}
+
+// Without the wake (an empty field) the same buoy does not move: whatever moved it above was the
+// wake.
+TEST(Step08WakeOnTheSea, WithoutTheWakeTheBuoyStaysPut) {
+    step07::BodyParams params;
+    const step07::FloatingBody afloat = [&] {
+        step07::FloatingBody b(step07::body_settings(params)[step07::kBuoy], {0, 0, 8});
+        const step07::FlatSea still;
+        for (int i = 0; i < 400; ++i) b.step(still, still, 0.05);
+        return b;
+    }();
+    step07::FloatingBody buoy = afloat;
+    const step07::FlatSea still;
+    const step06::LocalWaveMaps none;
+    for (int i = 0; i < 100; ++i) buoy.step(step08::SeaWithWake(still, none), step08::SeaWithWake(still, none), 0.05);
+    EXPECT_NEAR(buoy.position().y, afloat.position().y, 1e-3);
 }
 
 }  // namespace

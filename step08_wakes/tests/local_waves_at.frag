@@ -1,0 +1,15 @@
+#version 450 core
+// Evaluates step06's local_waves.glsl (LOCAL_WAVES 1) on a grid of points around and beyond the
+// wake's grid, for the read-back test against wake_sea.hpp's wake_at (in double).
+#define LOCAL_WAVES 1
+#include "step06_foam_sky/shaders/local_waves.glsl"
+
+out vec4 out_map;
+uniform vec2 u_first;    // metres (x, z) from the world origin of pixel (0, 0)
+uniform float u_step;    // metres from a pixel to the next
+uniform int u_slopes;    // 0: the displacement map; 1: the slopes
+
+void main() {
+    vec2 p = u_first + (gl_FragCoord.xy - 0.5) * u_step;
+    out_map = u_slopes == 1 ? local_slopes_at(p) : local_displacement_at(p);
+}
