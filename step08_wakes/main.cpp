@@ -177,8 +177,14 @@ private:
     // The hull's patch pressed on the field over dt, from where it was to where the boat is now.
     static void press(step08::WakeScene& wake, const step07::FloatingBody& boat, double dt) {
         const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
-        wake.press(dt, {boat.position().x, boat.position().z}, {along.x, along.z},
-                   step08::hull_of(boat.settings().shape.size.x, boat.submerged_volume()));
+        wake.press(dt, {boat.position().x, boat.position().z}, {along.x, along.z}, hull_patch(boat));
+    }
+    // The patch of the water the boat displaces afloat, its mass over the water's density
+    // (Archimedes): its weight is what presses. Not the volume under water at this instant, which
+    // swings as the boat heaves in the sea's waves (and is nothing while it falls on its drop):
+    // the patch would pulse and ring; the waves a heaving hull makes are section 4's contact.
+    static step08::BoatSettings hull_patch(const step07::FloatingBody& boat) {
+        return step08::hull_of(boat.settings().shape.size.x, boat.mass() / step07::kWaterDensity);
     }
 
     // step07's bodies dropped in front of the camera; the boat already under way at the speed its
@@ -197,8 +203,7 @@ private:
         boat.push(boat.mass() * speed * glm::dvec3(heading.x, 0, heading.y), boat.position());
         wake_settings_ = field_settings();
         wake_ = std::make_unique<step08::WakeScene>(wake_settings_);
-        // Afloat at rest the hull displaces its own mass of water (Archimedes).
-        step08::BoatSettings hull = step08::hull_of(boat.settings().shape.size.x, boat.mass() / step07::kWaterDensity);
+        step08::BoatSettings hull = hull_patch(boat);
         hull.speed = speed;
         const glm::dvec2 at(boat.position().x, boat.position().z);
         wake_->place(at - double(warm_up_) * speed * heading, heading);
@@ -235,7 +240,7 @@ private:
         } else if (wake_ && !bodies_.empty()) {
             step08::WakeScene scene = *wake_;
             const step07::FloatingBody& boat = bodies_[step07::kBoat];
-            step08::BoatSettings hull = step08::hull_of(boat.settings().shape.size.x, boat.submerged_volume());
+            step08::BoatSettings hull = hull_patch(boat);
             hull.speed = glm::length(glm::dvec2(boat.velocity().x, boat.velocity().z));
             for (int i = 0; i < 15; ++i) {
                 const auto start = std::chrono::steady_clock::now();

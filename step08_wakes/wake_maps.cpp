@@ -19,7 +19,8 @@ step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness) {
     //   l Dz + i l dDx/dz:    i l uz + i (-l kz ux)         = i l (uz - kz ux)
     //   dh/dx + i dh/dz:      i kx + i (i kz)               = -kz + i kx
     //   l dDx/dx + i l dDz/dz: -l kx ux + i (-l kz uz)      = -l (kx ux + i kz uz)
-    // with u = k / |k| (D^ = i u eta^; a derivative along x is a factor i kx).
+    // with u = k / |k| (D^ = i u eta^; a derivative along x is a factor i kx). The real and
+    // imaginary parts are different maps: a factor may add a number without units to one in 1/m.
     std::vector<Complex> height_dx(cells), dz_cross(cells), slopes(cells), stretch(cells);
     const double l = choppiness;
     for (int j = 0; j < n; ++j)
