@@ -86,6 +86,10 @@
 //       neighbour. Broken ripples make it large; the horizontal smears of a sea filtered too coarsely
 //       across the view make it small (step06's README, "Filtering at grazing angles"). Only prints
 //       it: what it must be is the calling test's (step06_foam_sky/tests/combined_levels.sh).
+//   picture_check wake WITHOUT WITH
+//       step08's wake as a camera following the boat records it (the boat at the picture's centre):
+//       the same frame with the wake off and on must differ behind the boat (below the centre) at
+//       least three times as much as ahead of it (above), and visibly (luma RMSE above 2).
 // Prints the figures; exit 0 when they hold, 1 otherwise (and 2 on bad input).
 #include "common/image.hpp"
 #include "tests/export_reader.hpp"
@@ -777,6 +781,38 @@ int detail(const std::string& path, double from, double to) {
     return 0;
 }
 
+// step08's wake as a camera following the boat records it: the boat at the picture's centre (the
+// camera looks at it), the water behind it below the centre, ahead of it above. WITHOUT and WITH
+// are the same frame with the wake off and on; how much the wake changes the picture (RMSE of the
+// luminance, 0..255) in a band behind the boat and in one ahead of it. A boat leaves its wake
+// behind: it must change the band behind at least three times as much as the band ahead, and by a
+// visible amount (above 2).
+int wake(const std::string& without_path, const std::string& with_path) {
+    const ocean::Image without = load(without_path), with = load(with_path);
+    if (without.width != with.width || without.height != with.height) throw std::runtime_error("wake: the pictures differ in size");
+    const auto luma = [](const ocean::Image& image, int x, int y) {
+        const std::uint8_t* p = &image.rgba[(std::size_t(y) * image.width + x) * 4];
+        return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    };
+    const auto change = [&](double from, double to) {  // rows from..to of the height, the middle 80 % of the width
+        double sum = 0;
+        long count = 0;
+        for (int y = int(from * with.height); y < int(to * with.height); ++y)
+            for (int x = with.width / 10; x < with.width - with.width / 10; ++x, ++count) {
+                const double d = luma(with, x, y) - luma(without, x, y);
+                sum += d * d;
+            }
+        return std::sqrt(sum / double(std::max(count, 1L)));
+    };
+    // Behind: from just below the boat to the picture's bottom; ahead: between the horizon's
+    // neighbourhood and just above the boat.
+    const double behind = change(0.56, 1.0), ahead = change(0.2, 0.44);
+    std::printf("wake: the picture changes by RMSE %.2f behind the boat, %.2f ahead of it\n", behind, ahead);
+    const bool ok = behind > 2 && behind > 3 * ahead;
+    if (!ok) std::printf("FAIL: the wake must change the water behind the boat (above 2) at least three times as much as ahead\n");
+    return ok ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -788,8 +824,9 @@ int main(int argc, char** argv) {
         if (per_sea.count(mode) && argc >= 6 && (argc - 2) % 4 == 0) return per_sea.at(mode)(std::vector<std::string>(argv + 2, argv + argc));
         if (mode == "agree" && argc >= 10 && (argc - 2) % 8 == 0) return agree(std::vector<std::string>(argv + 2, argv + argc));
         if (mode == "detail" && argc == 5) return detail(argv[2], fraction(argv[3]), fraction(argv[4]));
+        if (mode == "wake" && argc == 4) return wake(argv[2], argv[3]);
         std::fprintf(stderr, "usage: picture_check glitter DIR IMAGE [DIR IMAGE]... | whitecaps|stages|edges|streaks DIR FOAM WATER "
-                             "WHITE... | agree A_DIR A_FOAM A_WATER A_WHITE B_DIR B_FOAM B_WATER B_WHITE... | detail IMAGE FROM TO\n");
+                             "WHITE... | agree A_DIR A_FOAM A_WATER A_WHITE B_DIR B_FOAM B_WATER B_WHITE... | detail IMAGE FROM TO | wake WITHOUT WITH\n");
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "picture_check: %s\n", e.what());
