@@ -16,6 +16,11 @@ endforeach()
 if(TEST step07_buoyancy.web.smoke)
   set_tests_properties(step07_buoyancy.web.smoke PROPERTIES ENVIRONMENT "SMOKE_RMSE=6.5")
 endif()
+# step08 composes step07's bodies and feed, so the same: its boat, and the wake it presses, a frame
+# behind the golden's. Measured 4.14 (0.76 % of pixels off by more than 24, within the 1 %).
+if(TEST step08_wakes.web.smoke)
+  set_tests_properties(step08_wakes.web.smoke PROPERTIES ENVIRONMENT "SMOKE_RMSE=6.5")
+endif()
 add_test(NAME step02_sine3d.web.address_sets_a_parameter
   COMMAND bash "${_web_smoke}" "${OCEAN_WEB_SITE}" step02_sine3d $<TARGET_FILE:image_compare>
           "${PROJECT_SOURCE_DIR}/step02_sine3d/golden.png" "${CMAKE_BINARY_DIR}/test-output/web/step02_sine3d"
