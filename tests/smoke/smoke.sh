@@ -5,7 +5,7 @@
 # then five steps of growth and decay) are exercised. It must exit 0 with no GL error,
 # and its screenshot must not be blank and must match GOLDEN.png within image_compare's stated
 # tolerance (RMSE <= 2.5/255, at most 0.5% of pixels off by more than 24/255; a test may set
-# SMOKE_RMSE to another RMSE limit, saying why where it does).
+# SMOKE_RMSE to another RMSE limit and SMOKE_BAD_FRACTION to another share, saying why where it does).
 # OCEAN_UPDATE_GOLDEN=1 copies the new screenshot over the golden instead: only after looking at
 # both and understanding why the picture changed.
 set -u
@@ -28,4 +28,5 @@ if [ "${OCEAN_UPDATE_GOLDEN:-0}" = 1 ]; then
   exit 0
 fi
 [ -f "$golden" ] || { echo "FAIL: no golden image $golden (see tests/README.md)"; exit 1; }
-"$compare" "$shot" "$golden" ${SMOKE_RMSE:+--rmse "$SMOKE_RMSE"} --diff "$out/$name.diff.png"
+"$compare" "$shot" "$golden" ${SMOKE_RMSE:+--rmse "$SMOKE_RMSE"} ${SMOKE_BAD_FRACTION:+--bad-fraction "$SMOKE_BAD_FRACTION"} \
+  --diff "$out/$name.diff.png"
