@@ -146,16 +146,20 @@ case "$case_name" in
     if [ "$case_name" = steer_push ]; then
       # The boat (body 2) from its first row to its last, against the buoy (body 0), which nothing
       # steered: how far each moved, and how far the boat turned to its right (its heading's
-      # angle in x-z, from the bow's direction q (1, 0, 0)).
+      # angle in x-z, from the bow's direction q (1, 0, 0)), summed frame by frame (each frame's
+      # change taken the short way round), so that a turn past half a circle, which a long hold
+      # makes, still reads as a turn to the right.
       motion=$(awk -F, '
         NR > 1 && ($2 == 0 || $2 == 2) {
-          b = $2; if (!(b in x0)) { x0[b] = $3; z0[b] = $5; h0[b] = heading($6, $7, $8, $9) }
-          x1[b] = $3; z1[b] = $5; h1[b] = heading($6, $7, $8, $9)
+          b = $2; h = heading($6, $7, $8, $9)
+          if (!(b in x0)) { x0[b] = $3; z0[b] = $5; previous[b] = h }
+          x1[b] = $3; z1[b] = $5
+          step = (h - previous[b]) * 180 / 3.14159265; if (step > 180) step -= 360; if (step < -180) step += 360
+          turned[b] += step; previous[b] = h
         }
         function heading(w, x, y, z) { return atan2(2 * (x * z - w * y), 1 - 2 * (y * y + z * z)) }
         END {
-          turn = (h1[2] - h0[2]) * 180 / 3.14159265; if (turn > 180) turn -= 360; if (turn < -180) turn += 360
-          printf "%.2f %.2f %.1f\n", sqrt((x1[2] - x0[2])^2 + (z1[2] - z0[2])^2), sqrt((x1[0] - x0[0])^2 + (z1[0] - z0[0])^2), turn
+          printf "%.2f %.2f %.1f\n", sqrt((x1[2] - x0[2])^2 + (z1[2] - z0[2])^2), sqrt((x1[0] - x0[0])^2 + (z1[0] - z0[0])^2), turned[2]
         }' "$out/export/trajectories.csv") || fail "no trajectories were exported"
       read -r boat buoy turn <<< "$motion"
       held="${ARROWS_HELD_S:-1} s"
