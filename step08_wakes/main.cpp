@@ -11,6 +11,7 @@
 // the lesson's laboratory, where Kelvin's angle is measured.
 // Controls: step06's; the arrows (held) steer the boat; a left click drops a stone.
 #include "common/app.hpp"
+#include "common/gpu_timer.hpp"
 #include "step06_foam_sky/look_params.hpp"
 #include "step06_foam_sky/post.hpp"
 #include "step06_foam_sky/sea.hpp"
@@ -43,16 +44,6 @@ namespace {
 // A moderate breeze (Beaufort 4): waves a metre high, a few whitecaps, and a wake that shows in
 // them. step06's near gale would hide it.
 constexpr double kBreeze = 6;
-
-bool same_field(const step08::WaveFieldSettings& a, const step08::WaveFieldSettings& b) {
-    return a.n == b.n && a.cell == b.cell && a.depth == b.depth;
-}
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
 
 class Wakes : public ocean::App {
 public:
@@ -133,7 +124,7 @@ private:
         feed_.update(sea_, time);
         if (!feed_.ready()) return;
         if (bodies_built_for_ != body_params_.changed.value || bodies_.empty() || !wake_ ||
-            !same_field(wake_settings_, field_settings())) {
+            !step08::same_grid(wake_settings_, field_settings())) {
             drop_bodies_and_warm_up();
         }
         sail(std::min(dt, step07::kMaxBodyFrame));
@@ -230,26 +221,27 @@ private:
         if (!plan_) figures = sea_.time_backends(time());
 #endif
         std::vector<double> times;
-        if (plan_ && plan_view_.scene() != nullptr) {
-            step08::WakeScene scene = *plan_view_.scene();
+        const auto time_frames = [&times](auto&& frame) {
             for (int i = 0; i < 15; ++i) {
                 const auto start = std::chrono::steady_clock::now();
-                scene.sail(1.0 / 60, plan_view_.boat(), plan_view_.rudder());
+                frame();
                 times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
             }
+        };
+        if (plan_ && plan_view_.scene() != nullptr) {
+            step08::WakeScene scene = *plan_view_.scene();
+            time_frames([&] { scene.sail(1.0 / 60, plan_view_.boat(), plan_view_.rudder()); });
         } else if (wake_ && !bodies_.empty()) {
             step08::WakeScene scene = *wake_;
             const step07::FloatingBody& boat = bodies_[step07::kBoat];
             step08::BoatSettings hull = hull_patch(boat);
             hull.speed = glm::length(glm::dvec2(boat.velocity().x, boat.velocity().z));
-            for (int i = 0; i < 15; ++i) {
-                const auto start = std::chrono::steady_clock::now();
+            time_frames([&] {
                 scene.sail(1.0 / 60, hull, 0);
-                const step06::LocalWaveMaps maps = step08::wake_maps(scene.field(), sea_.choppiness());
-                times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-            }
+                step08::wake_maps(scene.field(), sea_.choppiness());
+            });
         }
-        figures.push_back({"wave_field_ms", median(times)});
+        figures.push_back({"wave_field_ms", ocean::median(times)});
         return figures;
     }
 

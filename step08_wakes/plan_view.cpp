@@ -26,8 +26,7 @@ ocean::ShaderProgram* PlanView::program() const {
 void PlanView::update(double dt, const WaveFieldSettings& field, double boat_length, double warm_up,
                       double extra_rudder) {
     boat_.length = boat_length;
-    if (!scene_ || field.n != scene_->field().n() || field.cell != scene_->field().settings().cell ||
-        field.depth != scene_->field().settings().depth) {
+    if (!scene_ || !same_grid(field, scene_->field().settings())) {
         scene_ = std::make_unique<WakeScene>(field);
         scene_->sail(warm_up, boat_, rudder_);  // the window opens on a wake already made
     }

@@ -7,7 +7,7 @@ namespace step08 {
 step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness) {
     const int n = field.n();
     const std::size_t cells = std::size_t(n) * std::size_t(n);
-    const Fft2d fft(n);
+    const Fft2d& fft = field.fft();
     std::vector<Complex> heights(cells);
     for (std::size_t c = 0; c < cells; ++c) heights[c] = field.heights()[c];
     fft.forward(heights);

@@ -50,6 +50,10 @@ void solve_symmetric(std::vector<double>& a, std::vector<double>& b, std::size_t
 
 }  // namespace
 
+bool same_grid(const WaveFieldSettings& a, const WaveFieldSettings& b) {
+    return a.n == b.n && a.cell == b.cell && a.depth == b.depth;
+}
+
 double vertical_speed_factor(double wavenumber, double depth) {
     return std::isinf(depth) ? wavenumber : wavenumber * std::tanh(wavenumber * depth);
 }

@@ -37,6 +37,10 @@ struct WaveFieldSettings {
     double absorbing_rate = 3;                                 // 1/s at the very edge, falling as the square to 0 inside
 };
 
+// Whether two settings make the same grid (cells, cell size, depth): a field made for one can go
+// on under the other (the absorbing layer aside, which the programs derive from these).
+bool same_grid(const WaveFieldSettings& a, const WaveFieldSettings& b);
+
 // K = k tanh(k h): what turns a potential into a surface's vertical speed (k in deep water).
 double vertical_speed_factor(double wavenumber, double depth);
 
@@ -99,6 +103,8 @@ public:
     double energy() const;
     // Each mode's wavenumber (kx, kz), rad/m, for index (i, j) of the transform.
     glm::dvec2 wavenumber(int i, int j) const;
+    // The field's transform (n x n), for what is derived from it (wake_maps.hpp).
+    const Fft2d& fft() const { return fft_; }
 
 private:
     std::size_t index(int i, int j) const { return std::size_t(j) * std::size_t(settings_.n) + std::size_t(i); }
