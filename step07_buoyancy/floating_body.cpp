@@ -132,7 +132,7 @@ Wrench FloatingBody::water_forces(const glm::dmat3& r, double share) {
         const glm::dvec3 arm = r * shape_centre(), centre = position_ + arm;
         const double radius = 0.5 * settings_.shape.size.x;
         const double water_line = water_[0].height({centre.x, centre.z}, share);
-        const glm::dvec3 lift = sphere_buoyancy(radius, centre.y, water_line);
+        const glm::dvec3 lift = archimedes_ ? sphere_buoyancy(radius, centre.y, water_line) : glm::dvec3(0.0);
         total.force += lift;
         total.torque += glm::cross(arm, lift);  // zero but for ballast
         submerged_volume_ = spherical_cap_volume(radius, water_line - (centre.y - radius));
@@ -146,7 +146,7 @@ Wrench FloatingBody::water_forces(const glm::dmat3& r, double share) {
         water_lines_[i] = water_[i].height({centre.x, centre.z}, share);
     }
     // Archimedes (hull_forces.cpp), then the drag on each wet cell against the water's own motion.
-    total = buoyancy(cells_, r, position_, water_lines_);
+    if (archimedes_) total = buoyancy(cells_, r, position_, water_lines_);
     submerged_volume_ = 0;
     for (std::size_t i = 0; i < cells_.size(); ++i) {
         const glm::dvec3 arm = r * cells_[i].offset;
@@ -182,6 +182,20 @@ void FloatingBody::substep(double h, double share) {
 void FloatingBody::push(glm::dvec3 impulse, glm::dvec3 at) {
     velocity_ += impulse / mass_;
     angular_velocity_ += world_inertia(true) * glm::cross(at - position_, impulse);
+}
+
+double FloatingBody::travel_per_acceleration(double dt) {
+    const int n = std::max(1, int(std::ceil(dt / kMaxSubstep - 1e-9)));  // step()'s substeps
+    return dt * dt * (n + 1) / (2.0 * n);
+}
+
+void FloatingBody::add_water_push(glm::dvec3 force, glm::dvec3 torque, double dt) {
+    const glm::dvec3 alpha = world_inertia(true) * torque;
+    const double travel = travel_per_acceleration(dt);
+    velocity_ += dt * force / mass_;
+    position_ += travel * force / mass_;
+    angular_velocity_ += dt * alpha;
+    orientation_ = glm::normalize(orientation_ + 0.5 * glm::dquat(0.0, travel * alpha) * orientation_);
 }
 
 void FloatingBody::add_force(glm::dvec3 force_world, glm::dvec3 at_body) {

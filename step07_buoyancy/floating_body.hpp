@@ -76,6 +76,20 @@ public:
     void push(glm::dvec3 impulse, glm::dvec3 at);
     // Steering: a force (N) at a point of the body's frame, for the next step only.
     void add_force(glm::dvec3 force_world, glm::dvec3 at_body);
+    // Whether the water holds the body up by Archimedes on the sea's surface (step07; the
+    // default) or by a push found after each step elsewhere (add_water_push: step08, where the
+    // body's hull is in contact with a field of waves it makes). The drag stays either way.
+    void set_archimedes(bool on) { archimedes_ = on; }
+    bool archimedes() const { return archimedes_; }
+    // A force (N) and torque (N m) held over the last step of dt seconds, added after it: the
+    // velocities change by F dt / m and I^-1 tau dt, and the position and orientation move as
+    // the step's substeps would have moved them (travel_per_acceleration).
+    void add_water_push(glm::dvec3 force, glm::dvec3 torque, double dt);
+    // How far a step of dt seconds moves a body per unit of a constant acceleration held over it:
+    // semi-implicit Euler's n substeps of h = dt / n move it h^2 (1 + 2 + ... + n) = dt^2 (n + 1) / (2 n).
+    static double travel_per_acceleration(double dt);
+    // The inverse of the inertia tensor in world axes, R I^-1 R^T (1 / (kg m^2)).
+    glm::dmat3 inverse_inertia() const { return world_inertia(true); }
 
     const BodySettings& settings() const { return settings_; }
     glm::dvec3 position() const { return position_; }
@@ -114,6 +128,7 @@ private:
     glm::dquat orientation_{1, 0, 0, 0};
     glm::dvec3 extra_force_{0.0}, extra_torque_{0.0};
     double submerged_volume_ = 0;
+    bool archimedes_ = true;
 };
 
 }  // namespace step07

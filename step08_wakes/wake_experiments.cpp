@@ -136,7 +136,7 @@ std::vector<double> ring_crests(const WaveField& field, double from, double to) 
 
 HeaveRecord release_hemisphere(const HeaveRelease& r) {
     WaveField field(deep_field(r.n, r.cell, 0.2, 3));
-    // Per unit density: the mass is the hemisphere's volume; forces are p / rho times areas.
+    // Per unit density: the mass is the hemisphere's volume, and the contact's pushes are forces.
     const double mass = 2.0 / 3.0 * ocean::kPi * std::pow(r.radius, 3), area = r.cell * r.cell, g = ocean::kGravity;
     // The sphere's underside under each cell, below its centre; cells outside it left out.
     std::vector<std::size_t> under;
@@ -175,8 +175,8 @@ HeaveRecord release_hemisphere(const HeaveRelease& r) {
             Contact contact;
             for (std::size_t c = 0; c < under.size(); ++c)
                 if (below_centre[c] > coasting) contact.cells.push_back(under[c]), contact.target.push_back(coasting - below_centre[c]);
-            contact.compliance.assign(contact.cells.size() * contact.cells.size(), r.dt * r.dt * area / mass);
-            for (double p : field.step(r.dt, contact)) force += p * area;
+            contact.compliance.assign(contact.cells.size() * contact.cells.size(), r.dt * r.dt / mass);
+            for (double push : field.step(r.dt, contact)) force += push;
         } else {
             force = g * displaced(z);
         }

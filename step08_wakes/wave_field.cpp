@@ -159,6 +159,9 @@ void WaveField::make_kernels(double dt) {
             const double omega = std::sqrt(g * K);
             work_[index(i, j)] = Complex(-(1 - std::cos(omega * dt)) / g, -std::sin(omega * dt) / omega);
         }
+    // Both kernels are real and even, so their spectra are real: eta^ + i phi^ multiplies a pressure's
+    // spectrum into the transform of its height + i its potential.
+    kernel_spectrum_ = work_;
     fft_.inverse(work_);
     const double scale = 1.0 / (double(n) * double(n));
     height_kernel_.resize(work_.size());
@@ -171,9 +174,10 @@ void WaveField::make_kernels(double dt) {
 }
 
 std::vector<double> WaveField::step(double dt, const Contact& contact, const Forcing& forcing) {
-    const std::size_t m = contact.cells.size();
-    if (contact.target.size() != m || contact.compliance.size() != m * m)
-        throw ocean::Error("wave field: a contact's targets or compliance do not match its cells");
+    const std::size_t m = contact.target.size(), taps = std::size_t(std::max(contact.taps, 1));
+    if (contact.cells.size() != m * taps || contact.compliance.size() != m * m ||
+        !(contact.weights.empty() || contact.weights.size() == m * taps))
+        throw ocean::Error("wave field: a contact's cells, weights or compliance do not match its points");
     turn(dt, forcing);  // where the surface would go if nothing pushed on it
     make_kernels(dt);
     const int n = settings_.n;
@@ -182,28 +186,45 @@ std::vector<double> WaveField::step(double dt, const Contact& contact, const For
         const int dj = (int(to / std::size_t(n)) - int(from / std::size_t(n)) + n) % n;
         return std::size_t(dj) * std::size_t(n) + std::size_t(di);
     };
-    // The pressures P_j on the contact cells: the surface there ends at the hull,
-    //     eta_free(i) + sum_j kernel(i - j) P_j = target(i) + sum_j compliance(i, j) P_j
-    // (the hull moves up by compliance P as the water pushes it), a symmetric positive definite
-    // system: -kernel is (1 - cos omega dt) / g >= 0 mode by mode, the compliance a body's.
-    std::vector<double> a(m * m), p(m);
+    const auto weight = [&](std::size_t tap) { return contact.weights.empty() ? 1.0 : contact.weights[tap]; };
+    // The pushes Q_j at the contact points: the surface there ends at the hull,
+    //     eta_free(i) + sum_j kernel(i, j) Q_j = target(i) + sum_j compliance(i, j) Q_j
+    // (the hull moves up by compliance Q as the water pushes it), where kernel(i, j) is how far a
+    // unit push at point j, a pressure of w / dA on each of its cells, moves the surface read at
+    // point i: the sum over their taps of w w' kernel(cell - cell') / dA. A symmetric positive
+    // definite system: -kernel is (1 - cos omega dt) / g >= 0 mode by mode, and the compliance a
+    // body's.
+    const double area = settings_.cell * settings_.cell;
+    std::vector<double> a(m * m), q(m);
     for (std::size_t i = 0; i < m; ++i) {
-        for (std::size_t j = 0; j < m; ++j)
-            a[i * m + j] = -height_kernel_[offset(contact.cells[i], contact.cells[j])] + contact.compliance[i * m + j];
-        p[i] = eta_[contact.cells[i]] - contact.target[i];
-    }
-    solve_symmetric(a, p, m);
-    // The pressures' own waves, added to the free step's.
-    for (std::size_t j = 0; j < m; ++j) {
-        if (p[j] == 0) continue;
-        for (std::size_t c = 0; c < eta_.size(); ++c) {
-            const std::size_t d = offset(c, contact.cells[j]);
-            eta_[c] += height_kernel_[d] * p[j];
-            phi_[c] += potential_kernel_[d] * p[j];
+        for (std::size_t j = 0; j < m; ++j) {
+            double sum = 0;
+            for (std::size_t t = 0; t < taps; ++t)
+                for (std::size_t u = 0; u < taps; ++u)
+                    sum += weight(i * taps + t) * weight(j * taps + u) *
+                           height_kernel_[offset(contact.cells[i * taps + t], contact.cells[j * taps + u])];
+            a[i * m + j] = -sum / area + contact.compliance[i * m + j];
         }
+        double felt = 0;
+        for (std::size_t t = 0; t < taps; ++t) felt += weight(i * taps + t) * eta_[contact.cells[i * taps + t]];
+        q[i] = felt - contact.target[i];
+    }
+    solve_symmetric(a, q, m);
+    // The pressure p / rho the pushes put on each cell, and its waves added to the free step's: the
+    // kernels' convolution with it, through the transform (the kernels' spectra times its).
+    for (std::size_t c = 0; c < work_.size(); ++c) work_[c] = 0.0;
+    for (std::size_t i = 0; i < m; ++i)
+        for (std::size_t t = 0; t < taps; ++t) work_[contact.cells[i * taps + t]] += weight(i * taps + t) * q[i] / area;
+    fft_.forward(work_);
+    for (std::size_t c = 0; c < work_.size(); ++c) work_[c] *= kernel_spectrum_[c];
+    fft_.inverse(work_);
+    const double scale = 1.0 / (double(n) * double(n));
+    for (std::size_t c = 0; c < eta_.size(); ++c) {
+        eta_[c] += work_[c].real() * scale;
+        phi_[c] += work_[c].imag() * scale;
     }
     absorb(dt);
-    return p;
+    return q;
 }
 
 void WaveField::absorb(double dt) {

@@ -51,15 +51,23 @@ struct Forcing {
     std::vector<double> pressure;  // p / rho, m^2/s^2: a pressure on the surface
 };
 
-// A body in contact with the water over some cells (README 8.4): under its hull the surface must
-// end each step where the hull is. `cells` are the field's cell indices under it; `target` the
-// height (m) the field must reach there if the body felt no push from the water (the hull's
-// underside, moved on by its own velocity and gravity, less the incident sea's height); and
-// `compliance`, M x M row major (M cells), how far the hull under cell i moves in the step per unit
-// of p / rho on cell j (m per m^2/s^2): the body's response to the water's push, dt^2 dA times
-// (1 / m + (r_i x y) . I^-1 (r_j x y)) per unit density.
+// A body in contact with the water (README 8.4): at M points under its hull the surface must end
+// each step where the hull is. Each point reads the field at `taps` cells with `weights` (one cell
+// and weight 1: the cell's own height; four and bilinear weights: the surface between cell
+// centres) and pushes on the same cells with the same weights, so that the push's work is the
+// body's and the system stays symmetric. `cells` and `weights` hold taps entries a point
+// (`weights` empty: all 1). The unknown at each point is its push, the force over the water's
+// density (p / rho times the point's area, m^4/s^2), spread on its cells as a pressure.
+// `target` is the height (m) the field must reach at each point if the body felt no push (the
+// hull's underside, moved on by its own velocity and gravity, less the incident sea's height);
+// `compliance`, M x M row major, how far the hull at point i moves in the step per unit push at
+// point j: travel (1 / m + (r_i x y) . I^-1 (r_j x y)) with m and I per unit density (m^3, m^5)
+// and travel the distance a step moves a body per unit acceleration (dt^2 for one step of
+// semi-implicit Euler).
 struct Contact {
+    int taps = 1;
     std::vector<std::size_t> cells;
+    std::vector<double> weights;
     std::vector<double> target;
     std::vector<double> compliance;
 };
@@ -76,10 +84,10 @@ public:
     // Advances `dt` seconds (> 0): every mode turned exactly, the forcing held constant, then the
     // absorbing layer applied.
     void step(double dt, const Forcing& forcing = {});
-    // The same step with a body in contact: the pressure p / rho on its cells (returned, one a
-    // contact cell, held over the step) is the one that leaves the surface under it exactly where
-    // its hull ends the step, the body's response to that pressure included. The body's force is
-    // rho dA times their sum (and its torque their moments).
+    // The same step with a body in contact: the pushes at its points (returned, one a point, held
+    // over the step; force / rho, m^4/s^2) are those that leave the surface under it exactly where
+    // its hull ends the step, the body's response to them included. The body's force is rho times
+    // their sum (and its torque their moments).
     std::vector<double> step(double dt, const Contact& contact, const Forcing& forcing = {});
 
     // Moves the grid by whole cells so that its centre is the cell nearest `centre` (x, z): the
@@ -122,6 +130,7 @@ private:
     std::int64_t origin_i_ = 0, origin_j_ = 0;  // the grid's centre, in whole cells from the world origin
     mutable std::vector<Complex> work_, forcing_work_;
     std::vector<double> height_kernel_, potential_kernel_;
+    std::vector<Complex> kernel_spectrum_;  // the kernels' transforms, height + i potential
     double kernels_for_ = 0;
 };
 

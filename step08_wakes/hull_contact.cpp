@@ -1,0 +1,150 @@
+#include "step08_wakes/hull_contact.hpp"
+
+#include "step07_buoyancy/hull_forces.hpp"
+#include "step07_buoyancy/sea_query.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace step08 {
+
+namespace {
+
+// Half the body's diagonal: no point of it is further from its centre.
+double reach(const step07::FloatingBody& body) { return 0.5 * glm::length(body.settings().shape.size); }
+
+// The four cells around a world point (x, z) and their bilinear weights; false outside the grid.
+bool bilinear_taps(const WaveField& field, glm::dvec2 at, std::size_t* cells, double* weights) {
+    const glm::dvec2 corner = field.cell_centre(0, 0);
+    const double cell = field.settings().cell, u = (at.x - corner.x) / cell, v = (at.y - corner.y) / cell;
+    const int n = field.n();
+    if (!(u >= 0 && v >= 0 && u < n - 1 && v < n - 1)) return false;
+    const int i = int(u), j = int(v);
+    const double fu = u - i, fv = v - j;
+    const auto index = [n](int a, int b) { return std::size_t(b) * std::size_t(n) + std::size_t(a); };
+    cells[0] = index(i, j), cells[1] = index(i + 1, j), cells[2] = index(i, j + 1), cells[3] = index(i + 1, j + 1);
+    weights[0] = (1 - fu) * (1 - fv), weights[1] = fu * (1 - fv), weights[2] = (1 - fu) * fv, weights[3] = fu * fv;
+    return true;
+}
+
+}  // namespace
+
+bool within_field(const WaveField& field, const step07::FloatingBody& body) {
+    const glm::dvec3 centre = body.to_world(body.shape_centre());
+    const glm::dvec2 middle = field.cell_centre(field.n() / 2, field.n() / 2);
+    const double inner = 0.5 * field.side() - field.settings().absorbing_width - field.settings().cell;
+    return std::abs(centre.x - middle.x) + reach(body) < inner && std::abs(centre.z - middle.y) + reach(body) < inner;
+}
+
+std::vector<glm::dvec3> bottom_points(const step07::FloatingBody& body, double cell) {
+    const glm::dvec3 size = body.settings().shape.size;
+    const int along = std::max(1, int(std::lround(size.x / cell))), across = std::max(1, int(std::lround(size.z / cell)));
+    std::vector<glm::dvec3> points;
+    for (int b = 0; b < across; ++b)
+        for (int a = 0; a < along; ++a)
+            points.push_back(body.shape_centre() + glm::dvec3(size.x * ((a + 0.5) / along - 0.5), -0.5 * size.y,
+                                                                size.z * ((b + 0.5) / across - 0.5)));
+    return points;
+}
+
+HullInContact hull_contact(const WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea, double h) {
+    HullInContact hull;
+    Contact& c = hull.contact;
+    c.taps = 4;
+    for (const glm::dvec3& point : bottom_points(body, field.settings().cell)) {
+        const glm::dvec3 at = body.to_world(point);
+        std::size_t cells[4];
+        double weights[4];
+        if (!bilinear_taps(field, {at.x, at.z}, cells, weights)) continue;
+        double field_height = 0;
+        for (int t = 0; t < 4; ++t) field_height += weights[t] * field.heights()[cells[t]];
+        const double sea_height = step07::query(sea, {at.x, at.z}).height;
+        if (at.y >= sea_height + field_height) continue;  // the bottom is above the water there
+        c.cells.insert(c.cells.end(), cells, cells + 4);
+        c.weights.insert(c.weights.end(), weights, weights + 4);
+        c.target.push_back(at.y - sea_height);
+        hull.arms.push_back(at - body.position());
+    }
+    // Per unit density, as the pushes are: the mass a volume, the inertia a volume times m^2.
+    const std::size_t m = hull.arms.size();
+    const double density = step07::kWaterDensity, travel = step07::FloatingBody::travel_per_acceleration(h);
+    const glm::dmat3 inverse_inertia = density * body.inverse_inertia();
+    c.compliance.resize(m * m);
+    for (std::size_t a = 0; a < m; ++a) {
+        const glm::dvec3 turn_a = glm::cross(hull.arms[a], glm::dvec3(0, 1, 0));
+        for (std::size_t b = 0; b < m; ++b) {
+            const glm::dvec3 turn_b = glm::cross(hull.arms[b], glm::dvec3(0, 1, 0));
+            c.compliance[a * m + b] = travel * (density / body.mass() + glm::dot(turn_a, inverse_inertia * turn_b));
+        }
+    }
+    return hull;
+}
+
+void push_hull(step07::FloatingBody& body, const HullInContact& hull, const std::vector<double>& pushes, double h) {
+    glm::dvec3 force(0.0), torque(0.0);
+    for (std::size_t c = 0; c < hull.arms.size(); ++c) {
+        const glm::dvec3 push(0, step07::kWaterDensity * pushes[c], 0);
+        force += push;
+        torque += glm::cross(hull.arms[c], push);
+    }
+    body.add_water_push(force, torque, h);
+}
+
+void settle_under(WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea) {
+    // The cells whose centres lie under the bottom, each set to the bottom's height over it (the
+    // nearest of its points: they are about a cell apart).
+    const double cell = field.settings().cell;
+    const glm::dvec2 corner = field.cell_centre(0, 0);
+    for (const glm::dvec3& point : bottom_points(body, cell)) {
+        const glm::dvec3 at = body.to_world(point);
+        const int i = int(std::lround((at.x - corner.x) / cell)), j = int(std::lround((at.z - corner.y) / cell));
+        if (i < 0 || j < 0 || i >= field.n() || j >= field.n()) continue;
+        field.heights()[std::size_t(j) * std::size_t(field.n()) + std::size_t(i)] = at.y - step07::query(sea, {at.x, at.z}).height;
+    }
+}
+
+void step_with_bodies(WaveField& field, const std::vector<step07::FloatingBody*>& bodies, const step07::Surface& from,
+                      const step07::Surface& to, double h, double sea_interval, const Forcing& forcing) {
+    std::vector<HullInContact> hulls;
+    Contact all;
+    all.taps = 4;
+    for (step07::FloatingBody* body : bodies) {
+        body->set_archimedes(false);
+        body->step(from, to, h, sea_interval);
+        hulls.push_back(hull_contact(field, *body, to, h));
+        all.cells.insert(all.cells.end(), hulls.back().contact.cells.begin(), hulls.back().contact.cells.end());
+        all.weights.insert(all.weights.end(), hulls.back().contact.weights.begin(), hulls.back().contact.weights.end());
+        all.target.insert(all.target.end(), hulls.back().contact.target.begin(), hulls.back().contact.target.end());
+    }
+    const std::size_t m = all.target.size();
+    all.compliance.assign(m * m, 0.0);
+    std::size_t first = 0;
+    for (const HullInContact& hull : hulls) {
+        const std::size_t k = hull.arms.size();
+        for (std::size_t a = 0; a < k; ++a)
+            for (std::size_t b = 0; b < k; ++b) all.compliance[(first + a) * m + first + b] = hull.contact.compliance[a * k + b];
+        first += k;
+    }
+    const std::vector<double> pushes = field.step(h, all, forcing);
+    first = 0;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const std::size_t k = hulls[b].arms.size();
+        push_hull(*bodies[b], hulls[b], std::vector<double>(pushes.begin() + long(first), pushes.begin() + long(first + k)), h);
+        first += k;
+    }
+}
+
+step07::SurfaceAt SeaBetween::at(glm::dvec2 rest) const {
+    const step07::SurfaceAt a = from_.at(rest), b = to_.at(rest);
+    const auto mix = [this](glm::dvec3 x, glm::dvec3 y) { return x + share_ * (y - x); };
+    return {mix(a.displacement, b.displacement), mix(a.d_dx, b.d_dx), mix(a.d_dz, b.d_dz)};
+}
+
+glm::dvec3 SeaBetween::displacement_below(glm::dvec2 rest, double depth) const {
+    const glm::dvec3 a = from_.displacement_below(rest, depth), b = to_.displacement_below(rest, depth);
+    return a + share_ * (b - a);
+}
+
+}  // namespace step08

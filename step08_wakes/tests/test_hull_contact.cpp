@@ -1,0 +1,95 @@
+// step07's raft in contact with the wave field (hull_contact.hpp), as step08's program floats it.
+#include "step08_wakes/hull_contact.hpp"
+#include "step08_wakes/wake_experiments.hpp"
+
+#include "step07_buoyancy/bodies.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace {
+
+step07::BodySettings raft_settings() {
+    step07::BodyParams params;
+    return step07::body_settings(params)[step07::kRaft];
+}
+
+step08::WaveFieldSettings field_settings() {
+    step08::WaveFieldSettings s;
+    s.n = 128;
+    s.cell = 0.5;
+    s.absorbing_width = 8;
+    return s;
+}
+
+// The raft's rest on still water: its draft d = density / 1025 of its 0.4 m.
+double rest_height(const step07::BodySettings& raft) {
+    return raft.shape.size.y * (0.5 - raft.density / step07::kWaterDensity);
+}
+
+// The raft's heave (its centre's height above its rest) over `seconds`, released `lift` metres
+// above its rest on calm water: in contact with the field, or on step07's Archimedes alone.
+step08::HeaveRecord release_raft(bool with_waves, double lift = 0.05, double seconds = 6, double linear_drag = 0.5) {
+    step07::BodySettings settings = raft_settings();
+    settings.linear_drag = linear_drag;
+    settings.angular_drag = 0;
+    const double rest = rest_height(settings);
+    step07::FloatingBody raft(settings, {0.25, rest + lift, 0.25});  // its bottom's points on cell centres
+    step08::WaveField field(field_settings());
+    const step07::FlatSea calm;
+    const double dt = 1.0 / 60;
+    if (with_waves) step08::settle_under(field, step07::FloatingBody(settings, {0.25, rest, 0.25}), calm);
+    step08::HeaveRecord record;
+    record.rest = rest;
+    for (int s = 0; s <= int(std::lround(seconds / dt)); ++s) {
+        record.time.push_back(s * dt);
+        record.height.push_back(raft.position().y - rest);
+        if (with_waves)
+            step08::step_with_bodies(field, {&raft}, calm, calm, dt, dt);
+        else
+            raft.step(calm, calm, dt);
+    }
+    return record;
+}
+
+TEST(Step08HullContact, TheRaftsBottomIsAPointACell) {
+    const step07::FloatingBody raft(raft_settings(), {1, 2, 3});
+    const std::vector<glm::dvec3> points = step08::bottom_points(raft, 0.5);
+    ASSERT_EQ(points.size(), 100u);  // 5 m by 5 m in half-metre cells
+    glm::dvec3 middle(0.0);
+    for (const glm::dvec3& p : points) {
+        EXPECT_NEAR(p.y, -0.2, 1e-12);
+        EXPECT_LT(std::max(std::abs(p.x), std::abs(p.z)), 2.5);
+        middle += p / double(points.size());
+    }
+    EXPECT_LT(glm::length(middle - glm::dvec3(0, -0.2, 0)), 1e-12) << "centred under the centre of mass";
+}
+
+TEST(Step08HullContact, AtRestTheFieldHoldsTheRaftWhereArchimedesDoes) {
+    // Put at its rest on calm water, the raft stays there: the contact's pressure is g times its
+    // draft, its weight over its bottom's area.
+    const step08::HeaveRecord record = release_raft(true, 0.0, 2);
+    double largest = 0;
+    for (double h : record.height) largest = std::max(largest, std::abs(h));
+    std::cout << "raft at rest: moved at most " << largest << " m" << std::endl;
+    EXPECT_LT(largest, 1e-3);
+}
+
+TEST(Step08HullContact, AHeavingRaftLosesItsEnergyToTheWavesItMakes) {
+    // Without drag, so that the waves alone take the energy: on Archimedes the raft rings for ever;
+    // in contact with the field it comes to rest within a few periods, its period lengthened by
+    // the water it drags along.
+    const step08::Decay alone = step08::measure_decay(release_raft(false, 0.05, 6, 0.0), 4);
+    const step08::Decay waves = step08::measure_decay(release_raft(true, 0.05, 6, 0.0), 3);
+    std::cout << "raft on Archimedes: period " << alone.period << " s, damping ratio " << alone.damping_ratio
+              << "; with its waves: period " << waves.period << " s, damping ratio " << waves.damping_ratio << std::endl;
+    ASSERT_EQ(alone.crests, 4);
+    ASSERT_EQ(waves.crests, 3);
+    EXPECT_LT(std::abs(alone.damping_ratio), 0.01);
+    EXPECT_GT(waves.damping_ratio, 0.1);
+    EXPECT_GT(waves.period, alone.period);
+}
+
+}  // namespace
