@@ -52,6 +52,7 @@ std::vector<glm::dvec3> bottom_points(const step07::FloatingBody& body, double c
 HullInContact hull_contact(const WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea, double h) {
     HullInContact hull;
     Contact& c = hull.contact;
+    c.push_only = true;
     c.taps = 4;
     for (const glm::dvec3& point : bottom_points(body, field.settings().cell)) {
         const glm::dvec3 at = body.to_world(point);
@@ -61,7 +62,9 @@ HullInContact hull_contact(const WaveField& field, const step07::FloatingBody& b
         double field_height = 0;
         for (int t = 0; t < 4; ++t) field_height += weights[t] * field.heights()[cells[t]];
         const double sea_height = step07::query(sea, {at.x, at.z}).height;
-        if (at.y >= sea_height + field_height) continue;  // the bottom is above the water there
+        // Points a little over the water too: whether the water reaches them by the step's end is
+        // the contact's to find (push_only).
+        if (at.y >= sea_height + field_height + 0.5 * field.settings().cell) continue;
         c.cells.insert(c.cells.end(), cells, cells + 4);
         c.weights.insert(c.weights.end(), weights, weights + 4);
         c.target.push_back(at.y - sea_height);
@@ -109,6 +112,7 @@ void step_with_bodies(WaveField& field, const std::vector<step07::FloatingBody*>
                       const step07::Surface& to, double h, double sea_interval, const Forcing& forcing) {
     std::vector<HullInContact> hulls;
     Contact all;
+    all.push_only = true;
     all.taps = 4;
     for (step07::FloatingBody* body : bodies) {
         body->set_archimedes(false);

@@ -22,6 +22,7 @@
 #include "step07_buoyancy/body_params.hpp"
 #include "step07_buoyancy/hull_forces.hpp"
 #include "step07_buoyancy/sea_feed.hpp"
+#include "step08_wakes/hull_contact.hpp"
 #include "step08_wakes/plan_view.hpp"
 #include "step08_wakes/wake_experiments.hpp"
 #include "step08_wakes/wake_maps.hpp"
@@ -146,29 +147,42 @@ private:
             const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
             wake_->place({boat.position().x, boat.position().z}, {along.x, along.z});
             for (std::size_t b = 0; b < bodies_.size(); ++b)
-                if (b != step07::kBoat) bodies_[b].step(feed_.before(), feed_.now(), dt, feed_.interval());
+                if (b != step07::kBoat) {
+                    bodies_[b].set_archimedes(true);
+                    bodies_[b].step(feed_.before(), feed_.now(), dt, feed_.interval());
+                }
             sea_.add_local_waves(nullptr);
             stones_.clear();
             wake_ms_ = 0;
             return;
         }
-        press(*wake_, boat, dt);
+        // The raft, within the field, in contact with it: it moves with the field's steps and makes
+        // its waves; the buoy (and a raft outside the field) floats on the sea with the wake in it.
+        step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval()};
+        for (std::size_t b = 0; b < bodies_.size(); ++b) {
+            const bool contact = b != step07::kBoat && bodies_[b].settings().shape.kind == step07::ShapeKind::Box &&
+                                 step08::within_field(wake_->field(), bodies_[b]);
+            bodies_[b].set_archimedes(!contact);
+            if (contact) in_contact.bodies.push_back(&bodies_[b]);
+        }
+        press(*wake_, boat, dt, &in_contact);
         for (const glm::dvec2& stone : stones_) wake_->drop_stone(stone);
         stones_.clear();
         wake_before_ = std::move(wake_now_);
         wake_now_ = step08::wake_maps(wake_->field(), sea_.choppiness());
         const step08::SeaWithWake before(feed_.before(), wake_before_), now(feed_.now(), wake_now_);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
-            if (b != step07::kBoat) bodies_[b].step(before, now, dt, feed_.interval());
+            if (b != step07::kBoat && bodies_[b].archimedes()) bodies_[b].step(before, now, dt, feed_.interval());
         local_waves_.upload(wake_now_);
         sea_.add_local_waves(&local_waves_);
         wake_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     }
 
     // The hull's patch pressed on the field over dt, from where it was to where the boat is now.
-    static void press(step08::WakeScene& wake, const step07::FloatingBody& boat, double dt) {
+    static void press(step08::WakeScene& wake, const step07::FloatingBody& boat, double dt,
+                      const step08::BodiesInContact* bodies) {
         const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
-        wake.press(dt, {boat.position().x, boat.position().z}, {along.x, along.z}, hull_patch(boat));
+        wake.press(dt, {boat.position().x, boat.position().z}, {along.x, along.z}, hull_patch(boat), bodies);
     }
     // The patch of the water the boat displaces afloat, its mass over the water's density
     // (Archimedes): its weight is what presses. Not the volume under water at this instant, which

@@ -1,5 +1,7 @@
 #include "step08_wakes/wake_scene.hpp"
 
+#include "step08_wakes/hull_contact.hpp"
+
 #include "common/constants.hpp"
 
 #include <glm/geometric.hpp>
@@ -47,7 +49,8 @@ void WakeScene::place(glm::dvec2 position, glm::dvec2 heading) {
     field_.follow(position_ - 0.25 * field_.side() * boat_heading());
 }
 
-void WakeScene::press(double seconds, glm::dvec2 to, glm::dvec2 heading, const BoatSettings& hull) {
+void WakeScene::press(double seconds, glm::dvec2 to, glm::dvec2 heading, const BoatSettings& hull,
+                      const BodiesInContact* bodies) {
     if (!(seconds > 0)) return;
     const glm::dvec2 from = position_;
     const double from_heading = heading_;
@@ -58,13 +61,14 @@ void WakeScene::press(double seconds, glm::dvec2 to, glm::dvec2 heading, const B
     for (int s = 0; s < steps; ++s) {
         const double middle = (s + 0.5) / steps;
         heading_ = from_heading + middle * turn;
-        press_once(h, from + middle * (to - from), boat_heading(), hull);
+        press_once(h, from + middle * (to - from), boat_heading(), hull, bodies, double(s) / steps, double(s + 1) / steps);
     }
     position_ = to;
     heading_ = from_heading + turn;
 }
 
-void WakeScene::press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const BoatSettings& hull) {
+void WakeScene::press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const BoatSettings& hull,
+                           const BodiesInContact* bodies, double from, double to) {
     field_.follow(middle - 0.25 * field_.side() * ahead);
     const int n = field_.n();
     const glm::dvec2 across(-ahead.y, ahead.x);
@@ -74,7 +78,12 @@ void WakeScene::press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const 
             forcing_.pressure[std::size_t(j) * std::size_t(n) + std::size_t(i)] =
                 hull_pressure(hull, {d.x * ahead.x + d.y * ahead.y, d.x * across.x + d.y * across.y});
         }
-    field_.step(h, forcing_);
+    if (bodies == nullptr || bodies->bodies.empty()) {
+        field_.step(h, forcing_);
+        return;
+    }
+    const SeaBetween sea_from(*bodies->before, *bodies->now, from), sea_to(*bodies->before, *bodies->now, to);
+    step_with_bodies(field_, bodies->bodies, sea_from, sea_to, h, bodies->sea_interval * (to - from), forcing_);
 }
 
 void WakeScene::drop_stone(glm::dvec2 at, double impulse, double radius) { field_.add_impulse(at, impulse, radius); }

@@ -4,9 +4,12 @@
 // the same class, so what they measure is what the window shows.
 #pragma once
 
+#include "step07_buoyancy/floating_body.hpp"
 #include "step08_wakes/wave_field.hpp"
 
 #include <glm/vec2.hpp>
+
+#include <vector>
 
 namespace step08 {
 
@@ -28,6 +31,15 @@ double hull_pressure(const BoatSettings& boat, glm::dvec2 along_across);
 // submerged volume its buoyancy already gives.
 BoatSettings hull_of(double length, double submerged_volume);
 
+// step07's bodies a press carries along in its steps, in contact with the field (hull_contact.hpp):
+// each step moves them with the field, over the part of the frame it covers.
+struct BodiesInContact {
+    std::vector<step07::FloatingBody*> bodies;  // box-shaped, within the field
+    const step07::Surface* before = nullptr;   // the incident sea at the frame's start and end
+    const step07::Surface* now = nullptr;
+    double sea_interval = 0;                   // seconds between those two seas
+};
+
 class WakeScene {
 public:
     explicit WakeScene(const WaveFieldSettings& field);
@@ -43,8 +55,10 @@ public:
     // A hull the program moves itself (step08's main: step07's boat, pushed by its engine): over
     // `seconds` its middle goes on from where it was to `to` (x, z) and its heading turns to
     // `heading` (x, z), pressing with `hull`'s patch (its speed and turn rate unused). Cut into steps
-    // in which it moves at most a cell, as sail() is.
-    void press(double seconds, glm::dvec2 to, glm::dvec2 heading, const BoatSettings& hull);
+    // in which it moves at most a cell, as sail() is; `bodies`, if given, are moved in the same
+    // steps, in contact with the field.
+    void press(double seconds, glm::dvec2 to, glm::dvec2 heading, const BoatSettings& hull,
+               const BodiesInContact* bodies = nullptr);
     // A stone's splash at `at` (x, z): an impulse of `impulse` m^4/s (its momentum over the
     // water's density) spread over `radius` metres.
     void drop_stone(glm::dvec2 at, double impulse = 0.02, double radius = 0.3);
@@ -56,7 +70,9 @@ public:
 private:
     // One step of h seconds with the patch at `middle`, heading `ahead` (unit); the grid's centre a
     // quarter of its side behind it, so that most of the grid holds the wake.
-    void press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const BoatSettings& hull);
+    // With `bodies`, the step covers the share `from` to `to` of their frame.
+    void press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const BoatSettings& hull,
+                    const BodiesInContact* bodies = nullptr, double from = 0, double to = 1);
 
     WaveField field_;
     Forcing forcing_;

@@ -48,6 +48,43 @@ void solve_symmetric(std::vector<double>& a, std::vector<double>& b, std::size_t
     }
 }
 
+// The pushes q >= 0 with A q = b where they push and A q >= b where they do not (the water there
+// ends at or under the hull): the points where the free water is over the hull (b > 0) first, then
+// rounds that let go of the points a solution pulls and take in those it leaves under water, until
+// none changes (a few rounds; at most m).
+std::vector<double> solve_pushing(const std::vector<double>& a, const std::vector<double>& b) {
+    const std::size_t m = b.size();
+    std::vector<char> active(m);
+    for (std::size_t i = 0; i < m; ++i) active[i] = b[i] > 0;
+    std::vector<double> q(m, 0.0);
+    for (std::size_t round = 0; round <= m; ++round) {
+        std::vector<std::size_t> in;
+        for (std::size_t i = 0; i < m; ++i)
+            if (active[i]) in.push_back(i);
+        std::vector<double> sub(in.size() * in.size()), x(in.size());
+        for (std::size_t r = 0; r < in.size(); ++r) {
+            for (std::size_t c = 0; c < in.size(); ++c) sub[r * in.size() + c] = a[in[r] * m + in[c]];
+            x[r] = b[in[r]];
+        }
+        if (!in.empty()) solve_symmetric(sub, x, in.size());
+        std::fill(q.begin(), q.end(), 0.0);
+        for (std::size_t r = 0; r < in.size(); ++r) q[in[r]] = x[r];
+        bool changed = false;
+        for (std::size_t i = 0; i < m; ++i) {
+            if (active[i] && q[i] < 0) {
+                active[i] = false, changed = true;
+                continue;
+            }
+            if (active[i]) continue;
+            double reached = 0;  // how far the pushes bring the water down, and the hull up, at i
+            for (std::size_t j = 0; j < m; ++j) reached += a[i * m + j] * q[j];
+            if (b[i] - reached > 1e-9) active[i] = true, changed = true;  // the water would end over the hull
+        }
+        if (!changed) break;
+    }
+    return q;
+}
+
 }  // namespace
 
 bool same_grid(const WaveFieldSettings& a, const WaveFieldSettings& b) {
@@ -209,7 +246,10 @@ std::vector<double> WaveField::step(double dt, const Contact& contact, const For
         for (std::size_t t = 0; t < taps; ++t) felt += weight(i * taps + t) * eta_[contact.cells[i * taps + t]];
         q[i] = felt - contact.target[i];
     }
-    solve_symmetric(a, q, m);
+    if (contact.push_only)
+        q = solve_pushing(a, q);
+    else
+        solve_symmetric(a, q, m);
     // The pressure p / rho the pushes put on each cell, and its waves added to the free step's: the
     // kernels' convolution with it, through the transform (the kernels' spectra times its).
     for (std::size_t c = 0; c < work_.size(); ++c) work_[c] = 0.0;

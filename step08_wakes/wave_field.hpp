@@ -65,6 +65,10 @@ struct Forcing {
 // and travel the distance a step moves a body per unit acceleration (dt^2 for one step of
 // semi-implicit Euler).
 struct Contact {
+    // Whether the water may only push (a hull resting on it, which can lift off) or also pull (a
+    // hull held to the water, as linear theory's body is): pushing only, the points that would
+    // need a pull are let go, and those the water would rise over taken in, until neither is left.
+    bool push_only = false;
     int taps = 1;
     std::vector<std::size_t> cells;
     std::vector<double> weights;
