@@ -3,6 +3,8 @@
 #include "step07_buoyancy/hull_forces.hpp"
 #include "step07_buoyancy/sea_query.hpp"
 
+#include "common/constants.hpp"
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -96,16 +98,33 @@ void push_hull(step07::FloatingBody& body, const HullInContact& hull, const std:
 }
 
 void settle_under(WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea) {
-    // The cells whose centres lie under the bottom, each set to the bottom's height over it (the
-    // nearest of its points: they are about a cell apart).
-    const double cell = field.settings().cell;
-    const glm::dvec2 corner = field.cell_centre(0, 0);
-    for (const glm::dvec3& point : bottom_points(body, cell)) {
-        const glm::dvec3 at = body.to_world(point);
-        const int i = int(std::lround((at.x - corner.x) / cell)), j = int(std::lround((at.z - corner.y) / cell));
-        if (i < 0 || j < 0 || i >= field.n() || j >= field.n()) continue;
-        field.heights()[std::size_t(j) * std::size_t(field.n()) + std::size_t(i)] = at.y - step07::query(sea, {at.x, at.z}).height;
+    // Under a steady push the field rests at -p / g, cell by cell, with p = sum of w Q / dA over
+    // the points reaching the cell: the pushes that leave it at each point's target solve
+    //     sum_j (sum over shared cells of w w') Q_j = -g dA target_i
+    // (symmetric, positive definite: the points' weights are independent rows).
+    const HullInContact hull = hull_contact(field, body, sea, 1.0 / 60);
+    const Contact& c = hull.contact;
+    const std::size_t m = c.target.size();
+    if (m == 0) return;
+    const double area = field.settings().cell * field.settings().cell;
+    std::vector<double> a(m * m, 0.0), q(m);
+    for (std::size_t i = 0; i < m; ++i) {
+        for (std::size_t j = 0; j < m; ++j)
+            for (int t = 0; t < 4; ++t)
+                for (int u = 0; u < 4; ++u)
+                    if (c.cells[4 * i + t] == c.cells[4 * j + u]) a[i * m + j] += c.weights[4 * i + t] * c.weights[4 * j + u];
+        q[i] = -ocean::kGravity * area * c.target[i];
     }
+    solve_symmetric(a, q, m);
+    std::vector<double> pressure(field.heights().size(), 0.0);
+    std::vector<char> under(field.heights().size(), 0);
+    for (std::size_t i = 0; i < m; ++i)
+        for (int t = 0; t < 4; ++t) {
+            pressure[c.cells[4 * i + t]] += c.weights[4 * i + t] * q[i] / area;
+            under[c.cells[4 * i + t]] = 1;
+        }
+    for (std::size_t k = 0; k < pressure.size(); ++k)
+        if (under[k]) field.heights()[k] = -pressure[k] / ocean::kGravity;
 }
 
 void step_with_bodies(WaveField& field, const std::vector<step07::FloatingBody*>& bodies, const step07::Surface& from,

@@ -46,9 +46,9 @@ HullInContact hull_contact(const WaveField& field, const step07::FloatingBody& b
 // rho Q up at each point, and their torques.
 void push_hull(step07::FloatingBody& body, const HullInContact& hull, const std::vector<double>& pushes, double h);
 
-// The field at rest under a body floating still: the water at each cell under its bottom where
-// the bottom is (less the sea's height), the potential untouched. A body put on a flat field
-// instead would have to push its whole dent in at once.
+// The field at rest under a body floating still: the dent a steady push holds, read at each of
+// its bottom's points where that point is (less the sea's height); the potential untouched. A
+// body put on a flat field instead would have to push its whole dent in at once.
 void settle_under(WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea);
 
 // One step of h seconds of the field with bodies in contact: each body moves without the water's

@@ -22,6 +22,7 @@
 #include "step07_buoyancy/body_params.hpp"
 #include "step07_buoyancy/hull_forces.hpp"
 #include "step07_buoyancy/sea_feed.hpp"
+#include "step07_buoyancy/sea_query.hpp"
 #include "step08_wakes/hull_contact.hpp"
 #include "step08_wakes/plan_view.hpp"
 #include "step08_wakes/wake_experiments.hpp"
@@ -162,6 +163,9 @@ private:
         for (std::size_t b = 0; b < bodies_.size(); ++b) {
             const bool contact = b != step07::kBoat && bodies_[b].settings().shape.kind == step07::ShapeKind::Box &&
                                  step08::within_field(wake_->field(), bodies_[b]);
+            // A body coming into the field brings its dent with it: the water under it settled
+            // where its hull is, as Archimedes held it (else the first step would push it all in).
+            if (contact && bodies_[b].archimedes()) wake_->settle_under(bodies_[b], feed_.before());
             bodies_[b].set_archimedes(!contact);
             if (contact) in_contact.bodies.push_back(&bodies_[b]);
         }
@@ -206,6 +210,15 @@ private:
         const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
         const glm::dvec2 heading = glm::normalize(glm::dvec2(along.x, along.z));
         boat.push(boat.mass() * speed * glm::dvec3(heading.x, 0, heading.y), boat.position());
+        // The raft abeam of the boat, 10 m off its course (step07 drops it where this boat, under
+        // way, would sail through it): within the field, where its waves are the field's, and where
+        // the boat's wake reaches it a few seconds on. Put afloat at its draft, not dropped: a 5 m
+        // raft falling 1.5 m flat on the water would splash the view white with its rings.
+        step07::FloatingBody& raft = bodies_[step07::kRaft];
+        const glm::dvec2 beside = glm::dvec2(boat.position().x, boat.position().z) + 10.0 * glm::dvec2(-heading.y, heading.x);
+        const step07::BodySettings& r = raft.settings();
+        const double afloat = step07::query(feed_.now(), beside).height + r.shape.size.y * (0.5 - r.density / step07::kWaterDensity);
+        raft = step07::FloatingBody(r, {beside.x, afloat, beside.y}, raft.orientation());
         wake_settings_ = field_settings();
         wake_ = std::make_unique<step08::WakeScene>(wake_settings_);
         step08::BoatSettings hull = hull_patch(boat);

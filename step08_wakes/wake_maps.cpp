@@ -1,5 +1,7 @@
 #include "step08_wakes/wake_maps.hpp"
 
+#include "common/constants.hpp"
+
 #include <cmath>
 
 namespace step08 {
@@ -9,7 +11,9 @@ step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness) {
     const std::size_t cells = std::size_t(n) * std::size_t(n);
     const Fft2d& fft = field.fft();
     std::vector<Complex> heights(cells);
-    for (std::size_t c = 0; c < cells; ++c) heights[c] = field.heights()[c];
+    // The surface beside the bodies in contact: their dents (the water under a hull, which the
+    // hull hides) left out, their waves kept (wave_field.hpp's contact_pressure).
+    for (std::size_t c = 0; c < cells; ++c) heights[c] = field.heights()[c] + field.contact_pressure()[c] / ocean::kGravity;
     fft.forward(heights);
 
     // Four complex maps, each carrying two real ones (first + i second): the transform of a real

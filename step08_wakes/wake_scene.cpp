@@ -86,6 +86,10 @@ void WakeScene::press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const 
     step_with_bodies(field_, bodies->bodies, sea_from, sea_to, h, bodies->sea_interval * (to - from), forcing_);
 }
 
+void WakeScene::settle_under(const step07::FloatingBody& body, const step07::Surface& sea) {
+    step08::settle_under(field_, body, sea);
+}
+
 void WakeScene::drop_stone(glm::dvec2 at, double impulse, double radius) { field_.add_impulse(at, impulse, radius); }
 
 }  // namespace step08

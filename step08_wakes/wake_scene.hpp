@@ -63,6 +63,10 @@ public:
     // water's density) spread over `radius` metres.
     void drop_stone(glm::dvec2 at, double impulse = 0.02, double radius = 0.3);
 
+    // The field at rest under a body floating still (hull_contact.hpp's settle_under), for a body
+    // that comes into contact with it.
+    void settle_under(const step07::FloatingBody& body, const step07::Surface& sea);
+
     const WaveField& field() const { return field_; }
     glm::dvec2 boat_position() const { return position_; }
     glm::dvec2 boat_heading() const;  // unit (x, z)

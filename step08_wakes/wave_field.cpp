@@ -24,30 +24,6 @@ TwoSpectra separate(Complex at_k, Complex at_minus_k) {
     return {(at_k + mirrored) * 0.5, -0.5 * times_i(at_k - mirrored)};
 }
 
-// Solves A x = b in place (b becomes x) for a symmetric positive definite A (m x m, row major),
-// by Cholesky's factorisation A = L L^T.
-void solve_symmetric(std::vector<double>& a, std::vector<double>& b, std::size_t m) {
-    for (std::size_t j = 0; j < m; ++j) {
-        double d = a[j * m + j];
-        for (std::size_t k = 0; k < j; ++k) d -= a[j * m + k] * a[j * m + k];
-        if (!(d > 0)) throw ocean::Error("wave field: a contact's system is not positive definite");
-        a[j * m + j] = std::sqrt(d);
-        for (std::size_t i = j + 1; i < m; ++i) {
-            double s = a[i * m + j];
-            for (std::size_t k = 0; k < j; ++k) s -= a[i * m + k] * a[j * m + k];
-            a[i * m + j] = s / a[j * m + j];
-        }
-    }
-    for (std::size_t i = 0; i < m; ++i) {  // L y = b
-        for (std::size_t k = 0; k < i; ++k) b[i] -= a[i * m + k] * b[k];
-        b[i] /= a[i * m + i];
-    }
-    for (std::size_t i = m; i-- > 0;) {  // L^T x = y
-        for (std::size_t k = i + 1; k < m; ++k) b[i] -= a[k * m + i] * b[k];
-        b[i] /= a[i * m + i];
-    }
-}
-
 // The pushes q >= 0 with A q = b where they push and A q >= b where they do not (the water there
 // ends at or under the hull): the points where the free water is over the hull (b > 0) first, then
 // rounds that let go of the points a solution pulls and take in those it leaves under water, until
@@ -87,6 +63,28 @@ std::vector<double> solve_pushing(const std::vector<double>& a, const std::vecto
 
 }  // namespace
 
+void solve_symmetric(std::vector<double>& a, std::vector<double>& b, std::size_t m) {
+    for (std::size_t j = 0; j < m; ++j) {
+        double d = a[j * m + j];
+        for (std::size_t k = 0; k < j; ++k) d -= a[j * m + k] * a[j * m + k];
+        if (!(d > 0)) throw ocean::Error("wave field: a contact's system is not positive definite");
+        a[j * m + j] = std::sqrt(d);
+        for (std::size_t i = j + 1; i < m; ++i) {
+            double s = a[i * m + j];
+            for (std::size_t k = 0; k < j; ++k) s -= a[i * m + k] * a[j * m + k];
+            a[i * m + j] = s / a[j * m + j];
+        }
+    }
+    for (std::size_t i = 0; i < m; ++i) {  // L y = b
+        for (std::size_t k = 0; k < i; ++k) b[i] -= a[i * m + k] * b[k];
+        b[i] /= a[i * m + i];
+    }
+    for (std::size_t i = m; i-- > 0;) {  // L^T x = y
+        for (std::size_t k = i + 1; k < m; ++k) b[i] -= a[k * m + i] * b[k];
+        b[i] /= a[i * m + i];
+    }
+}
+
 bool same_grid(const WaveFieldSettings& a, const WaveFieldSettings& b) {
     return a.n == b.n && a.cell == b.cell && a.depth == b.depth;
 }
@@ -106,6 +104,7 @@ WaveField::WaveField(const WaveFieldSettings& settings) : settings_(settings), f
     const std::size_t cells = std::size_t(settings.n) * std::size_t(settings.n);
     eta_.assign(cells, 0.0);
     phi_.assign(cells, 0.0);
+    contact_pressure_.assign(cells, 0.0);
     work_.resize(cells);
     // The layer: the rate grows as the square of the depth into it, from 0 at its inner edge (a
     // smooth start reflects less) to absorbing_rate at the grid's edge; corners take the larger.
@@ -137,6 +136,7 @@ glm::dvec2 WaveField::wavenumber(int i, int j) const {
 void WaveField::step(double dt, const Forcing& forcing) {
     turn(dt, forcing);
     absorb(dt);
+    std::fill(contact_pressure_.begin(), contact_pressure_.end(), 0.0);
 }
 
 void WaveField::turn(double dt, const Forcing& forcing) {
@@ -255,6 +255,7 @@ std::vector<double> WaveField::step(double dt, const Contact& contact, const For
     for (std::size_t c = 0; c < work_.size(); ++c) work_[c] = 0.0;
     for (std::size_t i = 0; i < m; ++i)
         for (std::size_t t = 0; t < taps; ++t) work_[contact.cells[i * taps + t]] += weight(i * taps + t) * q[i] / area;
+    for (std::size_t c = 0; c < work_.size(); ++c) contact_pressure_[c] = work_[c].real();
     fft_.forward(work_);
     for (std::size_t c = 0; c < work_.size(); ++c) work_[c] *= kernel_spectrum_[c];
     fft_.inverse(work_);

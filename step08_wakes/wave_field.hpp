@@ -41,6 +41,10 @@ struct WaveFieldSettings {
 // on under the other (the absorbing layer aside, which the programs derive from these).
 bool same_grid(const WaveFieldSettings& a, const WaveFieldSettings& b);
 
+// Solves A x = b in place (b becomes x) for a symmetric positive definite A (m x m, row major),
+// by Cholesky's factorisation A = L L^T (A is overwritten). Throws ocean::Error if A is not.
+void solve_symmetric(std::vector<double>& a, std::vector<double>& b, std::size_t m);
+
 // K = k tanh(k h): what turns a potential into a surface's vertical speed (k in deep water).
 double vertical_speed_factor(double wavenumber, double depth);
 
@@ -107,6 +111,10 @@ public:
     double height_at(glm::dvec2 at) const;
 
     const std::vector<double>& heights() const { return eta_; }     // n * n, metres
+    // The pressure p / rho (m^2/s^2) the last step's contact held on each cell (n * n; zero where
+    // it pushed on none, and everywhere after a step without one). Under a steady push the field
+    // rests at -p / g: heights() + p / g is what the field holds beside that dent, its waves.
+    const std::vector<double>& contact_pressure() const { return contact_pressure_; }
     const std::vector<double>& potentials() const { return phi_; }  // n * n, m^2/s
     std::vector<double>& heights() { return eta_; }                 // for tests and initial states
     std::vector<double>& potentials() { return phi_; }
@@ -128,7 +136,7 @@ private:
 
     WaveFieldSettings settings_;
     Fft2d fft_;
-    std::vector<double> eta_, phi_;
+    std::vector<double> eta_, phi_, contact_pressure_;
     std::vector<double> absorbing_rate_;  // 1/s, a cell
     std::vector<double> speed_factor_;    // K = |k| tanh(|k| h) of each mode, by transform index
     std::int64_t origin_i_ = 0, origin_j_ = 0;  // the grid's centre, in whole cells from the world origin

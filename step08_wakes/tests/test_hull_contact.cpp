@@ -93,4 +93,52 @@ TEST(Step08HullContact, AHeavingRaftLosesItsEnergyToTheWavesItMakes) {
     EXPECT_GT(waves.period, alone.period);
 }
 
+TEST(Step08HullContact, TheWaterPushesButNeverPulls) {
+    // A raft 10 cm over calm water: its points are near enough to be asked (half a cell), but the
+    // water would have to be pulled up to them. It falls freely, and the water stays flat.
+    step07::BodySettings settings = raft_settings();
+    settings.linear_drag = 0;
+    step07::FloatingBody raft(settings, {0.25, 0.2 + 0.1, 0.25});
+    step08::WaveField field(field_settings());
+    const step07::FlatSea calm;
+    const double dt = 1.0 / 60;
+    ASSERT_FALSE(step08::hull_contact(field, raft, calm, dt).arms.empty()) << "the points are asked";
+    step08::step_with_bodies(field, {&raft}, calm, calm, dt, dt);
+    EXPECT_NEAR(raft.velocity().y, -ocean::kGravity * dt, 1e-12);
+    double largest = 0;
+    for (double h : field.heights()) largest = std::max(largest, std::abs(h));
+    EXPECT_EQ(largest, 0.0);
+}
+
+TEST(Step08HullContact, TheRaftsEnergyGoesIntoTheWaves) {
+    // No drag and no absorbing layer: what the raft loses (its fall from 5 cm over its rest, in
+    // kinetic and potential energy) the field gains, in its waves and its dent. Their sum stays
+    // constant to within 0.1 % of what passes between them.
+    step07::BodySettings settings = raft_settings();
+    settings.linear_drag = 0;
+    settings.angular_drag = 0;
+    step07::FloatingBody raft(settings, {0.25, rest_height(settings) + 0.05, 0.25});
+    step08::WaveFieldSettings grid = field_settings();
+    grid.absorbing_width = 0;
+    step08::WaveField field(grid);
+    const step07::FlatSea calm;
+    step08::settle_under(field, raft, calm);
+    const auto total = [&] {
+        const glm::dvec3 v = raft.velocity();
+        return 0.5 * raft.mass() * glm::dot(v, v) + raft.mass() * ocean::kGravity * raft.position().y +
+               step07::kWaterDensity * field.energy();
+    };
+    const double start = total(), body_start = raft.mass() * ocean::kGravity * raft.position().y;
+    double drift = 0, passed = 0;
+    for (int s = 0; s < 240; ++s) {
+        step08::step_with_bodies(field, {&raft}, calm, calm, 1.0 / 60, 1.0 / 60);
+        drift = std::max(drift, std::abs(total() - start));
+        passed = std::max(passed, body_start - raft.mass() * ocean::kGravity * raft.position().y);
+    }
+    std::cout << "energy: " << passed << " J passed from the raft to the field; the sum drifted " << drift << " J"
+              << std::endl;
+    EXPECT_GT(passed, 1000.0);
+    EXPECT_LT(drift, 1e-3 * passed);
+}
+
 }  // namespace
