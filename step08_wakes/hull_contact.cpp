@@ -97,15 +97,24 @@ void push_hull(step07::FloatingBody& body, const HullInContact& hull, const std:
     body.add_water_push(force, torque, h);
 }
 
-void settle_under(WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea) {
-    // Under a steady push the field rests at -p / g, cell by cell, with p = sum of w Q / dA over
-    // the points reaching the cell: the pushes that leave it at each point's target solve
-    //     sum_j (sum over shared cells of w w') Q_j = -g dA target_i
-    // (symmetric, positive definite: the points' weights are independent rows).
+namespace {
+
+// The dent a steady push holds under a body floating still, read at each of its bottom's points
+// where that point is (less the sea's height): under a steady push the field rests at -p / g, cell
+// by cell, with p = sum of w Q / dA over the points reaching the cell, so the pushes solve
+//     sum_j (sum over shared cells of w w') Q_j = -g dA target_i
+// (symmetric, positive definite: the points' weights are independent rows). The dent's depth on
+// each cell it touches (zero elsewhere), and which cells those are.
+struct Dent {
+    std::vector<double> depth;
+    std::vector<char> under;
+};
+Dent static_dent(const WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea) {
     const HullInContact hull = hull_contact(field, body, sea, 1.0 / 60);
     const Contact& c = hull.contact;
     const std::size_t m = c.target.size();
-    if (m == 0) return;
+    Dent dent{std::vector<double>(field.heights().size(), 0.0), std::vector<char>(field.heights().size(), 0)};
+    if (m == 0) return dent;
     const double area = field.settings().cell * field.settings().cell;
     std::vector<double> a(m * m, 0.0), q(m);
     for (std::size_t i = 0; i < m; ++i) {
@@ -116,15 +125,25 @@ void settle_under(WaveField& field, const step07::FloatingBody& body, const step
         q[i] = -ocean::kGravity * area * c.target[i];
     }
     solve_symmetric(a, q, m);
-    std::vector<double> pressure(field.heights().size(), 0.0);
-    std::vector<char> under(field.heights().size(), 0);
     for (std::size_t i = 0; i < m; ++i)
         for (int t = 0; t < 4; ++t) {
-            pressure[c.cells[4 * i + t]] += c.weights[4 * i + t] * q[i] / area;
-            under[c.cells[4 * i + t]] = 1;
+            dent.depth[c.cells[4 * i + t]] -= c.weights[4 * i + t] * q[i] / (area * ocean::kGravity);
+            dent.under[c.cells[4 * i + t]] = 1;
         }
-    for (std::size_t k = 0; k < pressure.size(); ++k)
-        if (under[k]) field.heights()[k] = -pressure[k] / ocean::kGravity;
+    return dent;
+}
+
+}  // namespace
+
+void settle_under(WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea) {
+    const Dent dent = static_dent(field, body, sea);
+    for (std::size_t k = 0; k < dent.depth.size(); ++k)
+        if (dent.under[k]) field.heights()[k] = dent.depth[k];
+}
+
+void lift_out(WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea) {
+    const Dent dent = static_dent(field, body, sea);
+    for (std::size_t k = 0; k < dent.depth.size(); ++k) field.heights()[k] -= dent.depth[k];
 }
 
 void step_with_bodies(WaveField& field, const std::vector<step07::FloatingBody*>& bodies, const step07::Surface& from,

@@ -51,6 +51,10 @@ void push_hull(step07::FloatingBody& body, const HullInContact& hull, const std:
 // body put on a flat field instead would have to push its whole dent in at once.
 void settle_under(WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea);
 
+// The other way: the dent of a body floating still taken out of the field, for a body that leaves
+// it (outside the field's inner part its waves are no longer the field's); the field's waves stay.
+void lift_out(WaveField& field, const step07::FloatingBody& body, const step07::Surface& sea);
+
 // One step of h seconds of the field with bodies in contact: each body moves without the water's
 // buoyancy over the sea going from `from` to `to` (sea_interval: the seconds between them, for the
 // water's velocity), the field steps with their contacts (one system: the bodies move apart, so

@@ -149,6 +149,7 @@ private:
             wake_->place({boat.position().x, boat.position().z}, {along.x, along.z});
             for (std::size_t b = 0; b < bodies_.size(); ++b)
                 if (b != step07::kBoat) {
+                    if (!bodies_[b].archimedes()) wake_->lift_out(bodies_[b], feed_.before());
                     bodies_[b].set_archimedes(true);
                     bodies_[b].step(feed_.before(), feed_.now(), dt, feed_.interval());
                 }
@@ -164,8 +165,10 @@ private:
             const bool contact = b != step07::kBoat && bodies_[b].settings().shape.kind == step07::ShapeKind::Box &&
                                  step08::within_field(wake_->field(), bodies_[b]);
             // A body coming into the field brings its dent with it: the water under it settled
-            // where its hull is, as Archimedes held it (else the first step would push it all in).
+            // where its hull is, as Archimedes held it (else the first step would push it all in);
+            // one leaving takes its dent away (else the dent would fall back as a ring of waves).
             if (contact && bodies_[b].archimedes()) wake_->settle_under(bodies_[b], feed_.before());
+            if (!contact && !bodies_[b].archimedes()) wake_->lift_out(bodies_[b], feed_.before());
             bodies_[b].set_archimedes(!contact);
             if (contact) in_contact.bodies.push_back(&bodies_[b]);
         }

@@ -90,6 +90,8 @@ void WakeScene::settle_under(const step07::FloatingBody& body, const step07::Sur
     step08::settle_under(field_, body, sea);
 }
 
+void WakeScene::lift_out(const step07::FloatingBody& body, const step07::Surface& sea) { step08::lift_out(field_, body, sea); }
+
 void WakeScene::drop_stone(glm::dvec2 at, double impulse, double radius) { field_.add_impulse(at, impulse, radius); }
 
 }  // namespace step08

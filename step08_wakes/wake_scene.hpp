@@ -66,6 +66,8 @@ public:
     // The field at rest under a body floating still (hull_contact.hpp's settle_under), for a body
     // that comes into contact with it.
     void settle_under(const step07::FloatingBody& body, const step07::Surface& sea);
+    // Its dent taken out again, for a body that leaves contact (hull_contact.hpp's lift_out).
+    void lift_out(const step07::FloatingBody& body, const step07::Surface& sea);
 
     const WaveField& field() const { return field_; }
     glm::dvec2 boat_position() const { return position_; }

@@ -31,7 +31,7 @@ TwoSpectra separate(Complex at_k, Complex at_minus_k) {
 std::vector<double> solve_pushing(const std::vector<double>& a, const std::vector<double>& b) {
     const std::size_t m = b.size();
     std::vector<char> active(m);
-    for (std::size_t i = 0; i < m; ++i) active[i] = b[i] > 0;
+    for (std::size_t i = 0; i < m; ++i) active[i] = true;
     std::vector<double> q(m, 0.0);
     for (std::size_t round = 0; round <= m; ++round) {
         std::vector<std::size_t> in;
@@ -231,15 +231,27 @@ std::vector<double> WaveField::step(double dt, const Contact& contact, const For
     // point i: the sum over their taps of w w' kernel(cell - cell') / dA. A symmetric positive
     // definite system: -kernel is (1 - cos omega dt) / g >= 0 mode by mode, and the compliance a
     // body's.
+    // The kernel between the cells the points touch (each once: neighbouring points share cells),
+    // then summed over each pair of points' taps.
     const double area = settings_.cell * settings_.cell;
+    std::vector<std::size_t> touched, slot(m * taps);
+    for (std::size_t tap = 0; tap < m * taps; ++tap) {
+        const auto found = std::find(touched.begin(), touched.end(), contact.cells[tap]);
+        slot[tap] = std::size_t(found - touched.begin());
+        if (found == touched.end()) touched.push_back(contact.cells[tap]);
+    }
+    const std::size_t k = touched.size();
+    std::vector<double> between(k * k), reach(m * k, 0.0);  // cell to cell; point to cell
+    for (std::size_t x = 0; x < k; ++x)
+        for (std::size_t y = 0; y < k; ++y) between[x * k + y] = height_kernel_[offset(touched[x], touched[y])];
+    for (std::size_t i = 0; i < m; ++i)
+        for (std::size_t t = 0; t < taps; ++t)
+            for (std::size_t y = 0; y < k; ++y) reach[i * k + y] += weight(i * taps + t) * between[slot[i * taps + t] * k + y];
     std::vector<double> a(m * m), q(m);
     for (std::size_t i = 0; i < m; ++i) {
         for (std::size_t j = 0; j < m; ++j) {
             double sum = 0;
-            for (std::size_t t = 0; t < taps; ++t)
-                for (std::size_t u = 0; u < taps; ++u)
-                    sum += weight(i * taps + t) * weight(j * taps + u) *
-                           height_kernel_[offset(contact.cells[i * taps + t], contact.cells[j * taps + u])];
+            for (std::size_t u = 0; u < taps; ++u) sum += weight(j * taps + u) * reach[i * k + slot[j * taps + u]];
             a[i * m + j] = -sum / area + contact.compliance[i * m + j];
         }
         double felt = 0;
