@@ -25,9 +25,9 @@ TwoSpectra separate(Complex at_k, Complex at_minus_k) {
 }
 
 // The pushes q >= 0 with A q = b where they push and A q >= b where they do not (the water there
-// ends at or under the hull): the points where the free water is over the hull (b > 0) first, then
-// rounds that let go of the points a solution pulls and take in those it leaves under water, until
-// none changes (a few rounds; at most m).
+// ends at or under the hull): every point first, then rounds that let go of the points a solution
+// pulls and take in those it leaves under water, until none changes (a few rounds); should points
+// keep changing, the last round's solution after m + 1 rounds.
 std::vector<double> solve_pushing(const std::vector<double>& a, const std::vector<double>& b) {
     const std::size_t m = b.size();
     std::vector<char> active(m);
