@@ -17,20 +17,6 @@ namespace {
 // Half the body's diagonal: no point of it is further from its centre.
 double reach(const step07::FloatingBody& body) { return 0.5 * glm::length(body.settings().shape.size); }
 
-// The four cells around a world point (x, z) and their bilinear weights; false outside the grid.
-bool bilinear_taps(const WaveField& field, glm::dvec2 at, std::size_t* cells, double* weights) {
-    const glm::dvec2 corner = field.cell_centre(0, 0);
-    const double cell = field.settings().cell, u = (at.x - corner.x) / cell, v = (at.y - corner.y) / cell;
-    const int n = field.n();
-    if (!(u >= 0 && v >= 0 && u < n - 1 && v < n - 1)) return false;
-    const int i = int(u), j = int(v);
-    const double fu = u - i, fv = v - j;
-    const auto index = [n](int a, int b) { return std::size_t(b) * std::size_t(n) + std::size_t(a); };
-    cells[0] = index(i, j), cells[1] = index(i + 1, j), cells[2] = index(i, j + 1), cells[3] = index(i + 1, j + 1);
-    weights[0] = (1 - fu) * (1 - fv), weights[1] = fu * (1 - fv), weights[2] = (1 - fu) * fv, weights[3] = fu * fv;
-    return true;
-}
-
 }  // namespace
 
 bool within_field(const WaveField& field, const step07::FloatingBody& body) {
@@ -58,17 +44,14 @@ HullInContact hull_contact(const WaveField& field, const step07::FloatingBody& b
     c.taps = 4;
     for (const glm::dvec3& point : bottom_points(body, field.settings().cell)) {
         const glm::dvec3 at = body.to_world(point);
-        std::size_t cells[4];
-        double weights[4];
-        if (!bilinear_taps(field, {at.x, at.z}, cells, weights)) continue;
-        double field_height = 0;
-        for (int t = 0; t < 4; ++t) field_height += weights[t] * field.heights()[cells[t]];
-        const double sea_height = step07::query(sea, {at.x, at.z}).height;
+        WaveField::Taps taps;
+        if (!field.bilinear_taps({at.x, at.z}, taps)) continue;
+        const double field_height = field.height_at({at.x, at.z}), sea_height = step07::query(sea, {at.x, at.z}).height;
         // Points a little over the water too: whether the water reaches them by the step's end is
         // the contact's to find (push_only).
         if (at.y >= sea_height + field_height + 0.5 * field.settings().cell) continue;
-        c.cells.insert(c.cells.end(), cells, cells + 4);
-        c.weights.insert(c.weights.end(), weights, weights + 4);
+        c.cells.insert(c.cells.end(), taps.cells, taps.cells + 4);
+        c.weights.insert(c.weights.end(), taps.weights, taps.weights + 4);
         c.target.push_back(at.y - sea_height);
         hull.arms.push_back(at - body.position());
     }

@@ -30,8 +30,7 @@ TwoSpectra separate(Complex at_k, Complex at_minus_k) {
 // keep changing, the last round's solution after m + 1 rounds.
 std::vector<double> solve_pushing(const std::vector<double>& a, const std::vector<double>& b) {
     const std::size_t m = b.size();
-    std::vector<char> active(m);
-    for (std::size_t i = 0; i < m; ++i) active[i] = true;
+    std::vector<char> active(m, 1);
     std::vector<double> q(m, 0.0);
     for (std::size_t round = 0; round <= m; ++round) {
         std::vector<std::size_t> in;
@@ -197,16 +196,14 @@ void WaveField::make_kernels(double dt) {
             work_[index(i, j)] = Complex(-(1 - std::cos(omega * dt)) / g, -std::sin(omega * dt) / omega);
         }
     // Both kernels are real and even, so their spectra are real: eta^ + i phi^ multiplies a pressure's
-    // spectrum into the transform of its height + i its potential.
+    // spectrum into the transform of its height + i its potential. The contact's matrix needs the
+    // height kernel between cells too (the real part back in space); the potential's is only ever
+    // applied through the transform.
     kernel_spectrum_ = work_;
     fft_.inverse(work_);
     const double scale = 1.0 / (double(n) * double(n));
     height_kernel_.resize(work_.size());
-    potential_kernel_.resize(work_.size());
-    for (std::size_t c = 0; c < work_.size(); ++c) {
-        height_kernel_[c] = work_[c].real() * scale;
-        potential_kernel_[c] = work_[c].imag() * scale;
-    }
+    for (std::size_t c = 0; c < work_.size(); ++c) height_kernel_[c] = work_[c].real() * scale;
     kernels_for_ = dt;
 }
 
@@ -325,15 +322,24 @@ void WaveField::add_impulse(glm::dvec2 at, double impulse, double radius) {
         }
 }
 
-double WaveField::height_at(glm::dvec2 at) const {
+bool WaveField::bilinear_taps(glm::dvec2 at, Taps& taps) const {
     const glm::dvec2 corner = cell_centre(0, 0);
     const double u = (at.x - corner.x) / settings_.cell, v = (at.y - corner.y) / settings_.cell;
     const int n = settings_.n;
-    if (!(u >= 0 && v >= 0 && u < n - 1 && v < n - 1)) return 0;
+    if (!(u >= 0 && v >= 0 && u < n - 1 && v < n - 1)) return false;
     const int i = int(u), j = int(v);
     const double fu = u - i, fv = v - j;
-    return (1 - fv) * ((1 - fu) * eta_[index(i, j)] + fu * eta_[index(i + 1, j)]) +
-           fv * ((1 - fu) * eta_[index(i, j + 1)] + fu * eta_[index(i + 1, j + 1)]);
+    taps = {{index(i, j), index(i + 1, j), index(i, j + 1), index(i + 1, j + 1)},
+            {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv}};
+    return true;
+}
+
+double WaveField::height_at(glm::dvec2 at) const {
+    Taps taps;
+    if (!bilinear_taps(at, taps)) return 0;
+    double height = 0;
+    for (int t = 0; t < 4; ++t) height += taps.weights[t] * eta_[taps.cells[t]];
+    return height;
 }
 
 double WaveField::energy() const {

@@ -109,6 +109,13 @@ public:
     glm::dvec2 cell_centre(int i, int j) const;
     // The height at a world point, bilinear between cell centres; 0 outside the grid.
     double height_at(glm::dvec2 at) const;
+    // The four cells around a world point (x, z) and their bilinear weights, as height_at reads
+    // them (the contact reads and pushes the field through them); false outside the grid.
+    struct Taps {
+        std::size_t cells[4];
+        double weights[4];
+    };
+    bool bilinear_taps(glm::dvec2 at, Taps& taps) const;
 
     const std::vector<double>& heights() const { return eta_; }     // n * n, metres
     // The pressure p / rho (m^2/s^2) the last step's contact held on each cell (n * n; zero where
@@ -130,8 +137,8 @@ private:
     std::size_t index(int i, int j) const { return std::size_t(j) * std::size_t(settings_.n) + std::size_t(i); }
     void turn(double dt, const Forcing& forcing);  // every mode turned, the layer not applied
     void absorb(double dt);
-    // The height and potential a unit p / rho held on one cell over dt adds, by offset from it
-    // (n x n, periodic): kernels_for_ holds the dt they are for.
+    // What a unit p / rho held on one cell over dt adds: the height and potential's spectra, and
+    // the height by offset from the cell (n x n, periodic); kernels_for_ holds the dt they are for.
     void make_kernels(double dt);
 
     WaveFieldSettings settings_;
@@ -141,7 +148,7 @@ private:
     std::vector<double> speed_factor_;    // K = |k| tanh(|k| h) of each mode, by transform index
     std::int64_t origin_i_ = 0, origin_j_ = 0;  // the grid's centre, in whole cells from the world origin
     mutable std::vector<Complex> work_, forcing_work_;
-    std::vector<double> height_kernel_, potential_kernel_;
+    std::vector<double> height_kernel_;
     std::vector<Complex> kernel_spectrum_;  // the kernels' transforms, height + i potential
     double kernels_for_ = 0;
 };
