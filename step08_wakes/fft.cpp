@@ -3,6 +3,7 @@
 #include "common/constants.hpp"
 #include "common/error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -20,43 +21,64 @@ Fft2d::Fft2d(int n) : n_(n) {
         for (int b = 0; b < bits; ++b) r |= ((i >> b) & 1) << (bits - 1 - b);
         bit_reversed_[std::size_t(i)] = r;
     }
-    twiddles_.resize(std::size_t(n / 2));
-    for (int j = 0; j < n / 2; ++j) twiddles_[std::size_t(j)] = std::polar(1.0, -ocean::kTwoPi * j / n);
+    for (int direction = 0; direction < 2; ++direction) {
+        const double sign = direction == 0 ? -1.0 : 1.0;
+        twiddles_[direction].resize(std::size_t(n / 2));
+        for (int j = 0; j < n / 2; ++j) twiddles_[direction][std::size_t(j)] = std::polar(1.0, sign * ocean::kTwoPi * j / n);
+    }
 }
 
-void Fft2d::transform_line(Complex* line, std::ptrdiff_t stride, int sign) const {
-    auto at = [&](int i) -> Complex& { return line[i * stride]; };
+void Fft2d::transform_line(Complex* line, const Complex* w) const {
     for (int i = 0; i < n_; ++i) {
         const int r = bit_reversed_[std::size_t(i)];
-        if (i < r) std::swap(at(i), at(r));
+        if (i < r) std::swap(line[i], line[r]);
     }
     // Stage by stage: blocks of `span` samples, each two halves joined by span/2 butterflies.
     for (int span = 2; span <= n_; span *= 2) {
         const int step = n_ / span;  // w_span^j = w_N^(j step)
         for (int start = 0; start < n_; start += span)
             for (int j = 0; j < span / 2; ++j) {
-                const Complex w = sign < 0 ? twiddles_[std::size_t(j * step)] : std::conj(twiddles_[std::size_t(j * step)]);
-                Complex& even = at(start + j);
-                Complex& odd = at(start + j + span / 2);
-                const Complex turned = times(w, odd);
+                Complex& even = line[start + j];
+                Complex& odd = line[start + j + span / 2];
+                const Complex turned = times(w[j * step], odd);
                 odd = even - turned;
                 even += turned;
             }
     }
 }
 
-void Fft2d::transform(std::vector<Complex>& field, int sign) const {
+void Fft2d::transform_columns(Complex* field, const Complex* w) const {
+    const std::size_t n = std::size_t(n_);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t r = std::size_t(bit_reversed_[i]);
+        if (i < r) std::swap_ranges(field + i * n, field + (i + 1) * n, field + r * n);
+    }
+    for (int span = 2; span <= n_; span *= 2) {
+        const int step = n_ / span;
+        for (int start = 0; start < n_; start += span)
+            for (int j = 0; j < span / 2; ++j) {
+                // The same butterfly as a line's, for every column at once: row `even` against row `odd`.
+                Complex* even = field + std::size_t(start + j) * n;
+                Complex* odd = field + std::size_t(start + j + span / 2) * n;
+                const Complex twiddle = w[j * step];
+                for (std::size_t column = 0; column < n; ++column) {
+                    const Complex turned = times(twiddle, odd[column]);
+                    odd[column] = even[column] - turned;
+                    even[column] += turned;
+                }
+            }
+    }
+}
+
+void Fft2d::transform(std::vector<Complex>& field, int direction) const {
     if (field.size() != std::size_t(n_) * std::size_t(n_))
         throw ocean::Error("FFT of " + std::to_string(field.size()) + " samples, not " + std::to_string(n_) + " squared");
-    for (int row = 0; row < n_; ++row) transform_line(field.data() + std::ptrdiff_t(row) * n_, 1, sign);
-    // Each column copied into a line of its own and back: transformed in place, its samples n
-    // apart would each fall on another cache line.
-    std::vector<Complex> line(static_cast<std::size_t>(n_));
-    for (int column = 0; column < n_; ++column) {
-        for (int row = 0; row < n_; ++row) line[std::size_t(row)] = field[std::size_t(row) * std::size_t(n_) + std::size_t(column)];
-        transform_line(line.data(), 1, sign);
-        for (int row = 0; row < n_; ++row) field[std::size_t(row) * std::size_t(n_) + std::size_t(column)] = line[std::size_t(row)];
-    }
+    const Complex* w = twiddles_[direction].data();
+    for (int row = 0; row < n_; ++row) transform_line(field.data() + std::ptrdiff_t(row) * n_, w);
+    // The columns: their samples are n apart in memory, each on another cache line. So each
+    // column's butterflies are done for all columns together, a whole row against another, along
+    // memory.
+    transform_columns(field.data(), w);
 }
 
 }  // namespace step08

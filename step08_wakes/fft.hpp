@@ -24,16 +24,17 @@ public:
     int size() const { return n_; }
     // In place, on n x n samples, row (z) major. Forward: X[k] = sum_x x[x] e^{-2 pi i k x / N}
     // on each axis; inverse: the same with e^{+...}, unnormalised (inverse(forward(x)) = N^2 x).
-    void forward(std::vector<Complex>& field) const { transform(field, -1); }
-    void inverse(std::vector<Complex>& field) const { transform(field, +1); }
+    void forward(std::vector<Complex>& field) const { transform(field, 0); }
+    void inverse(std::vector<Complex>& field) const { transform(field, 1); }
 
 private:
-    void transform(std::vector<Complex>& field, int sign) const;
-    void transform_line(Complex* line, std::ptrdiff_t stride, int sign) const;
+    void transform(std::vector<Complex>& field, int direction) const;
+    void transform_line(Complex* line, const Complex* twiddles) const;
+    void transform_columns(Complex* field, const Complex* twiddles) const;
 
     int n_;
     std::vector<int> bit_reversed_;
-    std::vector<Complex> twiddles_;  // e^{-2 pi i j / N}, j < N/2
+    std::vector<Complex> twiddles_[2];  // e^{-2 pi i j / N} (forward) and e^{+2 pi i j / N} (inverse), j < N/2
 };
 
 }  // namespace step08
