@@ -38,15 +38,17 @@ void Fft2d::transform_line(Complex* line, const Complex* w) const {
         const int step = n_ / span;  // w_span^j = w_N^(j step)
         for (int start = 0; start < n_; start += span)
             for (int j = 0; j < span / 2; ++j) {
-                Complex& even = line[start + j];
-                Complex& odd = line[start + j + span / 2];
-                const Complex turned = times(w[j * step], odd);
-                odd = even - turned;
-                even += turned;
+                Complex& low = line[start + j];              // E[j], then X[j]
+                Complex& high = line[start + j + span / 2];  // O[j], then X[j + span/2]
+                const Complex turned = times(w[j * step], high);
+                high = low - turned;
+                low += turned;
             }
     }
 }
 
+// The columns' transforms, all at once: whole rows swapped into bit-reversed order, then each
+// butterfly done for every column, a row against another (its twiddle is the same for all).
 void Fft2d::transform_columns(Complex* field, const Complex* w) const {
     const std::size_t n = std::size_t(n_);
     for (std::size_t i = 0; i < n; ++i) {
@@ -57,14 +59,14 @@ void Fft2d::transform_columns(Complex* field, const Complex* w) const {
         const int step = n_ / span;
         for (int start = 0; start < n_; start += span)
             for (int j = 0; j < span / 2; ++j) {
-                // The same butterfly as a line's, for every column at once: row `even` against row `odd`.
-                Complex* even = field + std::size_t(start + j) * n;
-                Complex* odd = field + std::size_t(start + j + span / 2) * n;
+                // The same butterfly as a line's, for every column at once: row `low` against row `high`.
+                Complex* low = field + std::size_t(start + j) * n;
+                Complex* high = field + std::size_t(start + j + span / 2) * n;
                 const Complex twiddle = w[j * step];
                 for (std::size_t column = 0; column < n; ++column) {
-                    const Complex turned = times(twiddle, odd[column]);
-                    odd[column] = even[column] - turned;
-                    even[column] += turned;
+                    const Complex turned = times(twiddle, high[column]);
+                    high[column] = low[column] - turned;
+                    low[column] += turned;
                 }
             }
     }
@@ -76,8 +78,7 @@ void Fft2d::transform(std::vector<Complex>& field, int direction) const {
     const Complex* w = twiddles_[direction].data();
     for (int row = 0; row < n_; ++row) transform_line(field.data() + std::ptrdiff_t(row) * n_, w);
     // The columns: their samples are n apart in memory, each on another cache line. So each
-    // column's butterflies are done for all columns together, a whole row against another, along
-    // memory.
+    // butterfly is done for all columns together, a whole row against another, along memory.
     transform_columns(field.data(), w);
 }
 
