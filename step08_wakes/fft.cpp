@@ -50,7 +50,7 @@ void Fft2d::transform_line(Complex* line, const Complex* w) const {
 // The columns' transforms, all at once: whole rows swapped into bit-reversed order, then each
 // butterfly done for every column, a row against another (its twiddle is the same for all).
 void Fft2d::transform_columns(Complex* field, const Complex* w) const {
-    const std::size_t n = std::size_t(n_);
+    const std::size_t n = std::size_t(n_);  // n_, the transform's length, as a size
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t r = std::size_t(bit_reversed_[i]);
         if (i < r) std::swap_ranges(field + i * n, field + (i + 1) * n, field + r * n);
