@@ -23,6 +23,14 @@ namespace step08 {
 // there the waves it makes are the field's to carry (in the layer they would be damped under it).
 bool within_field(const WaveField& field, const step07::FloatingBody& body);
 
+// Whether a body's bottom faces the water: tilted less than kMaxContactTilt from level. The
+// contact reads and pushes the water under the bottom's points, about one a cell as the field sees
+// them from above; a bottom tilted further (a raft tossed on its side) crowds them, and the
+// contact's system grows singular (with random yaws and tilts up to 60 degrees it never did; past
+// 75 it did). A body tilted further floats on step07's Archimedes until it rights itself.
+constexpr double kMaxContactTilt = 45;  // degrees
+bool level_enough(const step07::FloatingBody& body);
+
 // A body's side of a contact: the points on its bottom where it is below the water, and the arms
 // from its centre of mass to them (world axes).
 struct HullInContact {
@@ -30,9 +38,10 @@ struct HullInContact {
     std::vector<glm::dvec3> arms;
 };
 
-// The points on a box's bottom face, about one a field cell: a grid of
-// round(side / cell) points along each of its horizontal sides, each at the middle of its share
-// of the face (body frame, from the centre of mass).
+// The points on a box's bottom face, about one a field cell: a grid of round(side / cell) points
+// along each of its horizontal sides, the side's length as the field sees it from above (shorter
+// when the box tilts), each at the middle of its share of the face (body frame, from the centre
+// of mass).
 std::vector<glm::dvec3> bottom_points(const step07::FloatingBody& body, double cell);
 
 // The contact of a box-shaped body that has just moved `h` seconds without the water's buoyancy:
@@ -59,7 +68,7 @@ void lift_out(WaveField& field, const step07::FloatingBody& body, const step07::
 // buoyancy over the sea going from `from` to `to` (sea_interval: the seconds between them, for the
 // water's velocity), the field steps with their contacts (one system: the bodies move apart, so
 // their compliances are blocks) and `forcing`, and each body is pushed. The bodies are given
-// within the field (within_field) and box-shaped.
+// within the field (within_field), level enough (level_enough) and box-shaped.
 void step_with_bodies(WaveField& field, const std::vector<step07::FloatingBody*>& bodies, const step07::Surface& from,
                       const step07::Surface& to, double h, double sea_interval, const Forcing& forcing = {});
 

@@ -11,6 +11,7 @@
 // the lesson's laboratory, where Kelvin's angle is measured.
 // Controls: step06's; the arrows (held) steer the boat; a left click drops a stone.
 #include "common/app.hpp"
+#include "common/error.hpp"
 #include "common/gpu_timer.hpp"
 #include "step06_foam_sky/look_params.hpp"
 #include "step06_foam_sky/post.hpp"
@@ -37,6 +38,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -163,7 +165,7 @@ private:
         step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval()};
         for (std::size_t b = 0; b < bodies_.size(); ++b) {
             const bool contact = b != step07::kBoat && bodies_[b].settings().shape.kind == step07::ShapeKind::Box &&
-                                 step08::within_field(wake_->field(), bodies_[b]);
+                                 step08::within_field(wake_->field(), bodies_[b]) && step08::level_enough(bodies_[b]);
             // A body coming into the field brings its dent with it: the water under it settled
             // where its hull is, as Archimedes held it (else the first step would push it all in);
             // one leaving takes its dent away (else the dent would fall back as a ring of waves).
@@ -172,7 +174,18 @@ private:
             bodies_[b].set_archimedes(!contact);
             if (contact) in_contact.bodies.push_back(&bodies_[b]);
         }
-        press(*wake_, boat, dt, &in_contact);
+        try {
+            press(*wake_, boat, dt, &in_contact);
+        } catch (const ocean::Error& failure) {
+            // Should a contact's system still be singular, the frame goes on without it: its bodies
+            // float on Archimedes (and try again next frame), rather than the program stopping.
+            if (!contact_failed_) std::cerr << "warning: " << failure.what() << "; the bodies in contact float on Archimedes this frame\n";
+            contact_failed_ = true;
+            for (step07::FloatingBody* body : in_contact.bodies) {
+                wake_->lift_out(*body, feed_.before());
+                body->set_archimedes(true);
+            }
+        }
         for (const glm::dvec2& stone : stones_) wake_->drop_stone(stone);
         stones_.clear();
         wake_before_ = std::move(wake_now_);
@@ -376,6 +389,7 @@ private:
     step06::LocalWaves local_waves_;
     step08::PlanView plan_view_;
     bool plan_ = false, follow_boat_ = true, show_wake_ = true;
+    bool contact_failed_ = false;  // warned once
     float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;
     int cells_choice_ = 1;
     double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held
