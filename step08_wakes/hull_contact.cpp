@@ -31,6 +31,11 @@ bool level_enough(const step07::FloatingBody& body) {
     return up.y > std::cos(kMaxContactTilt * ocean::kPi / 180);
 }
 
+bool can_touch(const WaveField& field, const step07::FloatingBody& body) {
+    return body.settings().shape.kind == step07::ShapeKind::Box && within_field(field, body) && level_enough(body) &&
+           bottom_points(body, field.settings().cell).size() <= kMaxContactPoints;
+}
+
 std::vector<glm::dvec3> bottom_points(const step07::FloatingBody& body, double cell) {
     const glm::dvec3 size = body.settings().shape.size;
     // As many points along a side as cells in its length seen from above: a tilted side is shorter

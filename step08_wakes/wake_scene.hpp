@@ -34,7 +34,7 @@ BoatSettings hull_of(double length, double submerged_volume);
 // step07's bodies a press carries along in its steps, in contact with the field (hull_contact.hpp):
 // each step moves them with the field, over the part of the frame it covers.
 struct BodiesInContact {
-    std::vector<step07::FloatingBody*> bodies;  // box-shaped, within the field
+    std::vector<step07::FloatingBody*> bodies;  // such as the contact takes (can_touch)
     const step07::Surface* before = nullptr;   // the incident sea at the frame's start and end
     const step07::Surface* now = nullptr;
     double sea_interval = 0;                   // seconds between those two seas

@@ -107,6 +107,27 @@ TEST(Step08HullContact, TheContactHoldsAtAnyYawAndTiltItTakes) {
     EXPECT_LT(highest, 6.0);
 }
 
+// The contact takes the default raft at the middle of the program's field, but not a raft tilted
+// past 45 degrees, one out in the absorbing layer, nor one with more points than its system
+// should solve every step (a 12 m raft on 25 cm cells: 48 x 48 points).
+TEST(Step08HullContact, TheContactTakesTheBodiesItCanHold) {
+    const step08::WaveField field(field_settings());
+    EXPECT_TRUE(step08::can_touch(field, step07::FloatingBody(raft_settings(), {0.25, 0, 0.25})));
+    EXPECT_FALSE(step08::can_touch(field, step07::FloatingBody(raft_settings(), {0.25, 0, 0.25},
+                                                               glm::angleAxis(glm::radians(50.0), glm::dvec3(1, 0, 0)))));
+    EXPECT_FALSE(step08::can_touch(field, step07::FloatingBody(raft_settings(), {29, 0, 0.25})));
+    step08::WaveFieldSettings fine;
+    fine.n = 256;
+    fine.cell = 0.25;
+    step07::BodySettings big = raft_settings();
+    big.shape.size = {12, 0.4, 12};
+    const step07::FloatingBody wide(big, {0.1, 0, 0.1});
+    EXPECT_EQ(step08::bottom_points(wide, fine.cell).size(), 48u * 48u);
+    EXPECT_FALSE(step08::can_touch(step08::WaveField(fine), wide));
+    big.shape.size = {5, 0.4, 5};
+    EXPECT_TRUE(step08::can_touch(step08::WaveField(fine), step07::FloatingBody(big, {0.1, 0, 0.1}))) << "400 points";
+}
+
 TEST(Step08HullContact, ABodyLeavingTakesItsDentAway) {
     // Settled under a raft (turned, off the cells' lattice), the field holds about the water it
     // displaces: its bottom's points read it where the bottom is, but the cells they read reach
