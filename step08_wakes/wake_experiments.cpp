@@ -1,5 +1,7 @@
 #include "step08_wakes/wake_experiments.hpp"
 
+#include "step08_wakes/source_hull.hpp"
+
 #include "common/constants.hpp"
 
 #include <algorithm>
@@ -182,6 +184,32 @@ HeaveRecord release_hemisphere(const HeaveRelease& r) {
         }
         v += (force / mass - g) * r.dt;  // semi-implicit Euler: the velocity, then the position with it
         z += v * r.dt;
+    }
+    return record;
+}
+
+HeaveRecord release_hemisphere_of_sources(const HeaveRelease& r) {
+    WaveField field(deep_field(r.n, r.cell, 0.2, 3));
+    SourceHullSettings settings;
+    settings.radius = r.radius;
+    const SourceHull hull(field, field.cell_centre(r.n / 2, r.n / 2), settings);
+    // Per unit density, as the contact: the mass is the volume, forces are over rho.
+    const double mass = hull.volume() + hull.added_mass(), spring = ocean::kGravity * hull.waterplane();
+    HeaveRecord record;
+    record.waterplane = hull.waterplane();
+    double z = r.lift, v = 0;
+    Forcing forcing;
+    const int steps = int(std::lround(r.seconds / r.dt));
+    for (int s = 0; s <= steps; ++s) {
+        record.time.push_back(s * r.dt);
+        record.height.push_back(z);
+        const SourceHull::Reading reading = r.with_waves ? hull.read(field) : SourceHull::Reading{};
+        v += (reading.wave_force - spring * z) / mass * r.dt;  // semi-implicit Euler, as the contact's
+        z += v * r.dt;
+        if (!r.with_waves) continue;
+        // The sources that give the hull this step's speed, held over the step as the field's source.
+        forcing.source = hull.surface_source(hull.strengths(reading, v));
+        field.step(r.dt, forcing);
     }
     return record;
 }

@@ -67,6 +67,12 @@ struct HeaveRecord {
     double waterplane = 0;             // m^2: the cells' area under the sphere at rest
 };
 HeaveRecord release_hemisphere(const HeaveRelease& release);
+// The same release with the hemisphere as sources on its wetted surface (source_hull.hpp, README
+// 8.4): linear theory's hull, heaving about its rest with the still water's spring rho g pi R^2
+// and the sources' added mass, pushed by the waves it makes. `with_waves` false: no field, the
+// spring and the added mass alone. `rest` is 0 (the flat face at the still water's level) and
+// `waterplane` pi R^2.
+HeaveRecord release_hemisphere_of_sources(const HeaveRelease& release);
 
 // A decaying oscillation read from its first `crests` crests after the release: the damped
 // period, the damping ratio (from the logarithmic decrement delta between successive crests,

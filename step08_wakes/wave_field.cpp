@@ -142,14 +142,15 @@ void WaveField::turn(double dt, const Forcing& forcing) {
     if (!(dt > 0) || !std::isfinite(dt)) throw ocean::Error("wave field: a step must last a positive time");
     const int n = settings_.n;
     const std::size_t cells = eta_.size();
-    const bool pushed = !forcing.pressure.empty();
-    if (pushed && forcing.pressure.size() != cells) throw ocean::Error("wave field: forcing of the wrong size");
+    const bool pressed = !forcing.pressure.empty(), fed = !forcing.source.empty();
+    if ((pressed && forcing.pressure.size() != cells) || (fed && forcing.source.size() != cells))
+        throw ocean::Error("wave field: forcing of the wrong size");
     for (std::size_t c = 0; c < cells; ++c) work_[c] = Complex(eta_[c], phi_[c]);
     fft_.forward(work_);
-    if (pushed) {
+    if (pressed || fed) {  // both real fields in one transform, as the field's own two
         forcing_work_.resize(cells);
         for (std::size_t c = 0; c < cells; ++c)
-            forcing_work_[c] = forcing.pressure[c];
+            forcing_work_[c] = Complex(pressed ? forcing.pressure[c] : 0.0, fed ? forcing.source[c] : 0.0);
         fft_.forward(forcing_work_);
     }
     // Each pair (k, -k) at once: both are read before either is written.
@@ -163,8 +164,10 @@ void WaveField::turn(double dt, const Forcing& forcing) {
             for (int side = 0; side < (a == b ? 1 : 2); ++side) {
                 const std::size_t here = side == 0 ? a : b;
                 const TwoSpectra field = side == 0 ? separate(at_a, at_b) : separate(at_b, at_a);
-                const Complex pressure = pushed ? forcing_work_[here] : Complex(0.0);  // a real field's transform
-                const Mode turned = turn_mode({field.first, field.second}, speed_factor_[here], dt, pressure, 0.0);
+                const TwoSpectra push = !(pressed || fed) ? TwoSpectra{}
+                                        : side == 0 ? separate(forcing_work_[a], forcing_work_[b])
+                                                    : separate(forcing_work_[b], forcing_work_[a]);
+                const Mode turned = turn_mode({field.first, field.second}, speed_factor_[here], dt, push.first, push.second);
                 (side == 0 ? out_a : out_b) = turned.eta + times_i(turned.phi);
             }
             work_[a] = out_a;

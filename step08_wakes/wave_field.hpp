@@ -12,7 +12,8 @@
 //     E = rho / 2 * integral of (g eta^2 + phi K phi)    (potential + kinetic)
 // is kept to rounding. A pressure held constant over a step is integrated exactly too: the
 // constant solution (eta = -P / g) is taken away, the rest turned, and added back (turn_mode,
-// which also takes a source s; everything in this chapter pushes with pressure).
+// which also takes a source s: the bodies and stones push with pressure, a hull of sources (README
+// 8.6) puts water in).
 //
 // The grid is periodic (the FFT's), so a wave leaving at one edge would come back at the other:
 // an absorbing layer damps eta and phi near the edges (README 8.3). The grid follows the boat by
@@ -49,10 +50,11 @@ void solve_symmetric(std::vector<double>& a, std::vector<double>& b, std::size_t
 double vertical_speed_factor(double wavenumber, double depth);
 
 // What pushes the water during one step, one value a cell (row (z) major), held constant over it;
-// an empty vector is none. (The boat, the stones and the bodies all push with pressure: turn_mode's
-// volume source is the same mathematics, which no part of the program needs.)
+// an empty vector is none. (The boat, the stones and the bodies in contact push with pressure; the
+// hemisphere of sources under the surface, README 8.6, puts water in at it.)
 struct Forcing {
     std::vector<double> pressure;  // p / rho, m^2/s^2: a pressure on the surface
+    std::vector<double> source;    // m/s: water put in at the surface, a volume per area and second
 };
 
 // A body in contact with the water (README 8.4): at M points under its hull the surface must end

@@ -121,6 +121,41 @@ TEST(Step08WaveField, KeepsItsEnergyAtAnyStep) {
     }
 }
 
+// A volume source puts in the water it is given (the mean level rises by its volume over the grid's
+// area), a pressure none; and the two, sent through one transform, each act as if alone (the field
+// is linear: together, the sum of the two fields alone, to rounding).
+TEST(Step08WaveField, ASourcePutsInTheWaterItIsGiven) {
+    step08::WaveFieldSettings s;
+    s.n = 32;
+    s.absorbing_width = 0;
+    const std::size_t cells = std::size_t(s.n) * std::size_t(s.n);
+    step08::Forcing source, pressure, both;
+    source.source.assign(cells, 0.0);
+    pressure.pressure.assign(cells, 0.0);
+    for (int j = 10; j < 14; ++j)
+        for (int i = 5; i < 9; ++i) source.source[std::size_t(j * s.n + i)] = 0.02;  // m/s over 16 cells
+    pressure.pressure[std::size_t(20 * s.n + 20)] = 3.0;
+    both.source = source.source, both.pressure = pressure.pressure;
+    step08::WaveField fed(s), pressed(s), together(s);
+    const double dt = 1.0 / 60;
+    const int steps = 90;
+    for (int step = 0; step < steps; ++step) fed.step(dt, source), pressed.step(dt, pressure), together.step(dt, both);
+    const auto volume = [&](const step08::WaveField& f) {
+        double v = 0;
+        for (double h : f.heights()) v += h * s.cell * s.cell;
+        return v;
+    };
+    const double given = 16 * 0.02 * s.cell * s.cell * steps * dt;
+    EXPECT_NEAR(volume(fed), given, 1e-9 * given);
+    EXPECT_NEAR(volume(pressed), 0.0, 1e-9 * given);
+    double worst = 0, largest = 0;
+    for (std::size_t c = 0; c < cells; ++c) {
+        worst = std::max(worst, std::abs(together.heights()[c] - fed.heights()[c] - pressed.heights()[c]));
+        largest = std::max(largest, std::abs(together.heights()[c]));
+    }
+    EXPECT_LT(worst, 1e-12 * largest);
+}
+
 // Cauchy-Poisson: t seconds after a stone, the crests at radius r have the local wavenumber
 // k = g t^2 / (4 r^2) (the waves that reach r at time t are those whose group velocity is r / t).
 // Between successive crests r1 < r2, k's mean is g t^2 / (4 r1 r2), and their spacing 2 pi over it.
