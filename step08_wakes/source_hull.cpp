@@ -179,9 +179,10 @@ SourceHull::Reading SourceHull::read(const WaveField& field) const {
     return r;
 }
 
-std::vector<double> SourceHull::strengths(const Reading& reading, double heave_speed) const {
+std::vector<double> SourceHull::strengths(const Reading& reading, double heave_speed, double ahead) const {
     std::vector<double> rhs(static_cast<std::size_t>(bands_));
-    for (std::size_t b = 0; b < rhs.size(); ++b) rhs[b] = heave_speed * band_normal_y_[b] - reading.normal_speed[b];
+    for (std::size_t b = 0; b < rhs.size(); ++b)
+        rhs[b] = heave_speed * band_normal_y_[b] - (reading.normal_speed[b] + ahead * reading.normal_rate[b]);
     return solve(rhs);
 }
 

@@ -59,9 +59,10 @@ public:
     };
     Reading read(const WaveField& field) const;
     // The sources' strengths (m/s, per band) that give the hull heaving upwards at `heave_speed`
-    // (m/s) its own speed along its normal, the field's flow of `reading` added; and what they put
-    // through the surface, a value a cell (m/s), for Forcing::source.
-    std::vector<double> strengths(const Reading& reading, double heave_speed) const;
+    // (m/s) its own speed along its normal, the field's flow added as `reading` has it `ahead`
+    // seconds on (its rate times `ahead`: half a step, to hold the step's middle over the step);
+    // and what they put through the surface, a value a cell (m/s), for Forcing::source.
+    std::vector<double> strengths(const Reading& reading, double heave_speed, double ahead) const;
     std::vector<double> surface_source(const std::vector<double>& strengths) const;
 
 private:

@@ -208,10 +208,48 @@ HeaveRecord release_hemisphere_of_sources(const HeaveRelease& r) {
         z += v * r.dt;
         if (!r.with_waves) continue;
         // The sources that give the hull this step's speed, held over the step as the field's source.
-        forcing.source = hull.surface_source(hull.strengths(reading, v));
+        forcing.source = hull.surface_source(hull.strengths(reading, v, 0.5 * r.dt));
         field.step(r.dt, forcing);
     }
     return record;
+}
+
+HeaveCoefficients force_hemisphere_of_sources(const HeaveRelease& r, double nu, int periods) {
+    WaveField field(deep_field(r.n, r.cell, 0.2, 3));
+    SourceHullSettings settings;
+    settings.radius = r.radius;
+    const SourceHull hull(field, field.cell_centre(r.n / 2, r.n / 2), settings);
+    const double omega = std::sqrt(nu * ocean::kGravity / r.radius), period = ocean::kTwoPi / omega, amplitude = 0.05;
+    // z = amplitude e(t) sin(omega t), e rising as 3x^2 - 2x^3 over two periods (x = t / 2T), then 1.
+    const double ramp = 2 * period;
+    const auto speed = [&](double t) {
+        const double x = std::min(1.0, t / ramp), e = x * x * (3 - 2 * x), de = 6 * x * (1 - x) / ramp;
+        return amplitude * (de * std::sin(omega * t) + e * omega * std::cos(omega * t));
+    };
+    const auto acceleration = [&](double t) {
+        const double x = std::min(1.0, t / ramp), e = x * x * (3 - 2 * x);
+        const double de = 6 * x * (1 - x) / ramp, dde = x < 1 ? (6 - 12 * x) / (ramp * ramp) : 0.0;
+        return amplitude * ((dde - e * omega * omega) * std::sin(omega * t) + 2 * de * omega * std::cos(omega * t));
+    };
+    // The force's parts in phase with sin and cos, over whole periods at the end.
+    double with_sin = 0, with_cos = 0, span = 0;
+    const double from = (periods - 4) * period, to = periods * period;
+    Forcing forcing;
+    for (int s = 0; s * r.dt < to; ++s) {
+        const double t = s * r.dt;
+        const SourceHull::Reading reading = hull.read(field);
+        const double force = reading.wave_force - hull.added_mass() * acceleration(t);  // the water's, over rho
+        if (t >= from) {
+            with_sin += force * std::sin(omega * t) * r.dt;
+            with_cos += force * std::cos(omega * t) * r.dt;
+            span += r.dt;
+        }
+        forcing.source = hull.surface_source(hull.strengths(reading, speed(t + 0.5 * r.dt), 0.5 * r.dt));
+        field.step(r.dt, forcing);
+    }
+    // force = -A z'' - B z' = A amplitude omega^2 sin - B amplitude omega cos (the ramp over).
+    const double in_sin = 2 * with_sin / span, in_cos = 2 * with_cos / span;
+    return {nu, in_sin / (amplitude * omega * omega) / hull.volume(), -in_cos / (amplitude * omega) / (hull.volume() * omega)};
 }
 
 Decay measure_decay(const HeaveRecord& record, int crests) {

@@ -74,6 +74,17 @@ HeaveRecord release_hemisphere(const HeaveRelease& release);
 // `waterplane` pi R^2.
 HeaveRecord release_hemisphere_of_sources(const HeaveRelease& release);
 
+// Hulme's own experiment: the hemisphere of sources made to heave as amplitude * sin(omega t) at
+// nu = omega^2 R / g (its amplitude brought up smoothly over two periods), on the field of
+// `release` (its radius, grid and dt; lift and with_waves unused). The water's force on it over the
+// last four of `periods` periods, split into the part in phase with its acceleration (the added
+// mass) and the part in phase with its speed (the damping), in Hulme's units: A / (rho V) and
+// B / (rho V omega), V = 2/3 pi R^3.
+struct HeaveCoefficients {
+    double nu = 0, added_mass = 0, damping = 0;
+};
+HeaveCoefficients force_hemisphere_of_sources(const HeaveRelease& release, double nu, int periods);
+
 // A decaying oscillation read from its first `crests` crests after the release: the damped
 // period, the damping ratio (from the logarithmic decrement delta between successive crests,
 // zeta = delta / sqrt(4 pi^2 + delta^2)) and the undamped angular frequency.

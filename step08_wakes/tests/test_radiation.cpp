@@ -92,6 +92,21 @@ TEST(Step08Radiation, AHemisphereOfSourcesDecaysAsHulmePredicts) {
     EXPECT_NEAR(model.added_mass / hulme.added_mass, 1.0, 0.3);
 }
 
+// Hulme's own experiment, forced heave at three frequencies: the force in phase with the
+// acceleration (added mass) and with the speed (damping), against his table, within 5 %.
+TEST(Step08Radiation, AHemisphereOfSourcesForcedToHeaveFeelsHulmesForces) {
+    step08::HeaveRelease release;
+    release.dt = 1.0 / 30;
+    for (double nu : {0.6, 1.0, 1.4}) {
+        const step08::HeaveCoefficients model = step08::force_hemisphere_of_sources(release, nu, 8);
+        const HulmeRow hulme = hulme_at(nu);
+        std::cout << "forced, nu " << nu << ": added mass " << model.added_mass << " (Hulme " << hulme.added_mass << "), damping "
+                  << model.damping << " (Hulme " << hulme.damping << ")" << std::endl;
+        EXPECT_NEAR(model.added_mass / hulme.added_mass, 1.0, 0.05) << "nu " << nu;
+        EXPECT_NEAR(model.damping / hulme.damping, 1.0, 0.05) << "nu " << nu;
+    }
+}
+
 TEST(Step08Radiation, WithoutItsWavesTheHemisphereOfSourcesRingsForEver) {
     step08::HeaveRelease release;
     release.with_waves = false;
