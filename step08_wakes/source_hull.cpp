@@ -12,6 +12,8 @@ namespace step08 {
 namespace {
 
 constexpr double g = ocean::kGravity;
+// The image's strength against its source's: -1, a sink, keeps phi = 0 on the surface.
+constexpr double kImageStrength = -1;
 
 // A piece of the hull: its middle (x, y up, z), its normal out of the hull into the water, its area.
 struct Piece {
@@ -67,13 +69,14 @@ SourceHull::SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHu
         influence_[i * n + i] += 0.5;
         const Piece& m = middles[i];
         for (const Piece& q : parts)
-            for (double sign : {1.0, -1.0}) {
-                const glm::dvec3 source = sign > 0 ? q.at : glm::dvec3(q.at.x, -q.at.y, q.at.z);
+            for (int mirrored = 0; mirrored < 2; ++mirrored) {
+                const glm::dvec3 source = mirrored ? glm::dvec3(q.at.x, -q.at.y, q.at.z) : q.at;
+                const double strength = mirrored ? kImageStrength : 1.0;
                 const glm::dvec3 d = m.at - source;
                 const double r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
                 const std::size_t ij = i * n + std::size_t(q.band);
-                potential_[ij] += -sign * q.area / (4 * ocean::kPi * r);
-                influence_[ij] += sign * q.area * (d.x * m.normal.x + d.y * m.normal.y + d.z * m.normal.z) / (4 * ocean::kPi * r * r * r);
+                potential_[ij] += -strength * q.area / (4 * ocean::kPi * r);
+                influence_[ij] += strength * q.area * (d.x * m.normal.x + d.y * m.normal.y + d.z * m.normal.z) / (4 * ocean::kPi * r * r * r);
             }
     }
     // Heaving at unit speed, the hull's speed along its normal is its normal's vertical part; the
