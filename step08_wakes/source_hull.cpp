@@ -14,6 +14,9 @@ namespace {
 constexpr double g = ocean::kGravity;
 // The image's strength against its source's: -1, a sink, keeps phi = 0 on the surface.
 constexpr double kImageStrength = -1;
+// The share of a source's water that goes through the surface, its image's answer included: a
+// source sends half up; a sink above pulls as much again up (all of it), a source pushes it back.
+constexpr double kThroughSurface = 0.5 * (1 - kImageStrength);
 
 // A piece of the hull: its middle (x, y up, z), its normal out of the hull into the water, its area.
 struct Piece {
@@ -109,7 +112,7 @@ SourceHull::SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHu
                 const auto b = std::size_t(q.band);
                 normal_read_[b][mode] += share * times(Complex(length * q.normal.y, k.x * q.normal.x + k.y * q.normal.z), wave);
                 potential_read_[b][mode] += share * wave;
-                put[b][mode] += q.area * down / cell_area * std::conj(wave);
+                put[b][mode] += kThroughSurface * q.area * down / cell_area * std::conj(wave);
             }
         }
     source_pattern_.assign(n, std::vector<double>(modes));

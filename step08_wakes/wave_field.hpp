@@ -13,7 +13,7 @@
 // is kept to rounding. A pressure held constant over a step is integrated exactly too: the
 // constant solution (eta = -P / g) is taken away, the rest turned, and added back (turn_mode,
 // which also takes a source s: the bodies and stones push with pressure, a hull of sources (README
-// 8.6) puts water in).
+// 8.4) puts water in).
 //
 // The grid is periodic (the FFT's), so a wave leaving at one edge would come back at the other:
 // an absorbing layer damps eta and phi near the edges (README 8.3). The grid follows the boat by
@@ -51,7 +51,7 @@ double vertical_speed_factor(double wavenumber, double depth);
 
 // What pushes the water during one step, one value a cell (row (z) major), held constant over it;
 // an empty vector is none. (The boat, the stones and the bodies in contact push with pressure; the
-// hemisphere of sources under the surface, README 8.6, puts water in at it.)
+// hemisphere of sources under the surface, README 8.4, puts water in at it.)
 struct Forcing {
     std::vector<double> pressure;  // p / rho, m^2/s^2: a pressure on the surface
     std::vector<double> source;    // m/s: water put in at the surface, a volume per area and second
