@@ -3,6 +3,7 @@
 #include "step08_wakes/source_hull.hpp"
 
 #include "common/constants.hpp"
+#include "common/error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -215,6 +216,7 @@ HeaveRecord release_hemisphere_of_sources(const HeaveRelease& r) {
 }
 
 HeaveCoefficients force_hemisphere_of_sources(const HeaveRelease& r, double nu, int periods) {
+    if (periods < 6 || !(nu > 0)) throw ocean::Error("forced heave: it needs a frequency and six periods (two to start, four to measure)");
     WaveField field(deep_field(r.n, r.cell, 0.2, 3));
     SourceHullSettings settings;
     settings.radius = r.radius;

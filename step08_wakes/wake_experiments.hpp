@@ -77,7 +77,7 @@ HeaveRecord release_hemisphere_of_sources(const HeaveRelease& release);
 // Hulme's own experiment: the hemisphere of sources made to heave as amplitude * sin(omega t) at
 // nu = omega^2 R / g (its amplitude brought up smoothly over two periods), on the field of
 // `release` (its radius, grid and dt; lift and with_waves unused). The water's force on it over the
-// last four of `periods` periods, split into the part in phase with its acceleration (the added
+// last four of `periods` periods (six or more, else ocean::Error), split into the part in phase with its acceleration (the added
 // mass) and the part in phase with its speed (the damping), in Hulme's units: A / (rho V) and
 // B / (rho V omega), V = 2/3 pi R^3.
 struct HeaveCoefficients {
