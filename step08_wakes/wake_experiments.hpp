@@ -74,12 +74,12 @@ HeaveRecord release_hemisphere(const HeaveRelease& release);
 // `waterplane` pi R^2.
 HeaveRecord release_hemisphere_of_sources(const HeaveRelease& release);
 
-// Hulme's own experiment: the hemisphere of sources made to heave as amplitude * sin(omega t) at
+// Hulme's own experiment: the hemisphere of sources made to heave 5 cm as sin(omega t) at
 // nu = omega^2 R / g (its amplitude brought up smoothly over two periods), on the field of
-// `release` (its radius, grid and dt; lift and with_waves unused). The water's force on it over the
-// last four of `periods` periods (six or more, else ocean::Error), split into the part in phase with its acceleration (the added
-// mass) and the part in phase with its speed (the damping), in Hulme's units: A / (rho V) and
-// B / (rho V omega), V = 2/3 pi R^3.
+// `release` (its radius, grid and dt; lift and with_waves unused). The water's force on it over
+// the last four of `periods` periods (six or more, else ocean::Error), split into the part in
+// phase with its acceleration (the added mass) and the part in phase with its speed (the
+// damping), in Hulme's units: A / (rho V) and B / (rho V omega), V = 2/3 pi R^3.
 struct HeaveCoefficients {
     double nu = 0, added_mass = 0, damping = 0;
 };
