@@ -17,6 +17,22 @@ namespace {
 // Half the body's diagonal: no point of it is further from its centre.
 double reach(const step07::FloatingBody& body) { return 0.5 * glm::length(body.settings().shape.size); }
 
+// How many points bottom_points puts along a box's x side and across its z side: as many as cells
+// in the side's length seen from above. A tilted side is shorter on the field, and points closer
+// than a cell there would read the same cells alike, making the contact's system singular (ten
+// points a side did at a tilt of 40 degrees).
+struct BottomGrid {
+    int along, across;
+};
+BottomGrid bottom_grid(const step07::FloatingBody& body, double cell) {
+    const glm::dvec3 size = body.settings().shape.size;
+    const auto points_along = [&](glm::dvec3 axis, double length) {
+        const glm::dvec3 side = body.orientation() * axis;
+        return std::max(1, int(std::lround(length * std::hypot(side.x, side.z) / cell)));
+    };
+    return {points_along({1, 0, 0}, size.x), points_along({0, 0, 1}, size.z)};
+}
+
 }  // namespace
 
 bool within_field(const WaveField& field, const step07::FloatingBody& body) {
@@ -32,20 +48,14 @@ bool level_enough(const step07::FloatingBody& body) {
 }
 
 bool can_touch(const WaveField& field, const step07::FloatingBody& body) {
-    return body.settings().shape.kind == step07::ShapeKind::Box && within_field(field, body) && level_enough(body) &&
-           bottom_points(body, field.settings().cell).size() <= kMaxContactPoints;
+    if (body.settings().shape.kind != step07::ShapeKind::Box || !within_field(field, body) || !level_enough(body)) return false;
+    const BottomGrid grid = bottom_grid(body, field.settings().cell);
+    return std::size_t(grid.along) * std::size_t(grid.across) <= kMaxContactPoints;
 }
 
 std::vector<glm::dvec3> bottom_points(const step07::FloatingBody& body, double cell) {
     const glm::dvec3 size = body.settings().shape.size;
-    // As many points along a side as cells in its length seen from above: a tilted side is shorter
-    // on the field, and points closer than a cell there would read the same cells alike, making
-    // the contact's system singular (ten points a side did at a tilt of 40 degrees).
-    const auto points_along = [&](glm::dvec3 axis, double length) {
-        const glm::dvec3 side = body.orientation() * axis;
-        return std::max(1, int(std::lround(length * std::hypot(side.x, side.z) / cell)));
-    };
-    const int along = points_along({1, 0, 0}, size.x), across = points_along({0, 0, 1}, size.z);
+    const auto [along, across] = bottom_grid(body, cell);
     std::vector<glm::dvec3> points;
     for (int b = 0; b < across; ++b)
         for (int a = 0; a < along; ++a)
