@@ -1,8 +1,10 @@
 // step08_wakes' exercises (./ocean exercise step08_wakes N): one Fourier mode's exact step (C++, held
-// to mode_step.cpp's turn_mode) and Kelvin's angle from the group velocity (C++, held to
-// kelvin.cpp's kelvin_edge_angle). The exercise tool (exercises/) gathers every chapter's.
+// to mode_step.cpp's turn_mode), Kelvin's angle from the group velocity (C++, held to kelvin.cpp's
+// kelvin_edge_angle) and a source with its image (C++, held to image_source.cpp's
+// source_with_image). The exercise tool (exercises/) gathers every chapter's.
 #include "exercises/exercise.hpp"
 
+#include "step08_wakes/image_source.hpp"
 #include "step08_wakes/kelvin.hpp"
 #include "step08_wakes/mode_step.hpp"
 
@@ -67,13 +69,56 @@ int main(int argc, char** argv) {
 // Exercise 2's cases: ratios c_g / c from 0.05 to 1.2 (beyond 1: no edge).
 double ratio_of(int index) { return 0.05 + 1.15 * index / 99.0; }
 std::vector<double> kelvin_reference(int index) { return {step08::kelvin_edge_angle(ratio_of(index))}; }
-const char* kKelvinDriver = R"(#include "step08_wakes/kelvin.hpp"
+const char* kKelvinDriver = R"(#include "step08_wakes/image_source.hpp"
+#include "step08_wakes/kelvin.hpp"
 #include <cstdio>
 #include <cstdlib>
 int main(int argc, char** argv) {
     const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
     for (int index = 0; index < cases; ++index)
         std::printf("%.17g\n", step08::kelvin_edge_angle(0.05 + 1.15 * index / 99.0));
+}
+)";
+
+// Exercise 3's cases: a source under the surface (0.05 to 2 m down), a point of the water near it
+// (within 3 m, under the surface), a random unit direction; all from one seed per case.
+struct SourceCase {
+    glm::dvec3 x, xi, n;
+};
+SourceCase source_case(int index) {
+    std::mt19937 random(std::uint32_t(3000 + index));
+    std::uniform_real_distribution<double> unit(-1, 1), zero_one(0, 1);
+    SourceCase c;
+    c.xi = {unit(random), -0.05 - 1.95 * zero_one(random), unit(random)};
+    c.x = {c.xi.x + 3 * unit(random), -0.01 - 2.99 * zero_one(random), c.xi.z + 3 * unit(random)};
+    c.n = {unit(random), unit(random), unit(random)};
+    const double length = std::sqrt(c.n.x * c.n.x + c.n.y * c.n.y + c.n.z * c.n.z);
+    c.n = length > 1e-3 ? c.n / length : glm::dvec3(0, 1, 0);
+    return c;
+}
+std::vector<double> source_reference(int index) {
+    const SourceCase c = source_case(index);
+    const step08::SourceAt at = step08::source_with_image(c.x, c.xi, c.n);
+    return {at.potential, at.along};
+}
+const char* kSourceDriver = R"(#include "step08_wakes/image_source.hpp"
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+int main(int argc, char** argv) {
+    const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
+    for (int index = 0; index < cases; ++index) {
+        std::mt19937 random(std::uint32_t(3000 + index));
+        std::uniform_real_distribution<double> unit(-1, 1), zero_one(0, 1);
+        glm::dvec3 xi(unit(random), -0.05 - 1.95 * zero_one(random), unit(random));
+        glm::dvec3 x(xi.x + 3 * unit(random), -0.01 - 2.99 * zero_one(random), xi.z + 3 * unit(random));
+        glm::dvec3 n(unit(random), unit(random), unit(random));
+        const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        n = length > 1e-3 ? n / length : glm::dvec3(0, 1, 0);
+        const step08::SourceAt at = step08::source_with_image(x, xi, n);
+        std::printf("%.17g %.17g\n", at.potential, at.along);
+    }
 }
 )";
 
@@ -111,14 +156,36 @@ std::vector<Exercise> chapter() {
          "carry their energy at n times that speed (n = c_g / c, the argument: 1/2 in deep water).\n"
          "Where does that energy lie now, for every theta? Find the curve, then the angle from the\n"
          "boat within which every such curve (for every t) is seen. Where none exists (the boat inside\n"
-         "the curve), return pi / 2. With n = 1/2 you should find 19.47 degrees; the program draws its\n"
-         "kelvin_lines at your angle. ./ocean check compares n from 0.05 to 1.2.",
+         "the curve), return pi / 2. With n = 1/2 you should find 19.47 degrees, the angle of the\n"
+         "program's kelvin_lines (--set plan=true --set kelvin_lines=true). ./ocean check compares n\n"
+         "from 0.05 to 1.2.",
          "The energy lies at P + n U t cos(theta) (cos theta, sin theta): a circle through P. Its centre "
          "and radius give the angle of the tangent from the boat, which is U t ahead of P.",
          "sin(alpha) = (n / 2) / (1 - n / 2); alpha = asin of it for n < 1, pi / 2 otherwise",
          {"--set", "kelvin_lines=true"},
          [](const fs::path& work) {
              return check_cpp(work, "kelvin.cpp", kKelvinDriver, 100, kelvin_reference, 1e-12);
+         }},
+        {"step08_wakes", 3, "A source and its image", "image_source.cpp",
+         "SourceAt source_with_image(glm::dvec3 x, glm::dvec3 xi, glm::dvec3 n) {",
+         "    // TODO (exercise 3): the potential and the flow along n of a unit source and its image.\n"
+         "    (void)x, (void)xi, (void)n;\n"
+         "    return {};\n",
+         "Write source_with_image (C++, in image_source.cpp; section 4, a hull under the surface): a\n"
+         "source at xi under the surface y = 0 puts out 1 m^3 of water a second. Its image at xi mirrored\n"
+         "in the surface has the strength kImageStrength (-1: a sink), so that the potential is 0 on the\n"
+         "surface, as it is at the instant of a sudden motion. Return the potential of both at the\n"
+         "point x, and their flow along the unit vector n there. The hull of sources sums this over its\n"
+         "panels: without it the hemisphere carries no water with it. ./ocean check\n"
+         "compares 300 random points, sources and directions.",
+         "A source's water goes out evenly through every sphere round it: at distance r, 1 / (4 pi r^2) "
+         "m/s, pointing away from it, the gradient of -1 / (4 pi r). The image is the same with its own "
+         "strength, from its own place: add the two.",
+         "d = x - xi, d' = x - (xi.x, -xi.y, xi.z); potential = -1 / (4 pi |d|) - kImageStrength / (4 pi |d'|); "
+         "along = n . d / (4 pi |d|^3) + kImageStrength n . d' / (4 pi |d'|^3)",
+         {},
+         [](const fs::path& work) {
+             return check_cpp(work, "image_source.cpp", kSourceDriver, 300, source_reference, 1e-12);
          }},
     };
 }

@@ -1,5 +1,7 @@
 #include "step08_wakes/source_hull.hpp"
 
+#include "step08_wakes/image_source.hpp"
+
 #include "common/constants.hpp"
 #include "common/error.hpp"
 
@@ -12,8 +14,6 @@ namespace step08 {
 namespace {
 
 constexpr double g = ocean::kGravity;
-// The image's strength against its source's: -1, a sink, keeps phi = 0 on the surface.
-constexpr double kImageStrength = -1;
 // The share of a source's water that goes through the surface, its image's answer included: a
 // source sends half up; a sink above pulls as much again up (all of it), a source pushes it back.
 constexpr double kThroughSurface = 0.5 * (1 - kImageStrength);
@@ -61,26 +61,21 @@ SourceHull::SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHu
     }
     for (int b = 0; b < bands_; ++b) band_normal_y_[std::size_t(b)] /= band_area_[std::size_t(b)];
 
-    // The instantaneous part: a unit source at q and its image sink at q mirrored above the surface,
-    // potential (-1/r + 1/r') / (4 pi). A sheet of sources sends half its water to each side, so a
-    // band's own panel also gets 1/2 of its strength along its normal (the rest are sums over parts;
-    // the part nearest a band's point is half a part away, and 1/r is integrable).
+    // The instantaneous part: a unit source at each part with its image sink mirrored above the
+    // surface (image_source.hpp). A sheet of sources sends half its water to each side, so a band's
+    // own panel also gets 1/2 of its strength along its normal (the rest are sums over parts: the
+    // part nearest a band's point is half a part away, and 1/r is integrable).
     const auto n = std::size_t(bands_);
     influence_.assign(n * n, 0.0);
     potential_.assign(n * n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
         influence_[i * n + i] += 0.5;
         const Piece& m = middles[i];
-        for (const Piece& q : parts)
-            for (int mirrored = 0; mirrored < 2; ++mirrored) {
-                const glm::dvec3 source = mirrored ? glm::dvec3(q.at.x, -q.at.y, q.at.z) : q.at;
-                const double strength = mirrored ? kImageStrength : 1.0;
-                const glm::dvec3 d = m.at - source;
-                const double r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-                const std::size_t ij = i * n + std::size_t(q.band);
-                potential_[ij] += -strength * q.area / (4 * ocean::kPi * r);
-                influence_[ij] += strength * q.area * (d.x * m.normal.x + d.y * m.normal.y + d.z * m.normal.z) / (4 * ocean::kPi * r * r * r);
-            }
+        for (const Piece& q : parts) {
+            const SourceAt unit = source_with_image(m.at, q.at, m.normal);
+            potential_[i * n + std::size_t(q.band)] += q.area * unit.potential;
+            influence_[i * n + std::size_t(q.band)] += q.area * unit.along;
+        }
     }
     // Heaving at unit speed, the hull's speed along its normal is its normal's vertical part; the
     // pressure -rho dphi/dt of the strengths that follow it, summed over the hull, is the added mass.

@@ -46,6 +46,8 @@ refuses force-without-torque step07_buoyancy 2 hull_forces.cpp '    return {};' 
 refuses mode-without-sources step08_wakes 1 mode_step.cpp '    return mode;' '    if (K == 0) return mode; const double w = std::sqrt(9.81 * K); return {mode.eta * std::cos(w * dt) + (K / w) * mode.phi * std::sin(w * dt), mode.phi * std::cos(w * dt) - (9.81 / w) * mode.eta * std::sin(w * dt)};'
 # Kelvin's angle with the energy at the phase speed (n taken as 1 everywhere): every wake 90 degrees.
 refuses kelvin-phase-speed step08_wakes 2 kelvin.cpp '    return 0;' '    return std::asin(1.0);' 'value 0'
+# The image a source instead of a sink (a rigid lid): phi is no longer 0 on the surface.
+refuses rigid-lid-image step08_wakes 3 image_source.cpp '    return {};' '    SourceAt at; for (int m = 0; m < 2; ++m) { const glm::dvec3 d = x - (m ? glm::dvec3(xi.x, -xi.y, xi.z) : xi); const double r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z); at.potential += -1 / (4 * ocean::kPi * r); at.along += (d.x * n.x + d.y * n.y + d.z * n.z) / (4 * ocean::kPi * r * r * r); } return at;' 'value 0'
 # The notes' Fresnel, F = (1 - cos theta)^5, forgets F0.
 refuses notes-fresnel step06_foam_sky 1 shading.glsl '    return 0.0;' '    return pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);'
 # The notes' 2.2 slope, cos(x w + phase) without w a.

@@ -1,0 +1,23 @@
+#include "step08_wakes/image_source.hpp"
+
+#include "common/constants.hpp"
+
+#include <cmath>
+
+namespace step08 {
+
+SourceAt source_with_image(glm::dvec3 x, glm::dvec3 xi, glm::dvec3 n) {
+    SourceAt at;
+    for (int mirrored = 0; mirrored < 2; ++mirrored) {
+        // A source of strength q at s: potential -q / (4 pi r), flow q (x - s) / (4 pi r^3), outwards.
+        const glm::dvec3 s = mirrored ? glm::dvec3(xi.x, -xi.y, xi.z) : xi;
+        const double q = mirrored ? kImageStrength : 1.0;
+        const glm::dvec3 d = x - s;
+        const double r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        at.potential += -q / (4 * ocean::kPi * r);
+        at.along += q * (d.x * n.x + d.y * n.y + d.z * n.z) / (4 * ocean::kPi * r * r * r);
+    }
+    return at;
+}
+
+}  // namespace step08
