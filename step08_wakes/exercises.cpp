@@ -172,12 +172,14 @@ std::vector<Exercise> chapter() {
          "    (void)x, (void)xi, (void)n;\n"
          "    return {};\n",
          "Write source_with_image (C++, in image_source.cpp; section 4, a hull under the surface): a\n"
-         "source at xi under the surface y = 0 puts out 1 m^3 of water a second. Its image at xi mirrored\n"
-         "in the surface has the strength kImageStrength (-1: a sink), so that the potential is 0 on the\n"
-         "surface, as it is at the instant of a sudden motion. Return the potential of both at the\n"
-         "point x, and their flow along the unit vector n there. The hull of sources sums this over its\n"
-         "panels: without it the hemisphere carries no water with it. ./ocean check\n"
-         "compares 300 random points, sources and directions.",
+         "source at xi under the surface y = 0 (y is up) puts out 1 m^3 of water a second. Its image at\n"
+         "(xi.x, -xi.y, xi.z) has the strength kImageStrength (-1: a sink; use the constant, which the\n"
+         "README's 'What to try' sets to +1), so that the potential is 0 on the surface, as it is at\n"
+         "the instant of a sudden motion. Return the potential of both at the point x (the water's\n"
+         "velocity is +grad phi, so a unit source alone gives -1 / (4 pi r)), and their flow along the\n"
+         "unit vector n there (value 0 of a case is the potential, value 1 the flow). The hull of\n"
+         "sources sums this over its panels: with the starter's zeros it carries no water with it (no\n"
+         "added mass). ./ocean check compares 300 random points, sources and directions.",
          "A source's water goes out evenly through every sphere round it: at distance r, 1 / (4 pi r^2) "
          "m/s, pointing away from it, the gradient of -1 / (4 pi r). The image is the same with its own "
          "strength, from its own place: add the two.",
