@@ -31,6 +31,29 @@ glm::dvec3 on_sphere(double radius, double theta, double around) {
     return {radius * std::sin(theta) * std::cos(around), -radius * std::cos(theta), radius * std::sin(theta) * std::sin(around)};
 }
 
+// Solves a x = rhs (n x n, row major) by Gaussian elimination with partial pivoting: the influence
+// matrix is small (bands x bands) and not symmetric (each band's condition is held at one point,
+// its strength spread over its area).
+std::vector<double> solve_general(std::vector<double> a, std::vector<double> rhs, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k) {
+        std::size_t pivot = k;
+        for (std::size_t i = k + 1; i < n; ++i)
+            if (std::abs(a[i * n + k]) > std::abs(a[pivot * n + k])) pivot = i;
+        for (std::size_t j = 0; j < n; ++j) std::swap(a[k * n + j], a[pivot * n + j]);
+        std::swap(rhs[k], rhs[pivot]);
+        for (std::size_t i = k + 1; i < n; ++i) {
+            const double f = a[i * n + k] / a[k * n + k];
+            for (std::size_t j = k; j < n; ++j) a[i * n + j] -= f * a[k * n + j];
+            rhs[i] -= f * rhs[k];
+        }
+    }
+    for (std::size_t k = n; k-- > 0;) {
+        for (std::size_t j = k + 1; j < n; ++j) rhs[k] -= a[k * n + j] * rhs[j];
+        rhs[k] /= a[k * n + k];
+    }
+    return rhs;
+}
+
 }  // namespace
 
 SourceHull::SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHullSettings& s) : settings_(s), bands_(s.bands) {
@@ -66,16 +89,24 @@ SourceHull::SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHu
     // own panel also gets 1/2 of its strength along its normal (the rest are sums over parts: the
     // part nearest a band's point is half a part away, and 1/r is integrable).
     const auto n = std::size_t(bands_);
-    influence_.assign(n * n, 0.0);
+    std::vector<double> influence(n * n, 0.0);  // along the normal at band i per unit strength on band j
     potential_.assign(n * n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
-        influence_[i * n + i] += 0.5;
+        influence[i * n + i] += 0.5;
         const Piece& m = middles[i];
         for (const Piece& q : parts) {
             const SourceAt unit = source_with_image(m.at, q.at, m.normal);
             potential_[i * n + std::size_t(q.band)] += q.area * unit.potential;
-            influence_[i * n + std::size_t(q.band)] += q.area * unit.along;
+            influence[i * n + std::size_t(q.band)] += q.area * unit.along;
         }
+    }
+    // The matrix stays as it is: its inverse, once, turns each step's right-hand sides into strengths.
+    inverse_influence_.assign(n * n, 0.0);
+    for (std::size_t j = 0; j < n; ++j) {
+        std::vector<double> unit(n, 0.0);
+        unit[j] = 1;
+        const std::vector<double> column = solve_general(influence, unit, n);
+        for (std::size_t i = 0; i < n; ++i) inverse_influence_[i * n + j] = column[i];
     }
     // Heaving at unit speed, the hull's speed along its normal is its normal's vertical part; the
     // pressure -rho dphi/dt of the strengths that follow it, summed over the hull, is the added mass.
@@ -120,28 +151,12 @@ SourceHull::SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHu
 double SourceHull::volume() const { return 2.0 / 3.0 * ocean::kPi * std::pow(settings_.radius, 3); }
 double SourceHull::waterplane() const { return ocean::kPi * settings_.radius * settings_.radius; }
 
-std::vector<double> SourceHull::solve(std::vector<double> rhs) const {
-    // Gaussian elimination with partial pivoting: the influence matrix is small (bands x bands) and
-    // not symmetric (each band's condition is held at one point, its strength spread over its area).
+std::vector<double> SourceHull::solve(const std::vector<double>& rhs) const {
     const auto n = std::size_t(bands_);
-    std::vector<double> a = influence_;
-    for (std::size_t k = 0; k < n; ++k) {
-        std::size_t pivot = k;
-        for (std::size_t i = k + 1; i < n; ++i)
-            if (std::abs(a[i * n + k]) > std::abs(a[pivot * n + k])) pivot = i;
-        for (std::size_t j = 0; j < n; ++j) std::swap(a[k * n + j], a[pivot * n + j]);
-        std::swap(rhs[k], rhs[pivot]);
-        for (std::size_t i = k + 1; i < n; ++i) {
-            const double f = a[i * n + k] / a[k * n + k];
-            for (std::size_t j = k; j < n; ++j) a[i * n + j] -= f * a[k * n + j];
-            rhs[i] -= f * rhs[k];
-        }
-    }
-    for (std::size_t k = n; k-- > 0;) {
-        for (std::size_t j = k + 1; j < n; ++j) rhs[k] -= a[k * n + j] * rhs[j];
-        rhs[k] /= a[k * n + k];
-    }
-    return rhs;
+    std::vector<double> x(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) x[i] += inverse_influence_[i * n + j] * rhs[j];
+    return x;
 }
 
 SourceHull::Reading SourceHull::read(const WaveField& field) const {

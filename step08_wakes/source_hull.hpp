@@ -66,14 +66,15 @@ public:
     std::vector<double> surface_source(const std::vector<double>& strengths) const;
 
 private:
-    std::vector<double> solve(std::vector<double> rhs) const;  // influence_ x = rhs
+    // The strengths x with influence x = rhs: influence[i][j] the speed along the normal at band
+    // i's point per unit strength on band j, images included; its inverse is made once.
+    std::vector<double> solve(const std::vector<double>& rhs) const;
 
     SourceHullSettings settings_;
     int bands_;
     std::vector<double> band_area_, band_normal_y_;  // m^2; the normals' mean vertical part
-    // influence_[i][j]: the speed along the normal at band i's panels per unit strength on band j;
-    // potential_[i][j]: the potential there. Both with the images, row major, bands x bands.
-    std::vector<double> influence_, potential_;
+    std::vector<double> inverse_influence_;          // bands x bands, row major
+    std::vector<double> potential_;  // [i][j]: the potential at band i's point per unit strength on band j
     double added_mass_ = 0;
     // Per band and mode: the band's mean of the field's flow along the normal per unit of the
     // potential's transform (and of its pressure's, per unit of -g eta^); and what a unit strength

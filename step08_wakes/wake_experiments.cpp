@@ -189,11 +189,20 @@ HeaveRecord release_hemisphere(const HeaveRelease& r) {
     return record;
 }
 
+namespace {
+
+// The hemisphere of sources of `release`'s radius at the middle of `field`.
+SourceHull hemisphere_at_middle(const WaveField& field, const HeaveRelease& release) {
+    SourceHullSettings settings;
+    settings.radius = release.radius;
+    return SourceHull(field, field.cell_centre(field.n() / 2, field.n() / 2), settings);
+}
+
+}  // namespace
+
 HeaveRecord release_hemisphere_of_sources(const HeaveRelease& r) {
     WaveField field(deep_field(r.n, r.cell, 0.2, 3));
-    SourceHullSettings settings;
-    settings.radius = r.radius;
-    const SourceHull hull(field, field.cell_centre(r.n / 2, r.n / 2), settings);
+    const SourceHull hull = hemisphere_at_middle(field, r);
     // Per unit density, as the contact: the mass is the volume, forces are over rho.
     const double mass = hull.volume() + hull.added_mass(), spring = ocean::kGravity * hull.waterplane();
     HeaveRecord record;
@@ -218,9 +227,7 @@ HeaveRecord release_hemisphere_of_sources(const HeaveRelease& r) {
 HeaveCoefficients force_hemisphere_of_sources(const HeaveRelease& r, double nu, int periods) {
     if (periods < 6 || !(nu > 0)) throw ocean::Error("forced heave: it needs a frequency and six periods (two to start, four to measure)");
     WaveField field(deep_field(r.n, r.cell, 0.2, 3));
-    SourceHullSettings settings;
-    settings.radius = r.radius;
-    const SourceHull hull(field, field.cell_centre(r.n / 2, r.n / 2), settings);
+    const SourceHull hull = hemisphere_at_middle(field, r);
     const double omega = std::sqrt(nu * ocean::kGravity / r.radius), period = ocean::kTwoPi / omega, amplitude = 0.05;
     // z = amplitude e(t) sin(omega t), e rising as 3x^2 - 2x^3 over two periods (x = t / 2T), then 1.
     const double ramp = 2 * period;
