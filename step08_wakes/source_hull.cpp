@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -26,9 +27,10 @@ struct Piece {
 };
 
 // The point at polar angle `theta` from the bottom and `around` round the vertical, on a sphere of
-// `radius` centred at `centre` on the surface; its outward normal is the point over the radius.
-glm::dvec3 on_sphere(double radius, double theta, double around) {
-    return {radius * std::sin(theta) * std::cos(around), -radius * std::cos(theta), radius * std::sin(theta) * std::sin(around)};
+// `radius` whose centre is `centre_height` above the surface; its outward normal is the point, less
+// the centre, over the radius (on_sphere(1, ...)).
+glm::dvec3 on_sphere(double radius, double theta, double around, double centre_height = 0) {
+    return {radius * std::sin(theta) * std::cos(around), centre_height - radius * std::cos(theta), radius * std::sin(theta) * std::sin(around)};
 }
 
 // Solves a x = rhs (n x n, row major) by Gaussian elimination with partial pivoting: the influence
@@ -56,20 +58,22 @@ std::vector<double> solve_general(std::vector<double> a, std::vector<double> rhs
 
 }  // namespace
 
-SourceHull::SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHullSettings& s) : settings_(s), bands_(s.bands) {
+SourceHull::SourceHull(const WaveField& field, const SourceHullSettings& s) : settings_(s), bands_(s.bands) {
     if (!(s.radius > 0) || s.radius > 0.25 * field.side()) throw ocean::Error("source hull: the radius must be positive and at most a quarter of the grid");
+    if (!(std::abs(s.centre_height) < s.radius)) throw ocean::Error("source hull: the sphere's centre must be within a radius of the surface");
     if (s.bands < 1 || s.around < 3 || s.split < 2 || s.split % 2 != 0)
         throw ocean::Error("source hull: it needs a band, three panels round it and an even number of parts a panel's side");
-    const double R = s.radius, half_pi = 0.5 * ocean::kPi;
+    const double R = s.radius, c = s.centre_height;
+    const double waterline = std::acos(c / R);  // the polar angle where the sphere meets the surface
     // Each panel's parts (its integrals are sums over them), and one point a band where its
     // condition is held (the middle of its first panel: all of a band's panels are alike).
     std::vector<Piece> parts, middles;
     band_area_.assign(std::size_t(bands_), 0.0);
     band_normal_y_.assign(std::size_t(bands_), 0.0);
     for (int b = 0; b < bands_; ++b) {
-        const double t0 = half_pi * b / bands_, t1 = half_pi * (b + 1) / bands_;
+        const double t0 = waterline * b / bands_, t1 = waterline * (b + 1) / bands_;
         const double around = ocean::kTwoPi / s.around;
-        middles.push_back({on_sphere(R, 0.5 * (t0 + t1), 0.5 * around), on_sphere(1, 0.5 * (t0 + t1), 0.5 * around), 0, b});
+        middles.push_back({on_sphere(R, 0.5 * (t0 + t1), 0.5 * around, c), on_sphere(1, 0.5 * (t0 + t1), 0.5 * around), 0, b});
         for (int p = 0; p < s.around; ++p)
             for (int u = 0; u < s.split; ++u)
                 for (int v = 0; v < s.split; ++v) {
@@ -77,7 +81,7 @@ SourceHull::SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHu
                     const double a0 = around * (p + double(v) / s.split), a1 = around * (p + double(v + 1) / s.split);
                     const double area = R * R * (std::cos(ta) - std::cos(tb)) * (a1 - a0);
                     const double t = 0.5 * (ta + tb), a = 0.5 * (a0 + a1);
-                    parts.push_back({on_sphere(R, t, a), on_sphere(1, t, a), area, b});
+                    parts.push_back({on_sphere(R, t, a, c), on_sphere(1, t, a), area, b});
                     band_area_[std::size_t(b)] += area;
                     band_normal_y_[std::size_t(b)] += area * on_sphere(1, t, a).y;
                 }
@@ -114,42 +118,65 @@ SourceHull::SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHu
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j) added_mass_ -= band_area_[i] * band_normal_y_[i] * potential_[i * n + j] * unit_heave[j];
 
-    // The memory part, mode by mode. A field mode phi^ e^(i k.(x - x0)) / N^2 (x0 cell (0, 0)'s
-    // centre, N^2 the inverse transform's scale) reaches down as e^(|k| y): along the normal
-    // n, its flow is (|k| n_y + i k.n) times it. A source of unit strength d deep, with its image,
-    // puts e^(-|k| d) through the surface, per mode; over a cell's area, on the grid.
-    const int cells = field.n();
-    const std::size_t modes = std::size_t(cells) * std::size_t(cells);
-    const glm::dvec2 x0 = field.cell_centre(0, 0);
-    const double cell_area = field.settings().cell * field.settings().cell, scale = 1.0 / double(modes);
-    normal_read_.assign(n, std::vector<Complex>(modes));
-    potential_read_.assign(n, std::vector<Complex>(modes));
-    std::vector<std::vector<Complex>> put(n, std::vector<Complex>(modes));
-    for (int j = 0; j < cells; ++j)
-        for (int i = 0; i < cells; ++i) {
-            const glm::dvec2 k = field.wavenumber(i, j);
+    // The memory part, mode by mode, for the hull centred at the grid's origin. A field mode
+    // phi^ e^(i k.x) / N^2 (N^2 the inverse transform's scale) reaches down as e^(|k| y): along the
+    // normal n, its flow is (|k| n_y + i k.n) times it. A source of unit strength d deep, with its
+    // image, puts e^(-|k| d) through the surface, per mode; over a cell's area, on the grid. The
+    // parts come in mirror pairs (x, -x) and (z, -z), so each sum of e^(i k.x) is its cosines' sum.
+    cells_ = field.n();
+    const int half = cells_ / 2;
+    const std::size_t kept = std::size_t(half + 1) * std::size_t(half + 1);
+    const double unit = ocean::kTwoPi / field.side();
+    const double cell_area = field.settings().cell * field.settings().cell, scale = 1.0 / (double(cells_) * double(cells_));
+    normal_read_.assign(n, std::vector<double>(kept, 0.0));
+    potential_read_.assign(n, std::vector<double>(kept, 0.0));
+    put_.assign(n, std::vector<double>(kept, 0.0));
+    for (int j = 0; j <= half; ++j)
+        for (int i = 0; i <= half; ++i) {
+            const glm::dvec2 k(unit * i, unit * j);
             const double length = std::sqrt(k.x * k.x + k.y * k.y);
-            const std::size_t mode = std::size_t(j) * std::size_t(cells) + std::size_t(i);
+            const std::size_t mode = quarter(i, j);
             for (const Piece& q : parts) {
                 const double down = std::exp(length * q.at.y);
-                const double phase = k.x * (centre.x + q.at.x - x0.x) + k.y * (centre.y + q.at.z - x0.y);
-                const Complex wave(std::cos(phase), std::sin(phase));
+                const double phase = k.x * q.at.x + k.y * q.at.z;
                 const double share = q.area / band_area_[std::size_t(q.band)] * down * scale;
                 const auto b = std::size_t(q.band);
-                normal_read_[b][mode] += share * times(Complex(length * q.normal.y, k.x * q.normal.x + k.y * q.normal.z), wave);
-                potential_read_[b][mode] += share * wave;
-                put[b][mode] += kThroughSurface * q.area * down / cell_area * std::conj(wave);
+                normal_read_[b][mode] += share * (length * q.normal.y * std::cos(phase) - (k.x * q.normal.x + k.y * q.normal.z) * std::sin(phase));
+                potential_read_[b][mode] += share * std::cos(phase);
+                put_[b][mode] += kThroughSurface * q.area * down / cell_area * std::cos(phase) * scale;
             }
         }
-    source_pattern_.assign(n, std::vector<double>(modes));
-    for (std::size_t b = 0; b < n; ++b) {
-        field.fft().inverse(put[b]);
-        for (std::size_t c = 0; c < modes; ++c) source_pattern_[b][c] = put[b][c].real() * scale;
+}
+
+std::size_t SourceHull::quarter(int i, int j) const {
+    const int a = std::min(i, cells_ - i), b = std::min(j, cells_ - j);
+    return std::size_t(b) * std::size_t(cells_ / 2 + 1) + std::size_t(a);
+}
+
+void SourceHull::phases(const WaveField& field, glm::dvec2 centre, std::vector<Complex>& along_x, std::vector<Complex>& along_z) const {
+    const glm::dvec2 offset = centre - field.cell_centre(0, 0);
+    along_x.resize(std::size_t(cells_));
+    along_z.resize(std::size_t(cells_));
+    for (int i = 0; i < cells_; ++i) {
+        const glm::dvec2 k = field.wavenumber(i, i);
+        along_x[std::size_t(i)] = Complex(std::cos(k.x * offset.x), std::sin(k.x * offset.x));
+        along_z[std::size_t(i)] = Complex(std::cos(k.y * offset.y), std::sin(k.y * offset.y));
     }
 }
 
-double SourceHull::volume() const { return 2.0 / 3.0 * ocean::kPi * std::pow(settings_.radius, 3); }
-double SourceHull::waterplane() const { return ocean::kPi * settings_.radius * settings_.radius; }
+double SourceHull::volume() const {
+    const double R = settings_.radius, d = R - settings_.centre_height;
+    return ocean::kPi * d * d * (3 * R - d) / 3;
+}
+double SourceHull::waterplane() const {
+    const double R = settings_.radius, c = settings_.centre_height;
+    return ocean::kPi * (R * R - c * c);
+}
+double SourceHull::wetted_area() const {
+    double area = 0;
+    for (double a : band_area_) area += a;
+    return area;
+}
 
 std::vector<double> SourceHull::solve(const std::vector<double>& rhs) const {
     const auto n = std::size_t(bands_);
@@ -159,29 +186,34 @@ std::vector<double> SourceHull::solve(const std::vector<double>& rhs) const {
     return x;
 }
 
-SourceHull::Reading SourceHull::read(const WaveField& field) const {
+SourceHull::Reading SourceHull::read(const WaveField& field, glm::dvec2 centre) const {
     // The field's two spectra: eta^ and phi^, from one transform of eta + i phi.
     const std::size_t modes = field.heights().size();
-    const int cells = field.n();
     std::vector<Complex> both(modes);
     for (std::size_t c = 0; c < modes; ++c) both[c] = Complex(field.heights()[c], field.potentials()[c]);
     field.fft().forward(both);
+    std::vector<Complex> along_x, along_z;
+    phases(field, centre, along_x, along_z);
     const auto n = std::size_t(bands_);
     Reading r;
     r.normal_speed.assign(n, 0.0);
     r.normal_rate.assign(n, 0.0);
     std::vector<double> pressure_rate(n, 0.0);  // dphi/dt of the field at the hull, a band's mean
-    for (int j = 0; j < cells; ++j)
-        for (int i = 0; i < cells; ++i) {
-            const std::size_t mode = std::size_t(j) * std::size_t(cells) + std::size_t(i);
-            const std::size_t partner = std::size_t((cells - j) % cells) * std::size_t(cells) + std::size_t((cells - i) % cells);
+    for (int j = 0; j < cells_; ++j)
+        for (int i = 0; i < cells_; ++i) {
+            const std::size_t mode = std::size_t(j) * std::size_t(cells_) + std::size_t(i);
+            const std::size_t partner = std::size_t((cells_ - j) % cells_) * std::size_t(cells_) + std::size_t((cells_ - i) % cells_);
             const Complex mirrored = std::conj(both[partner]);
-            const Complex eta = 0.5 * (both[mode] + mirrored), phi = -0.5 * times_i(both[mode] - mirrored);
-            const Complex phi_rate = -g * eta;  // the surface's condition: dphi^/dt = -g eta^
+            const Complex at_centre = times(along_x[std::size_t(i)], along_z[std::size_t(j)]);
+            // The mode's potential and height where the hull is (the readings are real).
+            const double phi = times(-0.5 * times_i(both[mode] - mirrored), at_centre).real();
+            const double eta = times(0.5 * (both[mode] + mirrored), at_centre).real();
+            const double phi_rate = -g * eta;  // the surface's condition: dphi^/dt = -g eta^
+            const std::size_t kept = quarter(i, j);
             for (std::size_t b = 0; b < n; ++b) {
-                r.normal_speed[b] += times(phi, normal_read_[b][mode]).real();
-                r.normal_rate[b] += times(phi_rate, normal_read_[b][mode]).real();
-                pressure_rate[b] += times(phi_rate, potential_read_[b][mode]).real();
+                r.normal_speed[b] += phi * normal_read_[b][kept];
+                r.normal_rate[b] += phi_rate * normal_read_[b][kept];
+                pressure_rate[b] += phi_rate * potential_read_[b][kept];
             }
         }
     // The field's flow along the normal changes, so the sources change to cancel it; their
@@ -202,10 +234,22 @@ std::vector<double> SourceHull::strengths(const Reading& reading, double heave_s
     return solve(rhs);
 }
 
-std::vector<double> SourceHull::surface_source(const std::vector<double>& strengths) const {
-    std::vector<double> source(source_pattern_.empty() ? 0 : source_pattern_[0].size(), 0.0);
-    for (std::size_t b = 0; b < strengths.size() && b < source_pattern_.size(); ++b)
-        for (std::size_t c = 0; c < source.size(); ++c) source[c] += strengths[b] * source_pattern_[b][c];
+std::vector<double> SourceHull::surface_source(const std::vector<double>& strengths, const WaveField& field, glm::dvec2 centre) const {
+    // The sources' spectrum at the hull's place, e^(-i k.(centre - x0)) times the origin's (the
+    // transform's sign), brought to the grid by one inverse transform.
+    std::vector<Complex> along_x, along_z;
+    phases(field, centre, along_x, along_z);
+    std::vector<Complex> spectrum(std::size_t(cells_) * std::size_t(cells_));
+    for (int j = 0; j < cells_; ++j)
+        for (int i = 0; i < cells_; ++i) {
+            const std::size_t kept = quarter(i, j);
+            double put = 0;
+            for (std::size_t b = 0; b < strengths.size() && b < put_.size(); ++b) put += strengths[b] * put_[b][kept];
+            spectrum[std::size_t(j) * std::size_t(cells_) + std::size_t(i)] = put * std::conj(times(along_x[std::size_t(i)], along_z[std::size_t(j)]));
+        }
+    field.fft().inverse(spectrum);
+    std::vector<double> source(spectrum.size());
+    for (std::size_t c = 0; c < source.size(); ++c) source[c] = spectrum[c].real();
     return source;
 }
 

@@ -16,9 +16,11 @@
 // moves with it (half the displaced water's, that of a sphere in open water), the second as the
 // waves' force, read from the field each step.
 //
-// The hemisphere heaves about a fixed place of a field that does not follow (the hull's readings are
-// made for the grid's cells as they are when it is built). Bands of panels from its bottom to its
-// waterline share one source strength: heave is the same all round.
+// The hull is a sphere cut by the still water: a hemisphere when its centre is at the surface,
+// step07's buoy (lighter than half its sphere's water) when its centre is above it. Bands of panels
+// from its bottom to its waterline share one source strength: heave is the same all round. Its
+// readings are made once, relative to its centre, for any place on the grid: the hull may drift
+// and the grid follow a boat (a mode's phase at the centre is applied each step).
 #pragma once
 
 #include "step08_wakes/wave_field.hpp"
@@ -30,7 +32,8 @@
 namespace step08 {
 
 struct SourceHullSettings {
-    double radius = 1;  // m
+    double radius = 1;         // m
+    double centre_height = 0;  // m: the sphere's centre above the still water, between -R and R
     int bands = 12;     // rings of panels from the bottom to the waterline, one source strength each
     int around = 36;    // panels round each ring
     int split = 2;      // each panel's integrals taken over split x split parts: an even number, so
@@ -39,31 +42,35 @@ struct SourceHullSettings {
 
 class SourceHull {
 public:
-    // A hemisphere floating at `centre` (x, z) of `field`'s grid, its flat face at the still
-    // water's level. Throws ocean::Error on settings it cannot use (a radius not positive, or
-    // larger than a quarter of the grid; fewer than one band or three panels round; an odd split).
-    SourceHull(const WaveField& field, glm::dvec2 centre, const SourceHullSettings& settings);
+    // The hull cut by the still water at `settings.centre_height`, for `field`'s grid (its cells
+    // and side; the grid may move). Throws ocean::Error on settings it cannot use (a radius not
+    // positive, or larger than a quarter of the grid; a centre not within a radius of the surface;
+    // fewer than one band or three panels round; an odd split).
+    SourceHull(const WaveField& field, const SourceHullSettings& settings);
 
-    double volume() const;     // m^3, under the water at rest
-    double waterplane() const; // m^2, pi R^2
+    double volume() const;      // m^3, under the water at rest: the cap pi d^2 (3R - d) / 3, d = R - c
+    double waterplane() const;  // m^2, pi (R^2 - c^2)
+    double wetted_area() const; // m^2, the panels' sum: the cap's 2 pi R d
     // The instantaneous part's added mass over the water's density (m^3): rho times it moves with
     // the hull as if it were part of it. Half the volume for a hemisphere (within the panels' error).
     double added_mass() const { return added_mass_; }
 
-    // What the hull reads from the field at one instant: per band, the field's own flow along the
-    // hull's normal (m/s), and its rate of change (m/s^2); and the waves' force on the hull over
-    // the water's density (m^4/s^2, upwards), their sources' answer to the change included.
+    // What the hull centred at `centre` (x, z) reads from the field at one instant: per band, the
+    // field's own flow along the hull's normal (m/s), and its rate of change (m/s^2); and the waves'
+    // force on the hull over the water's density (m^4/s^2, upwards), their sources' answer to the
+    // change included.
     struct Reading {
         std::vector<double> normal_speed, normal_rate;
         double wave_force = 0;
     };
-    Reading read(const WaveField& field) const;
+    Reading read(const WaveField& field, glm::dvec2 centre) const;
     // The sources' strengths (m/s, per band) that give the hull heaving upwards at `heave_speed`
     // (m/s) its own speed along its normal, the field's flow added as `reading` has it `ahead`
     // seconds on (its rate times `ahead`: half a step, to hold the step's middle over the step);
-    // and what they put through the surface, a value a cell (m/s), for Forcing::source.
+    // and what they put through the surface at `centre` (x, z), a value a cell (m/s), for
+    // Forcing::source.
     std::vector<double> strengths(const Reading& reading, double heave_speed, double ahead) const;
-    std::vector<double> surface_source(const std::vector<double>& strengths) const;
+    std::vector<double> surface_source(const std::vector<double>& strengths, const WaveField& field, glm::dvec2 centre) const;
 
 private:
     // The strengths x with influence x = rhs: influence[i][j] the speed along the normal at band
@@ -76,11 +83,16 @@ private:
     std::vector<double> inverse_influence_;          // bands x bands, row major
     std::vector<double> potential_;  // [i][j]: the potential at band i's point per unit strength on band j
     double added_mass_ = 0;
-    // Per band and mode: the band's mean of the field's flow along the normal per unit of the
-    // potential's transform (and of its pressure's, per unit of -g eta^); and what a unit strength
-    // on the band puts through each cell.
-    std::vector<std::vector<Complex>> normal_read_, potential_read_;
-    std::vector<std::vector<double>> source_pattern_;
+    // Per band and mode, for the hull centred at the grid's origin: the band's mean of a mode's
+    // flow along the normal per unit of the potential's transform (and of its pressure, per unit of
+    // -g eta^); and what a unit strength on the band puts through the surface, per cell. The panels
+    // are mirror-symmetric across x and z, so these are real and the same for (+-kx, +-kz): kept
+    // for a quarter of the modes, (|i|, |j|) up to n/2 (quarter()).
+    std::size_t quarter(int i, int j) const;
+    int cells_ = 0;
+    std::vector<std::vector<double>> normal_read_, potential_read_, put_;
+    // Each mode's phase at `centre`, e^(i k.(centre - x0)), as its x and z factors.
+    void phases(const WaveField& field, glm::dvec2 centre, std::vector<Complex>& along_x, std::vector<Complex>& along_z) const;
 };
 
 }  // namespace step08

@@ -192,17 +192,19 @@ HeaveRecord release_hemisphere(const HeaveRelease& r) {
 namespace {
 
 // The hemisphere of sources of `release`'s radius at the middle of `field`.
-SourceHull hemisphere_at_middle(const WaveField& field, const HeaveRelease& release) {
+SourceHull hemisphere_of(const WaveField& field, const HeaveRelease& release) {
     SourceHullSettings settings;
     settings.radius = release.radius;
-    return SourceHull(field, field.cell_centre(field.n() / 2, field.n() / 2), settings);
+    return SourceHull(field, settings);
 }
+glm::dvec2 grid_middle(const WaveField& field) { return field.cell_centre(field.n() / 2, field.n() / 2); }
 
 }  // namespace
 
 HeaveRecord release_hemisphere_of_sources(const HeaveRelease& r) {
     WaveField field(deep_field(r.n, r.cell, 0.2, 3));
-    const SourceHull hull = hemisphere_at_middle(field, r);
+    const SourceHull hull = hemisphere_of(field, r);
+    const glm::dvec2 middle = grid_middle(field);
     // Per unit density, as the contact: the mass is the volume, forces are over rho.
     const double mass = hull.volume() + hull.added_mass(), spring = ocean::kGravity * hull.waterplane();
     HeaveRecord record;
@@ -213,12 +215,12 @@ HeaveRecord release_hemisphere_of_sources(const HeaveRelease& r) {
     for (int s = 0; s <= steps; ++s) {
         record.time.push_back(s * r.dt);
         record.height.push_back(z);
-        const SourceHull::Reading reading = r.with_waves ? hull.read(field) : SourceHull::Reading{};
+        const SourceHull::Reading reading = r.with_waves ? hull.read(field, middle) : SourceHull::Reading{};
         v += (reading.wave_force - spring * z) / mass * r.dt;  // semi-implicit Euler, as the contact's
         z += v * r.dt;
         if (!r.with_waves) continue;
         // The sources that give the hull this step's speed, held over the step as the field's source.
-        forcing.source = hull.surface_source(hull.strengths(reading, v, 0.5 * r.dt));
+        forcing.source = hull.surface_source(hull.strengths(reading, v, 0.5 * r.dt), field, middle);
         field.step(r.dt, forcing);
     }
     return record;
@@ -227,7 +229,8 @@ HeaveRecord release_hemisphere_of_sources(const HeaveRelease& r) {
 HeaveCoefficients force_hemisphere_of_sources(const HeaveRelease& r, double nu, int periods) {
     if (periods < 6 || !(nu > 0)) throw ocean::Error("forced heave: it needs a frequency and six periods (two to start, four to measure)");
     WaveField field(deep_field(r.n, r.cell, 0.2, 3));
-    const SourceHull hull = hemisphere_at_middle(field, r);
+    const SourceHull hull = hemisphere_of(field, r);
+    const glm::dvec2 middle = grid_middle(field);
     const double omega = std::sqrt(nu * ocean::kGravity / r.radius), period = ocean::kTwoPi / omega, amplitude = 0.05;
     // z = amplitude e(t) sin(omega t), e rising as 3x^2 - 2x^3 over two periods (x = t / 2T), then 1.
     const double ramp = 2 * period;
@@ -246,14 +249,14 @@ HeaveCoefficients force_hemisphere_of_sources(const HeaveRelease& r, double nu, 
     Forcing forcing;
     for (int s = 0; s * r.dt < to; ++s) {
         const double t = s * r.dt;
-        const SourceHull::Reading reading = hull.read(field);
+        const SourceHull::Reading reading = hull.read(field, middle);
         const double force = reading.wave_force - hull.added_mass() * acceleration(t);  // the water's, over rho
         if (t >= from) {
             with_sin += force * std::sin(omega * t) * r.dt;
             with_cos += force * std::cos(omega * t) * r.dt;
             span += r.dt;
         }
-        forcing.source = hull.surface_source(hull.strengths(reading, speed(t + 0.5 * r.dt), 0.5 * r.dt));
+        forcing.source = hull.surface_source(hull.strengths(reading, speed(t + 0.5 * r.dt), 0.5 * r.dt), field, middle);
         field.step(r.dt, forcing);
     }
     // force = -A z'' - B z' = A amplitude omega^2 sin - B amplitude omega cos (the ramp over).

@@ -65,17 +65,73 @@ TEST(Step08Radiation, TheSourcesCarryASpheresAddedMass) {
     step08::WaveFieldSettings small;  // the added mass does not depend on the field
     small.n = 16, small.absorbing_width = 0;
     const step08::WaveField field(small);
-    const step08::SourceHull hull(field, {0.0, 0.0}, {});
+    const step08::SourceHull hull(field, {});
     std::cout << "added mass at the instant: " << hull.added_mass() / hull.volume() << " of the volume" << std::endl;
     EXPECT_NEAR(hull.added_mass() / hull.volume(), 0.5, 0.0125);
     step08::SourceHullSettings finer;
     finer.bands = 24, finer.around = 72, finer.split = 4;
-    const step08::SourceHull fine(field, {0.0, 0.0}, finer);
+    const step08::SourceHull fine(field, finer);
     EXPECT_LT(std::abs(fine.added_mass() / fine.volume() - 0.5), std::abs(hull.added_mass() / hull.volume() - 0.5))
         << "finer panels come nearer";
     step08::SourceHullSettings odd;
     odd.split = 3;
-    EXPECT_THROW(step08::SourceHull(field, {0.0, 0.0}, odd), ocean::Error) << "a part's middle on a band's point: 1/r there";
+    EXPECT_THROW(step08::SourceHull(field, odd), ocean::Error) << "a part's middle on a band's point: 1/r there";
+}
+
+// A sphere lighter than half its water floats with its centre above the surface, and wets a cap:
+// its panels cover the cap's area 2 pi R d (d = R - c its depth), and it holds the sphere's volume
+// less the cap above the water (a second closed form for what volume() computes).
+TEST(Step08Radiation, ASphereFloatingHighWetsACap) {
+    step08::WaveFieldSettings small;
+    small.n = 16, small.absorbing_width = 0;
+    const step08::WaveField field(small);
+    step08::SourceHullSettings buoy;  // step07's buoy: 1.2 m across, 350 kg/m^3
+    buoy.radius = 0.6, buoy.centre_height = 0.1288;
+    const step08::SourceHull cap(field, buoy);
+    const double R = buoy.radius, c = buoy.centre_height, pi = ocean::kPi;
+    EXPECT_NEAR(cap.wetted_area() / (2 * pi * R * (R - c)), 1.0, 1e-12);
+    const double above = pi * (R + c) * (R + c) * (3 * R - (R + c)) / 3;
+    EXPECT_NEAR(cap.volume() / (4.0 / 3.0 * pi * R * R * R - above), 1.0, 1e-12);
+    EXPECT_NEAR(cap.waterplane(), pi * (R * R - c * c), 1e-12);
+    std::cout << "cap: added mass at the instant " << cap.added_mass() / cap.volume() << " of its volume" << std::endl;
+    EXPECT_GT(cap.added_mass(), 0.0);
+    buoy.centre_height = R;
+    EXPECT_THROW(step08::SourceHull(field, buoy), ocean::Error) << "a sphere that only touches the water wets nothing";
+}
+
+// The hull's readings are made once, about its own centre, for any place on the grid (the buoy
+// drifts; the grid follows the boat). Waves and hull moved together by whole cells (the waves rolled
+// round the periodic grid) read the same flow and force, and the sources land moved as well.
+TEST(Step08Radiation, TheHullReadsTheSameWhereverItIsOnTheGrid) {
+    step08::WaveFieldSettings settings;
+    settings.n = 64, settings.cell = 0.25, settings.absorbing_width = 0;
+    step08::WaveField field(settings), moved(settings);
+    field.add_impulse({0.6, -0.4}, 0.05, 0.4);
+    for (int s = 0; s < 10; ++s) field.step(1.0 / 30);
+    const int n = settings.n, di = 3, dj = -2;  // three cells along x, two back along z
+    const auto cell = [n](int i, int j) { return std::size_t(((j + n) % n) * n + (i + n) % n); };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            moved.heights()[cell(i + di, j + dj)] = field.heights()[cell(i, j)];
+            moved.potentials()[cell(i + di, j + dj)] = field.potentials()[cell(i, j)];
+        }
+    const step08::SourceHull hull(field, {0.5});
+    const glm::dvec2 at(-0.37, 0.21), shift(di * settings.cell, dj * settings.cell);  // not a cell's centre
+    const step08::SourceHull::Reading here = hull.read(field, at), there = hull.read(moved, at + shift);
+    EXPECT_NEAR(there.wave_force, here.wave_force, 1e-9 * std::abs(here.wave_force));
+    for (std::size_t b = 0; b < here.normal_speed.size(); ++b)
+        EXPECT_NEAR(there.normal_speed[b], here.normal_speed[b], 1e-9 * std::abs(here.normal_speed[b]) + 1e-15);
+    const std::vector<double> put = hull.surface_source(hull.strengths(here, 0.1, 0), field, at);
+    const std::vector<double> put_there = hull.surface_source(hull.strengths(there, 0.1, 0), moved, at + shift);
+    double largest = 0, worst = 0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            largest = std::max(largest, std::abs(put[cell(i, j)]));
+            worst = std::max(worst, std::abs(put[cell(i, j)] - put_there[cell(i + di, j + dj)]));
+        }
+    EXPECT_LT(worst, 1e-9 * largest);
+    // And the hull half a cell over reads a different flow: the phase is not lost.
+    EXPECT_GT(std::abs(hull.read(field, at + glm::dvec2(0.5 * settings.cell, 0)).wave_force - here.wave_force), 1e-6 * std::abs(here.wave_force));
 }
 
 TEST(Step08Radiation, AHemisphereOfSourcesDecaysAsHulmePredicts) {
