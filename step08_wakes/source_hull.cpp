@@ -15,9 +15,6 @@ namespace step08 {
 namespace {
 
 constexpr double g = ocean::kGravity;
-// The share of a source's water that goes through the surface, its image's answer included: a
-// source sends half up; a sink above pulls as much again up (all of it), a source pushes it back.
-constexpr double kThroughSurface = 0.5 * (1 - kImageStrength);
 
 // A piece of the hull: its middle (x, y up, z), its normal out of the hull into the water, its area.
 struct Piece {
@@ -114,23 +111,31 @@ SourceHull::SourceHull(const WaveField& field, const SourceHullSettings& s) : se
     }
     // Heaving at unit speed, the hull's speed along its normal is its normal's vertical part; the
     // pressure -rho dphi/dt of the strengths that follow it, summed over the hull, is the added mass.
+    // alpha: each band's area times its normal's vertical part, the weights that sum a pressure on
+    // the hull into an upward force.
+    std::vector<double> alpha(n);
+    for (std::size_t i = 0; i < n; ++i) alpha[i] = band_area_[i] * band_normal_y_[i];
     const std::vector<double> unit_heave = solve(band_normal_y_);
     for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) added_mass_ -= band_area_[i] * band_normal_y_[i] * potential_[i * n + j] * unit_heave[j];
+        for (std::size_t j = 0; j < n; ++j) added_mass_ -= alpha[i] * potential_[i * n + j] * unit_heave[j];
+    // The sources' potential on band i per unit of the flow they cancel on band j, times band i's
+    // area: what Green's identity weighs a mode's flow with (surface_source).
+    area_potential_.assign(n * n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            for (std::size_t m = 0; m < n; ++m) area_potential_[i * n + j] += band_area_[i] * potential_[i * n + m] * inverse_influence_[m * n + j];
 
     // The memory part, mode by mode, for the hull centred at the grid's origin. A field mode
     // phi^ e^(i k.x) / N^2 (N^2 the inverse transform's scale) reaches down as e^(|k| y): along the
-    // normal n, its flow is (|k| n_y + i k.n) times it. A source of unit strength d deep, with its
-    // image, puts e^(-|k| d) through the surface, per mode; over a cell's area, on the grid. The
-    // parts come in mirror pairs (x, -x) and (z, -z), so each sum of e^(i k.x) is its cosines' sum.
+    // normal n, its flow is (|k| n_y + i k.n) times it. The parts come in mirror pairs (x, -x) and
+    // (z, -z), so each sum of e^(i k.x) is its cosines' sum (the sines cancel).
     cells_ = field.n();
+    cell_area_ = field.settings().cell * field.settings().cell;
     const int half = cells_ / 2;
     const std::size_t kept = std::size_t(half + 1) * std::size_t(half + 1);
-    const double unit = ocean::kTwoPi / field.side();
-    const double cell_area = field.settings().cell * field.settings().cell, scale = 1.0 / (double(cells_) * double(cells_));
+    const double unit = ocean::kTwoPi / field.side(), scale = 1.0 / (double(cells_) * double(cells_));
     normal_read_.assign(n, std::vector<double>(kept, 0.0));
     potential_read_.assign(n, std::vector<double>(kept, 0.0));
-    put_.assign(n, std::vector<double>(kept, 0.0));
     for (int j = 0; j <= half; ++j)
         for (int i = 0; i <= half; ++i) {
             const glm::dvec2 k(unit * i, unit * j);
@@ -143,9 +148,20 @@ SourceHull::SourceHull(const WaveField& field, const SourceHullSettings& s) : se
                 const auto b = std::size_t(q.band);
                 normal_read_[b][mode] += share * (length * q.normal.y * std::cos(phase) - (k.x * q.normal.x + k.y * q.normal.z) * std::sin(phase));
                 potential_read_[b][mode] += share * std::cos(phase);
-                put_[b][mode] += kThroughSurface * q.area * down / cell_area * std::cos(phase) * scale;
             }
         }
+    // The heave's table, read and written alike (surface_source): the force a mode's pressure puts
+    // on the hull, its own pressure on the hull less the change of the sources that cancel its flow,
+    // sum_i alpha_i (Psi_i - sum_j P_ij N_j) with P = potential_ S (S the influence's inverse): per
+    // unit of dphi^/dt. Its transpose weighs the flow by (S^T potential_^T alpha).
+    std::vector<double> through(n, 0.0), weighed(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t m = 0; m < n; ++m) through[m] += alpha[i] * potential_[i * n + m];
+    for (std::size_t m = 0; m < n; ++m)
+        for (std::size_t j = 0; j < n; ++j) weighed[j] += through[m] * inverse_influence_[m * n + j];
+    heave_.assign(kept, 0.0);
+    for (std::size_t mode = 0; mode < kept; ++mode)
+        for (std::size_t b = 0; b < n; ++b) heave_[mode] += alpha[b] * potential_read_[b][mode] - weighed[b] * normal_read_[b][mode];
 }
 
 std::size_t SourceHull::quarter(int i, int j) const {
@@ -198,7 +214,6 @@ SourceHull::Reading SourceHull::read(const WaveField& field, glm::dvec2 centre) 
     Reading r;
     r.normal_speed.assign(n, 0.0);
     r.normal_rate.assign(n, 0.0);
-    std::vector<double> pressure_rate(n, 0.0);  // dphi/dt of the field at the hull, a band's mean
     for (int j = 0; j < cells_; ++j)
         for (int i = 0; i < cells_; ++i) {
             const std::size_t mode = std::size_t(j) * std::size_t(cells_) + std::size_t(i);
@@ -210,42 +225,42 @@ SourceHull::Reading SourceHull::read(const WaveField& field, glm::dvec2 centre) 
             const double eta = times(0.5 * (both[mode] + mirrored), at_centre).real();
             const double phi_rate = -g * eta;  // the surface's condition: dphi^/dt = -g eta^
             const std::size_t kept = quarter(i, j);
+            // The waves' pressure on the hull, and the change of the sources that cancel their flow
+            // along it (their dphi/dt is part of the pressure as well): the heave's table.
+            r.wave_force += phi_rate * heave_[kept];
             for (std::size_t b = 0; b < n; ++b) {
                 r.normal_speed[b] += phi * normal_read_[b][kept];
                 r.normal_rate[b] += phi_rate * normal_read_[b][kept];
-                pressure_rate[b] += phi_rate * potential_read_[b][kept];
             }
         }
-    // The field's flow along the normal changes, so the sources change to cancel it; their
-    // dphi/dt is part of the pressure as well.
-    const std::vector<double> answer = solve(r.normal_rate);
-    for (std::size_t i = 0; i < n; ++i) {
-        double sources_rate = 0;
-        for (std::size_t j = 0; j < n; ++j) sources_rate -= potential_[i * n + j] * answer[j];
-        r.wave_force += band_area_[i] * band_normal_y_[i] * (pressure_rate[i] + sources_rate);
-    }
     return r;
 }
 
-std::vector<double> SourceHull::strengths(const Reading& reading, double heave_speed, double ahead) const {
-    std::vector<double> rhs(static_cast<std::size_t>(bands_));
-    for (std::size_t b = 0; b < rhs.size(); ++b)
-        rhs[b] = heave_speed * band_normal_y_[b] - (reading.normal_speed[b] + ahead * reading.normal_rate[b]);
-    return solve(rhs);
-}
-
-std::vector<double> SourceHull::surface_source(const std::vector<double>& strengths, const WaveField& field, glm::dvec2 centre) const {
-    // The sources' spectrum at the hull's place, e^(-i k.(centre - x0)) times the origin's (the
-    // transform's sign), brought to the grid by one inverse transform.
+std::vector<double> SourceHull::surface_source(const Reading& reading, double heave_speed, double ahead, const WaveField& field,
+                                               glm::dvec2 centre) const {
+    // Green's identity over the water: what the sources put through the free surface, per mode,
+    // is sum_i A_i (Psi_i dphi_s/dn - phi_s N_i) over the hull, where dphi_s/dn is the hull's speed
+    // along its normal less the field's flow there (held at the step's middle), and phi_s the
+    // sources' potential. The hull's own heave goes through its table, the one the force is read
+    // with; the field's flow, cancelled, through Psi and N.
+    const auto n = std::size_t(bands_);
+    std::vector<double> cancel(n), on_psi(n), on_flow(n, 0.0);
+    for (std::size_t b = 0; b < n; ++b) cancel[b] = -(reading.normal_speed[b] + ahead * reading.normal_rate[b]);
+    for (std::size_t i = 0; i < n; ++i) {
+        on_psi[i] = band_area_[i] * cancel[i];
+        for (std::size_t j = 0; j < n; ++j) on_flow[i] -= area_potential_[i * n + j] * cancel[j];
+    }
     std::vector<Complex> along_x, along_z;
     phases(field, centre, along_x, along_z);
     std::vector<Complex> spectrum(std::size_t(cells_) * std::size_t(cells_));
     for (int j = 0; j < cells_; ++j)
         for (int i = 0; i < cells_; ++i) {
             const std::size_t kept = quarter(i, j);
-            double put = 0;
-            for (std::size_t b = 0; b < strengths.size() && b < put_.size(); ++b) put += strengths[b] * put_[b][kept];
-            spectrum[std::size_t(j) * std::size_t(cells_) + std::size_t(i)] = put * std::conj(times(along_x[std::size_t(i)], along_z[std::size_t(j)]));
+            double through = heave_speed * heave_[kept];
+            for (std::size_t b = 0; b < n; ++b) through += on_psi[b] * potential_read_[b][kept] + on_flow[b] * normal_read_[b][kept];
+            // At the hull's place (a source at x_s puts e^(-i k.x_s) into mode k), a value a cell.
+            spectrum[std::size_t(j) * std::size_t(cells_) + std::size_t(i)] =
+                through / cell_area_ * std::conj(times(along_x[std::size_t(i)], along_z[std::size_t(j)]));
         }
     field.fft().inverse(spectrum);
     std::vector<double> source(spectrum.size());

@@ -10,11 +10,15 @@
 //     surface's condition at the instant of a sudden motion): 1/(4 pi) (-1/r + 1/r'). Their
 //     strengths make the water's speed along the hull's normal the hull's own, each step;
 //   - a memory: the waves, which the wave field carries. The sources and their images put water
-//     through the surface, sigma e^(-k d) per mode for a source d deep: the field's volume source
-//     (Forcing::source). The field's potential reaches down as e^(k y).
+//     through the free surface round the hull: the field's volume source (Forcing::source). How
+//     much, mode by mode, Green's second identity over the water gives from the sources' flow and
+//     potential on the hull, so none goes through the water plane inside the hull (where the field
+//     has a surface the sea has not: fed there, it sloshed and grew; how_we_know.md). The field's
+//     potential reaches down as e^(k y).
 // The hull feels the pressure -rho dphi/dt of both on its surface: the first as an added mass that
 // moves with it (half the displaced water's, that of a sphere in open water), the second as the
-// waves' force, read from the field each step.
+// waves' force, read from the field each step through the same table that writes the water the
+// hull's heave puts through the surface: what the waves take from the hull, the hull gives them.
 //
 // The hull is a sphere cut by the still water: a hemisphere when its centre is at the surface,
 // step07's buoy (lighter than half its sphere's water) when its centre is above it. Bands of panels
@@ -64,17 +68,18 @@ public:
         double wave_force = 0;
     };
     Reading read(const WaveField& field, glm::dvec2 centre) const;
-    // The sources' strengths (m/s, per band) that give the hull heaving upwards at `heave_speed`
-    // (m/s) its own speed along its normal, the field's flow added as `reading` has it `ahead`
-    // seconds on (its rate times `ahead`: half a step, to hold the step's middle over the step);
-    // and what they put through the surface at `centre` (x, z), a value a cell (m/s), for
-    // Forcing::source.
-    std::vector<double> strengths(const Reading& reading, double heave_speed, double ahead) const;
-    std::vector<double> surface_source(const std::vector<double>& strengths, const WaveField& field, glm::dvec2 centre) const;
+    // What the sources that give the hull heaving upwards at `heave_speed` (m/s) its own speed
+    // along its normal, the field's flow there cancelled as `reading` has it `ahead` seconds on
+    // (its rate times `ahead`: half a step, to hold the step's middle over the step), put through
+    // the free surface round the hull centred at `centre` (x, z): a value a cell (m/s), for
+    // Forcing::source. Found by Green's identity from the sources' flow and potential on the hull,
+    // with the table the force is read with, so that the water and the hull trade energy alike.
+    std::vector<double> surface_source(const Reading& reading, double heave_speed, double ahead, const WaveField& field,
+                                       glm::dvec2 centre) const;
 
 private:
     // The strengths x with influence x = rhs: influence[i][j] the speed along the normal at band
-    // i's point per unit strength on band j, images included; its inverse is made once.
+    // i's point per unit strength on band j, images included; its inverse (S) is made once.
     std::vector<double> solve(const std::vector<double>& rhs) const;
 
     SourceHullSettings settings_;
@@ -83,14 +88,18 @@ private:
     std::vector<double> inverse_influence_;          // bands x bands, row major
     std::vector<double> potential_;  // [i][j]: the potential at band i's point per unit strength on band j
     double added_mass_ = 0;
+    std::vector<double> area_potential_;             // bands x bands: A_i (potential_ S)_ij
     // Per band and mode, for the hull centred at the grid's origin: the band's mean of a mode's
-    // flow along the normal per unit of the potential's transform (and of its pressure, per unit of
-    // -g eta^); and what a unit strength on the band puts through the surface, per cell. The panels
-    // are mirror-symmetric across x and z, so these are real and the same for (+-kx, +-kz): kept
-    // for a quarter of the modes, (|i|, |j|) up to n/2 (quarter()).
+    // flow along the normal per unit of the potential's transform, and of its potential. Per mode:
+    // the heave's table, the force on the hull per unit of a mode's dphi^/dt, which also writes the
+    // water its heave puts through the surface. The panels are mirror-symmetric across x and z, so
+    // these are real and the same for (+-kx, +-kz): kept for a quarter of the modes, (|i|, |j|) up
+    // to n/2 (quarter()).
     std::size_t quarter(int i, int j) const;
     int cells_ = 0;
-    std::vector<std::vector<double>> normal_read_, potential_read_, put_;
+    double cell_area_ = 0;
+    std::vector<std::vector<double>> normal_read_, potential_read_;
+    std::vector<double> heave_;
     // Each mode's phase at `centre`, e^(i k.(centre - x0)), as its x and z factors.
     void phases(const WaveField& field, glm::dvec2 centre, std::vector<Complex>& along_x, std::vector<Complex>& along_z) const;
 };

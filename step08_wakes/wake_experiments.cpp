@@ -220,7 +220,7 @@ HeaveRecord release_hemisphere_of_sources(const HeaveRelease& r) {
         z += v * r.dt;
         if (!r.with_waves) continue;
         // The sources that give the hull this step's speed, held over the step as the field's source.
-        forcing.source = hull.surface_source(hull.strengths(reading, v, 0.5 * r.dt), field, middle);
+        forcing.source = hull.surface_source(reading, v, 0.5 * r.dt, field, middle);
         field.step(r.dt, forcing);
     }
     return record;
@@ -256,7 +256,7 @@ HeaveCoefficients force_hemisphere_of_sources(const HeaveRelease& r, double nu, 
             with_cos += force * std::cos(omega * t) * r.dt;
             span += r.dt;
         }
-        forcing.source = hull.surface_source(hull.strengths(reading, speed(t + 0.5 * r.dt), 0.5 * r.dt), field, middle);
+        forcing.source = hull.surface_source(reading, speed(t + 0.5 * r.dt), 0.5 * r.dt, field, middle);
         field.step(r.dt, forcing);
     }
     // force = -A z'' - B z' = A amplitude omega^2 sin - B amplitude omega cos (the ramp over).
