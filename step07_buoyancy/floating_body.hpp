@@ -85,6 +85,11 @@ public:
     // velocities change by F dt / m and I^-1 tau dt, and the position and orientation move as
     // the step's substeps would have moved them (travel_per_acceleration).
     void add_water_push(glm::dvec3 force, glm::dvec3 torque, double dt);
+    // Water that moves with the body when it heaves (kg): its vertical motion answers to the
+    // vertical force over its mass plus this. None in step07 (see the header's last lines); step08
+    // gives its buoy the added mass of the sources on its hull (radiating_buoy.hpp).
+    void set_heave_added_mass(double kg) { heave_added_mass_ = kg; }
+    double heave_added_mass() const { return heave_added_mass_; }
     // How far a step of dt seconds moves a body per unit of a constant acceleration held over it:
     // semi-implicit Euler's n substeps of h = dt / n move it h^2 (1 + 2 + ... + n) = dt^2 (n + 1) / (2 n).
     static double travel_per_acceleration(double dt);
@@ -128,6 +133,7 @@ private:
     glm::dquat orientation_{1, 0, 0, 0};
     glm::dvec3 extra_force_{0.0}, extra_torque_{0.0};
     double submerged_volume_ = 0;
+    double heave_added_mass_ = 0;
     bool archimedes_ = true;
 };
 

@@ -149,6 +149,7 @@ private:
             // step07's sea: the field waits where the boat is, to take up from there.
             const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
             wake_->place({boat.position().x, boat.position().z}, {along.x, along.z});
+            if (buoy_sources_) buoy_sources_->let_go(bodies_[step07::kBuoy]);
             for (std::size_t b = 0; b < bodies_.size(); ++b)
                 if (b != step07::kBoat) {
                     if (!bodies_[b].archimedes()) wake_->lift_out(bodies_[b], feed_.before());
@@ -160,9 +161,16 @@ private:
             wake_ms_ = 0;
             return;
         }
-        // The raft, within the field, in contact with it: it moves with the field's steps and makes
-        // its waves; the buoy (and a raft outside the field) floats on the sea with the wake in it.
-        step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval()};
+        // The raft, within the field, in contact with it, and the buoy afloat within it, radiating:
+        // they move with the field's steps and make their waves; a body outside the field (or the
+        // buoy out of the water) floats on the sea with the wake in it.
+        step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval(), {}};
+        step07::FloatingBody& buoy = bodies_[step07::kBuoy];
+        const bool radiating = buoy_sources_ && buoy_sources_->holds(wake_->field(), buoy, feed_.before());
+        if (radiating)
+            in_contact.radiating.push_back({&buoy, buoy_sources_.get()});
+        else if (buoy_sources_)
+            buoy_sources_->let_go(buoy);
         for (std::size_t b = 0; b < bodies_.size(); ++b) {
             const bool contact = b != step07::kBoat && step08::can_touch(wake_->field(), bodies_[b]);
             // A body coming into the field brings its dent with it: the water under it settled
@@ -191,7 +199,8 @@ private:
         wake_now_ = step08::wake_maps(wake_->field(), sea_.choppiness());
         const step08::SeaWithWake before(feed_.before(), wake_before_), now(feed_.now(), wake_now_);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
-            if (b != step07::kBoat && bodies_[b].archimedes()) bodies_[b].step(before, now, dt, feed_.interval());
+            if (b != step07::kBoat && bodies_[b].archimedes() && !(b == step07::kBuoy && radiating))
+                bodies_[b].step(before, now, dt, feed_.interval());
         local_waves_.upload(wake_now_);
         sea_.add_local_waves(&local_waves_);
         wake_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
@@ -236,6 +245,7 @@ private:
         raft = step07::FloatingBody(r, {beside.x, afloat, beside.y}, raft.orientation());
         wake_settings_ = field_settings();
         wake_ = std::make_unique<step08::WakeScene>(wake_settings_);
+        buoy_sources_ = std::make_unique<step08::RadiatingBuoy>(wake_->field(), bodies_[step07::kBuoy]);
         step08::BoatSettings hull = hull_patch(boat);
         hull.speed = speed;
         const glm::dvec2 at(boat.position().x, boat.position().z);
@@ -277,9 +287,14 @@ private:
         } else if (wake_ && !bodies_.empty() && feed_.ready()) {
             step08::WakeScene scene = *wake_;
             std::vector<step07::FloatingBody> bodies = bodies_;
-            step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval()};
+            step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval(), {}};
             for (std::size_t b = 0; b < bodies.size(); ++b)
                 if (b != step07::kBoat && !bodies[b].archimedes()) in_contact.bodies.push_back(&bodies[b]);
+            std::unique_ptr<step08::RadiatingBuoy> sources;
+            if (buoy_sources_ && buoy_sources_->holds(scene.field(), bodies[step07::kBuoy], feed_.before())) {
+                sources = std::make_unique<step08::RadiatingBuoy>(*buoy_sources_);
+                in_contact.radiating.push_back({&bodies[step07::kBuoy], sources.get()});
+            }
             try {
                 time_frames([&] {
                     bodies[step07::kBoat].step(feed_.before(), feed_.now(), 1.0 / 60, feed_.interval());
@@ -388,6 +403,7 @@ private:
     unsigned bodies_built_for_ = 0;
     // The wake: its field, its maps last frame and now, and the textures step06's shaders read.
     std::unique_ptr<step08::WakeScene> wake_;
+    std::unique_ptr<step08::RadiatingBuoy> buoy_sources_;  // the buoy's, for the field's grid
     step08::WaveFieldSettings wake_settings_;
     step06::LocalWaveMaps wake_before_, wake_now_;
     step06::LocalWaves local_waves_;

@@ -1,6 +1,9 @@
 #include "step08_wakes/wake_experiments.hpp"
 
+#include "step08_wakes/radiating_buoy.hpp"
 #include "step08_wakes/source_hull.hpp"
+
+#include "step07_buoyancy/sea_query.hpp"
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
@@ -262,6 +265,37 @@ HeaveCoefficients force_hemisphere_of_sources(const HeaveRelease& r, double nu, 
     // force = -A z'' - B z' = A amplitude omega^2 sin - B amplitude omega cos (the ramp over).
     const double in_sin = 2 * with_sin / span, in_cos = 2 * with_cos / span;
     return {nu, in_sin / (amplitude * omega * omega) / hull.volume(), -in_cos / (amplitude * omega) / (hull.volume() * omega)};
+}
+
+HeaveRecord run_buoy(const BuoyRun& run) {
+    WaveField field(deep_field(run.n, run.cell, 0.125, 3));
+    const SourceHullSettings cap = floating_sphere(run.buoy);
+    const glm::dvec2 middle = grid_middle(field);
+    const double R = cap.radius, c = cap.centre_height;
+    step07::FloatingBody buoy(run.buoy, {middle.x, c + run.lift, middle.y});
+    RadiatingBuoy sources(field, buoy);
+    HeaveRecord record;
+    record.rest = c;
+    record.waterplane = ocean::kPi * (R * R - c * c);
+    Forcing forcing;
+    const int steps = int(std::lround(run.seconds / run.dt));
+    for (int s = 0; s <= steps; ++s) {
+        const step07::GerstnerSea before({run.swell}, s * run.dt), now({run.swell}, (s + 1) * run.dt);
+        const glm::dvec3 at = buoy.position();
+        record.time.push_back(s * run.dt);
+        record.height.push_back(at.y - c - step07::query(before, {at.x, at.z}).height);
+        // As the program: the sources while they hold, step07's body on the sea while they do not.
+        if (run.with_waves && sources.holds(field, buoy, before)) {
+            forcing.source.clear();
+            sources.step(field, buoy, before, now, run.dt, run.dt, forcing);
+            field.step(run.dt, forcing);
+        } else {
+            sources.let_go(buoy);
+            buoy.step(before, now, run.dt, run.dt);
+            if (run.with_waves) field.step(run.dt);
+        }
+    }
+    return record;
 }
 
 Decay measure_decay(const HeaveRecord& record, int crests) {

@@ -2,6 +2,8 @@
 // physics and what the README's figures plot (./ocean figures), so the numbers quoted are the code's.
 #pragma once
 
+#include "step07_buoyancy/floating_body.hpp"
+#include "step07_buoyancy/sea_surface.hpp"
 #include "step08_wakes/wave_field.hpp"
 
 #include <vector>
@@ -84,6 +86,24 @@ struct HeaveCoefficients {
     double nu = 0, added_mass = 0, damping = 0;
 };
 HeaveCoefficients force_hemisphere_of_sources(const HeaveRelease& release, double nu, int periods);
+
+// One of step07's spheres (the program's buoy) afloat in a wave field, radiating through its
+// sources as the program runs it (radiating_buoy.hpp): released `lift` metres above its rest on
+// calm water, or riding a swell (one Gerstner wave; amplitude 0: calm). `with_waves` false:
+// step07's body alone (Archimedes and drag, no added mass, no waves). The record's height is the
+// sphere's centre above its rest on the sea under it (rest: its centre's height afloat in still
+// water); waterplane, the cap's.
+struct BuoyRun {
+    step07::BodySettings buoy;     // a sphere
+    step07::GerstnerWave swell{0.0};
+    double lift = 0.05;            // m
+    double seconds = 10;
+    double dt = 1.0 / 60;
+    bool with_waves = true;
+    int n = 128;
+    double cell = 0.5;             // m
+};
+HeaveRecord run_buoy(const BuoyRun& run);
 
 // A decaying oscillation read from its first `crests` crests after the release: the damped
 // period, the damping ratio (from the logarithmic decrement delta between successive crests,

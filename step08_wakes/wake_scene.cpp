@@ -78,12 +78,19 @@ void WakeScene::press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const 
             forcing_.pressure[std::size_t(j) * std::size_t(n) + std::size_t(i)] =
                 hull_pressure(hull, {d.x * ahead.x + d.y * ahead.y, d.x * across.x + d.y * across.y});
         }
-    if (bodies == nullptr || bodies->bodies.empty()) {
+    forcing_.source.clear();
+    if (bodies == nullptr) {
         field_.step(h, forcing_);
         return;
     }
     const SeaBetween sea_from(*bodies->before, *bodies->now, from), sea_to(*bodies->before, *bodies->now, to);
-    step_with_bodies(field_, bodies->bodies, sea_from, sea_to, h, bodies->sea_interval * (to - from), forcing_);
+    const double sea_interval = bodies->sea_interval * (to - from);
+    // The buoys move first and hand their sources to this step's forcing, beside the hull's pressure.
+    for (const Radiating& buoy : bodies->radiating) buoy.sources->step(field_, *buoy.body, sea_from, sea_to, h, sea_interval, forcing_);
+    if (bodies->bodies.empty())
+        field_.step(h, forcing_);
+    else
+        step_with_bodies(field_, bodies->bodies, sea_from, sea_to, h, sea_interval, forcing_);
 }
 
 void WakeScene::settle_under(const step07::FloatingBody& body, const step07::Surface& sea) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "step07_buoyancy/floating_body.hpp"
+#include "step08_wakes/radiating_buoy.hpp"
 #include "step08_wakes/wave_field.hpp"
 
 #include <glm/vec2.hpp>
@@ -31,13 +32,21 @@ double hull_pressure(const BoatSettings& boat, glm::dvec2 along_across);
 // submerged volume its buoyancy already gives.
 BoatSettings hull_of(double length, double submerged_volume);
 
-// step07's bodies a press carries along in its steps, in contact with the field (hull_contact.hpp):
-// each step moves them with the field, over the part of the frame it covers.
+// A buoy and its sources (radiating_buoy.hpp).
+struct Radiating {
+    step07::FloatingBody* body = nullptr;
+    RadiatingBuoy* sources = nullptr;
+};
+
+// step07's bodies a press carries along in its steps, in contact with the field (hull_contact.hpp)
+// or radiating into it (radiating_buoy.hpp): each step moves them with the field, over the part of
+// the frame it covers.
 struct BodiesInContact {
     std::vector<step07::FloatingBody*> bodies;  // such as the contact takes (can_touch)
     const step07::Surface* before = nullptr;   // the incident sea at the frame's start and end
     const step07::Surface* now = nullptr;
     double sea_interval = 0;                   // seconds between those two seas
+    std::vector<Radiating> radiating;          // such as their sources hold for (RadiatingBuoy::holds)
 };
 
 class WakeScene {

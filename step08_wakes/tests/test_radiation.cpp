@@ -8,8 +8,12 @@
 //     draft, whose waves are not weakened by depth as a real hull's are (e^(-k d) for a hull d
 //     deep): it radiates more and drags more water than the hemisphere; held to Hulme within a
 //     factor of two (measured: damping 1.7 times Hulme's, added mass 2.0 times).
+#include "step08_wakes/radiating_buoy.hpp"
 #include "step08_wakes/source_hull.hpp"
 #include "step08_wakes/wake_experiments.hpp"
+
+#include "step07_buoyancy/bodies.hpp"
+#include "step07_buoyancy/body_params.hpp"
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
@@ -251,3 +255,66 @@ TEST(Step08Radiation, WithoutItsWavesItRingsForEver) {
 }
 
 }  // namespace
+
+// The program's buoy, as the program runs it (radiating_buoy.hpp: step07's body with Archimedes on
+// the sea, the sources' added mass on its heave and the waves' force added to it): a sphere of half
+// the water's density floats as a hemisphere, so the test holds it to Hulme as well, within
+// 30 %, on the tests' grid (25 cm cells), without drag.
+TEST(Step08RadiatingBuoy, AFloatingSphereOfHalfTheWatersDensityDecaysAsHulmePredicts) {
+    step08::BuoyRun run;
+    run.buoy.shape = {step07::ShapeKind::Sphere, glm::dvec3(2.0)};
+    run.buoy.density = 0.5 * step07::kWaterDensity;
+    run.buoy.linear_drag = run.buoy.angular_drag = 0;
+    run.cell = 0.25;
+    const step08::HeaveRecord record = step08::run_buoy(run);
+    EXPECT_NEAR(record.rest, 0.0, 1e-9) << "afloat as a hemisphere";
+    const step08::Decay decay = step08::measure_decay(record, 4);
+    ASSERT_EQ(decay.crests, 4);
+    const Coefficients model = from_decay(decay, record.waterplane, 1.0);
+    const HulmeRow hulme = hulme_at(model.nu);
+    std::cout << "the program's buoy as a hemisphere: period " << decay.period << " s, damping ratio " << decay.damping_ratio
+              << ": added mass " << model.added_mass << " (Hulme " << hulme.added_mass << "), damping " << model.damping
+              << " (Hulme " << hulme.damping << ")" << std::endl;
+    EXPECT_NEAR(model.damping / hulme.damping, 1.0, 0.3);
+    EXPECT_NEAR(model.added_mass / hulme.added_mass, 1.0, 0.3);
+}
+
+// What a user sees: the default buoy, let go 5 cm above its rest on calm water on the program's
+// grid (50 cm cells), settles faster with the waves it makes than on step07's drag alone.
+TEST(Step08RadiatingBuoy, TheBuoyLosesItsSwingToTheWavesItMakes) {
+    step08::BuoyRun run;
+    run.buoy = step07::body_settings(step07::BodyParams{})[step07::kBuoy];
+    const step08::Decay radiating = step08::measure_decay(step08::run_buoy(run), 4);
+    run.with_waves = false;
+    const step08::Decay alone = step08::measure_decay(step08::run_buoy(run), 4);
+    ASSERT_EQ(radiating.crests, 4);
+    ASSERT_EQ(alone.crests, 4);
+    std::cout << "the default buoy: damping ratio " << radiating.damping_ratio << " with its waves, " << alone.damping_ratio
+              << " on drag alone; period " << radiating.period << " s and " << alone.period << " s" << std::endl;
+    EXPECT_GT(radiating.damping_ratio, alone.damping_ratio + 0.04);
+    EXPECT_GT(radiating.period, alone.period) << "the water it carries makes it slower";
+}
+
+// The symptom: on a swell near its own period (12 m waves, 2.8 s, 0.5 m high), step07's
+// buoy swings so far about the sea's surface that it leaves the water (its centre more than a
+// radius from the surface); with the waves it makes, it stays in it. Over 10 to 40 s.
+TEST(Step08RadiatingBuoy, OnASwellTheBuoyStaysInTheWater) {
+    step08::BuoyRun run;
+    run.buoy = step07::body_settings(step07::BodyParams{})[step07::kBuoy];
+    run.swell.amplitude = 0.5, run.swell.wavelength = 12;
+    run.lift = 0, run.seconds = 40;
+    const auto widest = [](const step08::HeaveRecord& record) {
+        double most = 0;
+        for (std::size_t i = 0; i < record.time.size(); ++i)
+            if (record.time[i] >= 10) most = std::max(most, std::abs(record.height[i]));
+        return most;
+    };
+    const double radius = 0.5 * run.buoy.shape.size.x;
+    const double radiating = widest(step08::run_buoy(run));
+    run.with_waves = false;
+    const double alone = widest(step08::run_buoy(run));
+    std::cout << "on the swell: farthest from its rest on the sea " << radiating << " m with its waves, " << alone
+              << " m alone (radius " << radius << " m)" << std::endl;
+    EXPECT_GT(alone, radius) << "step07's buoy leaves the water";
+    EXPECT_LT(radiating, 0.6 * radius);
+}
