@@ -75,6 +75,7 @@ public:
             p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat has sailed before the first frame");
             p.add_bool("follow_boat", &follow_boat_, "the camera keeps the boat where it is in the view");
             p.add_bool("show_wake", &show_wake_, "the wake added to the sea (off: step07's sea, which no body disturbs)");
+            p.add_bool("buoy_waves", &buoy_waves_, "the buoy makes waves as it heaves (off: it rides the wake on step07's Archimedes)");
         }
         plan_view_.declare(p);
         use_camera({{0, 0, 0}, 45, 35, 22}, ocean::kOceanReach);
@@ -166,7 +167,7 @@ private:
         // buoy out of the water) floats on the sea with the wake in it.
         step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval(), {}};
         step07::FloatingBody& buoy = bodies_[step07::kBuoy];
-        const bool radiating = buoy_sources_ && buoy_sources_->holds(wake_->field(), buoy, feed_.before());
+        const bool radiating = buoy_waves_ && buoy_sources_ && buoy_sources_->holds(wake_->field(), buoy, feed_.before());
         if (radiating)
             in_contact.radiating.push_back({&buoy, buoy_sources_.get()});
         else if (buoy_sources_)
@@ -245,7 +246,14 @@ private:
         raft = step07::FloatingBody(r, {beside.x, afloat, beside.y}, raft.orientation());
         wake_settings_ = field_settings();
         wake_ = std::make_unique<step08::WakeScene>(wake_settings_);
-        buoy_sources_ = std::make_unique<step08::RadiatingBuoy>(wake_->field(), bodies_[step07::kBuoy]);
+        try {
+            buoy_sources_ = std::make_unique<step08::RadiatingBuoy>(wake_->field(), bodies_[step07::kBuoy]);
+        } catch (const ocean::Error& failure) {
+            // A buoy as dense as the water (it sinks) or too large for the grid has no sources: it
+            // rides the wake on step07's Archimedes.
+            std::cerr << "warning: " << failure.what() << "; the buoy rides the wake without making waves\n";
+            buoy_sources_.reset();
+        }
         step08::BoatSettings hull = hull_patch(boat);
         hull.speed = speed;
         const glm::dvec2 at(boat.position().x, boat.position().z);
@@ -291,7 +299,7 @@ private:
             for (std::size_t b = 0; b < bodies.size(); ++b)
                 if (b != step07::kBoat && !bodies[b].archimedes()) in_contact.bodies.push_back(&bodies[b]);
             std::unique_ptr<step08::RadiatingBuoy> sources;
-            if (buoy_sources_ && buoy_sources_->holds(scene.field(), bodies[step07::kBuoy], feed_.before())) {
+            if (buoy_waves_ && buoy_sources_ && buoy_sources_->holds(scene.field(), bodies[step07::kBuoy], feed_.before())) {
                 sources = std::make_unique<step08::RadiatingBuoy>(*buoy_sources_);
                 in_contact.radiating.push_back({&bodies[step07::kBuoy], sources.get()});
             }
@@ -408,7 +416,7 @@ private:
     step06::LocalWaveMaps wake_before_, wake_now_;
     step06::LocalWaves local_waves_;
     step08::PlanView plan_view_;
-    bool plan_ = false, follow_boat_ = true, show_wake_ = true;
+    bool plan_ = false, follow_boat_ = true, show_wake_ = true, buoy_waves_ = true;
     bool contact_failed_ = false;  // warned once
     float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;
     int cells_choice_ = 1;

@@ -12,6 +12,8 @@ namespace step08 {
 
 SourceHullSettings floating_sphere(const step07::BodySettings& sphere) {
     if (sphere.shape.kind != step07::ShapeKind::Sphere) throw ocean::Error("radiating buoy: only a sphere has a source hull");
+    if (!(sphere.density > 0 && sphere.density < step07::kWaterDensity))
+        throw ocean::Error("radiating buoy: a sphere floats only if it is lighter than the water");
     SourceHullSettings s;
     s.radius = 0.5 * sphere.shape.size.x;
     s.bands = 8;
