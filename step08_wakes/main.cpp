@@ -167,7 +167,7 @@ private:
         // buoy out of the water) floats on the sea with the wake in it.
         step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval(), {}};
         step07::FloatingBody& buoy = bodies_[step07::kBuoy];
-        const bool radiating = buoy_waves_ && buoy_sources_ && buoy_sources_->holds(wake_->field(), buoy, feed_.before());
+        const bool radiating = buoy_radiates(wake_->field(), buoy);
         if (radiating)
             in_contact.radiating.push_back({&buoy, buoy_sources_.get()});
         else if (buoy_sources_)
@@ -205,6 +205,11 @@ private:
         local_waves_.upload(wake_now_);
         sea_.add_local_waves(&local_waves_);
         wake_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    }
+
+    // Whether the buoy makes waves this frame: switched on, with sources, and as they hold for it.
+    bool buoy_radiates(const step08::WaveField& field, const step07::FloatingBody& buoy) const {
+        return buoy_waves_ && buoy_sources_ && buoy_sources_->holds(field, buoy, feed_.before());
     }
 
     // The hull's patch pressed on the field over dt, from where it was to where the boat is now.
@@ -299,7 +304,7 @@ private:
             for (std::size_t b = 0; b < bodies.size(); ++b)
                 if (b != step07::kBoat && !bodies[b].archimedes()) in_contact.bodies.push_back(&bodies[b]);
             std::unique_ptr<step08::RadiatingBuoy> sources;
-            if (buoy_waves_ && buoy_sources_ && buoy_sources_->holds(scene.field(), bodies[step07::kBuoy], feed_.before())) {
+            if (buoy_radiates(scene.field(), bodies[step07::kBuoy])) {
                 sources = std::make_unique<step08::RadiatingBuoy>(*buoy_sources_);
                 in_contact.radiating.push_back({&bodies[step07::kBuoy], sources.get()});
             }

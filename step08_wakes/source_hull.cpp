@@ -66,7 +66,7 @@ SourceHull::SourceHull(const WaveField& field, const SourceHullSettings& s) : se
     // condition is held (the middle of its first panel: all of a band's panels are alike).
     std::vector<Piece> parts, middles;
     band_area_.assign(std::size_t(bands_), 0.0);
-    band_normal_y_.assign(std::size_t(bands_), 0.0);
+    std::vector<double> band_normal_y(std::size_t(bands_), 0.0);  // the normals' mean vertical part
     for (int b = 0; b < bands_; ++b) {
         const double t0 = waterline * b / bands_, t1 = waterline * (b + 1) / bands_;
         const double around = ocean::kTwoPi / s.around;
@@ -80,10 +80,10 @@ SourceHull::SourceHull(const WaveField& field, const SourceHullSettings& s) : se
                     const double t = 0.5 * (ta + tb), a = 0.5 * (a0 + a1);
                     parts.push_back({on_sphere(R, t, a, c), on_sphere(1, t, a), area, b});
                     band_area_[std::size_t(b)] += area;
-                    band_normal_y_[std::size_t(b)] += area * on_sphere(1, t, a).y;
+                    band_normal_y[std::size_t(b)] += area * on_sphere(1, t, a).y;
                 }
     }
-    for (int b = 0; b < bands_; ++b) band_normal_y_[std::size_t(b)] /= band_area_[std::size_t(b)];
+    for (int b = 0; b < bands_; ++b) band_normal_y[std::size_t(b)] /= band_area_[std::size_t(b)];
 
     // The instantaneous part: a unit source at each part with its image sink mirrored above the
     // surface (image_source.hpp). A sheet of sources sends half its water to each side, so a band's
@@ -91,13 +91,13 @@ SourceHull::SourceHull(const WaveField& field, const SourceHullSettings& s) : se
     // part nearest a band's point is half a part away, and 1/r is integrable).
     const auto n = std::size_t(bands_);
     std::vector<double> influence(n * n, 0.0);  // along the normal at band i per unit strength on band j
-    potential_.assign(n * n, 0.0);
+    std::vector<double> potential(n * n, 0.0);  // at band i's point per unit strength on band j
     for (std::size_t i = 0; i < n; ++i) {
         influence[i * n + i] += 0.5;
         const Piece& m = middles[i];
         for (const Piece& q : parts) {
             const SourceAt unit = source_with_image(m.at, q.at, m.normal);
-            potential_[i * n + std::size_t(q.band)] += q.area * unit.potential;
+            potential[i * n + std::size_t(q.band)] += q.area * unit.potential;
             influence[i * n + std::size_t(q.band)] += q.area * unit.along;
         }
     }
@@ -114,16 +114,16 @@ SourceHull::SourceHull(const WaveField& field, const SourceHullSettings& s) : se
     // alpha: each band's area times its normal's vertical part, the weights that sum a pressure on
     // the hull into an upward force.
     std::vector<double> alpha(n);
-    for (std::size_t i = 0; i < n; ++i) alpha[i] = band_area_[i] * band_normal_y_[i];
-    const std::vector<double> unit_heave = solve(band_normal_y_);
+    for (std::size_t i = 0; i < n; ++i) alpha[i] = band_area_[i] * band_normal_y[i];
+    const std::vector<double> unit_heave = solve(band_normal_y);
     for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) added_mass_ -= alpha[i] * potential_[i * n + j] * unit_heave[j];
+        for (std::size_t j = 0; j < n; ++j) added_mass_ -= alpha[i] * potential[i * n + j] * unit_heave[j];
     // The sources' potential on band i per unit of the flow they cancel on band j, times band i's
     // area: what Green's identity weighs a mode's flow with (surface_source).
     area_potential_.assign(n * n, 0.0);
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j)
-            for (std::size_t m = 0; m < n; ++m) area_potential_[i * n + j] += band_area_[i] * potential_[i * n + m] * inverse_influence_[m * n + j];
+            for (std::size_t m = 0; m < n; ++m) area_potential_[i * n + j] += band_area_[i] * potential[i * n + m] * inverse_influence_[m * n + j];
 
     // The memory part, mode by mode, for the hull centred at the grid's origin. A field mode
     // phi^ e^(i k.x) / N^2 (N^2 the inverse transform's scale) reaches down as e^(|k| y): along the
@@ -152,11 +152,11 @@ SourceHull::SourceHull(const WaveField& field, const SourceHullSettings& s) : se
         }
     // The heave's table, read and written alike (surface_source): the force a mode's pressure puts
     // on the hull, its own pressure on the hull less the change of the sources that cancel its flow,
-    // sum_i alpha_i (Psi_i - sum_j P_ij N_j) with P = potential_ S (S the influence's inverse): per
-    // unit of dphi^/dt. Its transpose weighs the flow by (S^T potential_^T alpha).
+    // sum_i alpha_i (Psi_i - sum_j P_ij N_j) with P = potential S (S the influence's inverse): per
+    // unit of dphi^/dt. Its transpose weighs the flow by (S^T potential^T alpha).
     std::vector<double> through(n, 0.0), weighed(n, 0.0);
     for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t m = 0; m < n; ++m) through[m] += alpha[i] * potential_[i * n + m];
+        for (std::size_t m = 0; m < n; ++m) through[m] += alpha[i] * potential[i * n + m];
     for (std::size_t m = 0; m < n; ++m)
         for (std::size_t j = 0; j < n; ++j) weighed[j] += through[m] * inverse_influence_[m * n + j];
     heave_.assign(kept, 0.0);
