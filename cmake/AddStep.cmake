@@ -7,13 +7,13 @@
 #  - its shaders and README listed in the target (IDEs show them; shaders are read from the
 #    source tree at run time, so edits hot-reload),
 #  - with TESTS, the chapter's own GoogleTest files on the CPU, built into NAME_tests (linked with
-#    NAME_lib) and run by ctest as NAME.<suite>.<test>, labelled unit and NAME,
+#    NAME_lib) and run by ctest as NAME.<suite>.<test>, labelled unit, core and NAME,
 #  - with GPU_TESTS, its GoogleTest files that need GL, built into NAME_gpu_tests with tests/gpu's
-#    headless context (gpu_main.cpp) and run as NAME.<suite>.<test>, labelled gpu and NAME,
+#    headless context (gpu_main.cpp) and run as NAME.<suite>.<test>, labelled gpu, core and NAME,
 #  - with TEST_SHADERS, the shaders only its GPU tests load (in the lists every shader must pass),
 #  - with EXERCISES, the chapter's exercise list (STEP/exercises.cpp), compiled into exercises/exercise,
-#  - its smoke test: a headless run compared with GOLDEN (default the folder's golden.png),
-#  - its windowed run under Xvfb,
+#  - its smoke test: a headless run compared with GOLDEN (default the folder's golden.png), core,
+#  - its windowed run under Xvfb (not in the sanitizer build),
 #  - OCEAN_STEP set to NAME in the chapter's CMakeLists.txt, for step_test() below,
 #  - its entry in the lists the shader, bad-input and catalogue tests walk (OCEAN_STEPS,
 #    OCEAN_SHADERS).
@@ -74,17 +74,23 @@ function(add_step name)
     return()
   endif()
 
-  # The chapter's test executables: NAME_tests (CPU) and NAME_gpu_tests (a headless GL context).
-  # The portable build runs the CPU tests; the GPU tests read results back with compute shaders
-  # and GL 4.5 calls (their reference is the default build's).
+  # The chapter's test executables: NAME_tests (CPU) and NAME_gpu_tests (a headless GL context),
+  # both in the core tier. Each build declares (and so builds) only the tests worth running in it
+  # (the top CMakeLists.txt, "The tests a build declares"): the portable builds leave out the CPU
+  # tests, whose results no GL profile changes, and the GPU tests, which read results back with
+  # compute shaders and GL 4.5 calls; the sanitizer build leaves out the GPU tests, which check
+  # llvmpipe's arithmetic more than our C++ at thirty times the cost.
   foreach(kind tests gpu_tests)
     if(kind STREQUAL "tests")
       set(files ${ARG_TESTS})
-      set(labels "unit;${name}")
+      set(labels "unit;core;${name}")
+      if(OCEAN_GL_PORTABLE)
+        set(files "")
+      endif()
     else()
       set(files ${ARG_GPU_TESTS})
-      set(labels "gpu;${name}")
-      if(OCEAN_GL_PORTABLE)
+      set(labels "gpu;core;${name}")
+      if(OCEAN_GL_PORTABLE OR OCEAN_SANITIZE)
         set(files "")
         set(ARG_TEST_SHADERS "")
       endif()
@@ -146,8 +152,11 @@ function(add_step name)
   add_test(NAME ${name}.smoke
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/smoke.sh" $<TARGET_FILE:${name}>
             $<TARGET_FILE:image_compare> "${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke/${name}")
-  set_tests_properties(${name}.smoke PROPERTIES LABELS "smoke;gpu;${name}" TIMEOUT 300)
+  set_tests_properties(${name}.smoke PROPERTIES LABELS "smoke;gpu;core;${name}" TIMEOUT 300)
 
+  if(OCEAN_SANITIZE)
+    return()  # a real window runs the same C++ as the headless smoke test
+  endif()
   add_test(NAME ${name}.windowed
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/windowed.sh" $<TARGET_FILE:${name}>)
   # RESOURCE_LOCK: two `xvfb-run -a` starting at once can race for the same display number.

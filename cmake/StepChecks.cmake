@@ -3,10 +3,20 @@
 # labelled <kind> and STEP. The harness scripts stay in tests/ (shared by every chapter); the
 # chapter's own scripts sit in STEP/tests/.
 
+# The tiers (README "Tests"). A check of one of these kinds is in the core tier, labelled core:
+# what a learner needs to trust a chapter, which `./ocean test` runs. Every other check runs under
+# `./ocean test --all` and in CI.
+set(OCEAN_CORE_KINDS smoke split physics picture export)
+# The sanitizer build (asan) declares only the checks whose C++ ASan and UBSan can judge at a
+# sensible cost: bad input and the small physics and export runs (its GPU pictures would run on
+# llvmpipe thirty times slower, checking Mesa's code more than ours). Label "long" stays out.
+set(OCEAN_SANITIZER_KINDS bad_input physics export)
+
 # step_test(KIND CASE COMMAND ... [LABELS ...] [TIMEOUT s] [PROPERTIES ...]): one more test of the
 # chapter whose CMakeLists.txt calls it (after add_step), registered there with the chapter:
-# named STEP.KIND.CASE (STEP.KIND when CASE is ""), labelled KIND, LABELS and STEP. COMMAND may
-# use the shared harness scripts (OCEAN_TESTS_DIR) and the tools' targets ($<TARGET_FILE:...>).
+# named STEP.KIND.CASE (STEP.KIND when CASE is ""), labelled KIND, LABELS and STEP, and core for
+# the kinds above. COMMAND may use the shared harness scripts (OCEAN_TESTS_DIR) and the tools'
+# targets ($<TARGET_FILE:...>).
 function(step_test kind case)
   if(EMSCRIPTEN)
     return()  # the browser build has its own tests (tests/web)
@@ -14,6 +24,9 @@ function(step_test kind case)
   cmake_parse_arguments(ARG "" "TIMEOUT" "COMMAND;LABELS;PROPERTIES" ${ARGN})
   if(NOT OCEAN_STEP)
     message(FATAL_ERROR "step_test(${kind} ${case}) outside a chapter: call add_step first")
+  endif()
+  if(OCEAN_SANITIZE AND (NOT kind IN_LIST OCEAN_SANITIZER_KINDS OR "long" IN_LIST ARG_LABELS))
+    return()
   endif()
   set(test_name "${OCEAN_STEP}.${kind}")
   if(NOT case STREQUAL "")
@@ -23,6 +36,9 @@ function(step_test kind case)
     set(ARG_TIMEOUT 120)
   endif()
   set(labels ${kind} ${ARG_LABELS} ${OCEAN_STEP})
+  if(kind IN_LIST OCEAN_CORE_KINDS)
+    list(APPEND labels core)
+  endif()
   add_test(NAME ${test_name} COMMAND ${ARG_COMMAND})
   set_tests_properties(${test_name} PROPERTIES LABELS "${labels}"
                        TIMEOUT ${ARG_TIMEOUT} ${ARG_PROPERTIES})
@@ -30,8 +46,16 @@ endfunction()
 
 # step_bad_input(CASE EXPECT ARGS...): the chapter's own bad input (beyond the cases every step
 # gets): the step run with ARGS must exit non-zero, not crash, and print one "error:" line matching
-# the regular expression EXPECT (tests/cli/bad_input.sh).
+# the regular expression EXPECT (tests/cli/bad_input.sh). Refused before any GL, so the portable
+# builds leave it to the default build.
 function(step_bad_input case expect)
+  if(NOT OCEAN_GL_PORTABLE)
+    step_refuses(${case} "${expect}" ${ARGN})
+  endif()
+endfunction()
+
+# step_refuses(CASE EXPECT ARGS...): step_bad_input's test, in every build.
+function(step_refuses case expect)
   if(EMSCRIPTEN)
     return()  # the browser build has its own tests (tests/web)
   endif()
@@ -43,12 +67,10 @@ endfunction()
 
 # step_broken_shader(CASE SHADER ARGS...): a copy of the chapter's shaders/ with SHADER broken,
 # given as --shader-dir: the step run with ARGS must name SHADER's program and file:line in its one
-# error line. For shaders the chapter's own classes load (not through the App's programs).
+# error line. For shaders the chapter's own classes load (not through the App's programs). Each
+# GL profile compiles the shader its own way, so every build runs it.
 function(step_broken_shader case shader)
-  if(EMSCRIPTEN)
-    return()  # the browser build has its own tests (tests/web)
-  endif()
-  step_bad_input(${case} ${shader} ${ARGN})
+  step_refuses(${case} ${shader} ${ARGN})
 endfunction()
 
 # step_smoke(CASE GOLDEN ARGS...): a headless run with ARGS compared with the chapter's GOLDEN

@@ -24,18 +24,9 @@ foreach(_case IN LISTS _cases ITEMS "step07_buoyancy;steer_push" "step04_fbm;dra
   endif()
   set(_name ${_step}.window_input.${_kind})
   add_test(NAME ${_name} COMMAND bash "${_window_input}" ${_kind} $<TARGET_FILE:${_step}> ${_flags})
-  # The arrows are read as held once a frame. Under the sanitizers step07 draws a frame every 4 to
-  # 5 s at 640x360 (its sea's pass alone 4.6 s there, 35 ms without them), so a 1 s hold can fall
-  # between two frames: there they are held 16 s (12 s moved the boat 2.95 to 3.3 m, too near the
-  # 2 m the test asks on a slower machine; 6 s, 1.3 m).
-  set(_hold 1)
+  set(_hold 1)        # seconds the arrows are held (read as held once a frame)
   set(_frame_wait 10)  # seconds for what was sent within one frame to show (window_input.sh)
   set(_timeout 120)
-  if(OCEAN_SANITIZE)
-    set(_hold 16)
-    set(_frame_wait 30)
-    set(_timeout 240)
-  endif()
   set_tests_properties(${_name} PROPERTIES LABELS "windowed;gpu;${_step}" TIMEOUT ${_timeout} SKIP_RETURN_CODE 77
                                            RUN_SERIAL TRUE
                                            ENVIRONMENT "XDG_CONFIG_HOME=${CMAKE_BINARY_DIR}/test-output/config;ARROWS_HELD_S=${_hold};FRAME_WAIT_S=${_frame_wait}")
