@@ -9,6 +9,9 @@
 #   ok NAME ARGS...               exit 0: valid input, cheap to run for real
 #   dry NAME ARGS...              exit 0 and a "dry run" line under OCEAN_DRY_RUN=1: valid input
 #                                 whose real run would be long (the boundaries of each range)
+#   dry_says NAME REGEX ARGS...   the same, the line matching REGEX (./ocean test's tiers)
+# compare, bench, figures, animations and gallery are tools/ocean_tools.py's: argparse's messages,
+# still one line each, "ocean: error: COMMAND: argument --flag: ..." (--help: exit 0, no build).
 # After every row: the canary file that the hostile strings try to create does not exist, the
 # row's own TMPDIR (an empty folder) is empty again, and `git status` of the repository (build/,
 # screenshots/ and __pycache__/ aside: other tests write there) is what it was before the row.
@@ -93,6 +96,16 @@ dry() {
   verdict "$name"
 }
 
+dry_says() {  # dry_says NAME REGEX ARGS...: a dry run whose line ends as REGEX (grep -E) says
+  local name=$1 regex=$2
+  shift 2
+  argv=("$@")
+  call "$name" OCEAN_DRY_RUN=1
+  [ "$status" -eq 0 ] || problems+=("exit $status, not 0")
+  grep -Eq -- "^ocean: dry run: .*$regex" "$out/$name.stdout" || problems+=("no dry run line with '$regex': $(head -c 200 "$out/$name.stdout")")
+  verdict "$name"
+}
+
 # Hostile text: regular expressions, globs, quotes, command substitution, paths out of the tree.
 sub="\$(touch $canary)" tick="\`touch $canary\`" semi="x; touch $canary" quote="1'; touch $canary; '"
 
@@ -117,90 +130,109 @@ fail run_newline                     "run: unknown step 'step01_sine2d?x'" run $
 fail run_huge                        "run: unknown step '999"        run "$huge"
 ok   run_list_params                 run step01_sine2d --list-params
 dry  run_newest                      run --headless --frames 2
-# --- test (its arguments are ctest's, passed on as words) ---
+# --- test (its arguments are ctest's, passed on as words; the core tier unless --all or a selection) ---
 dry  test_arguments                  test -R "x;$semi" -L "$sub"
-# --- compare ---
-fail compare_bracket                 "compare: unknown step 'step0[1]_sine2d'" compare 'step0[1]_sine2d'
-fail compare_glob                    "compare: unknown step"         compare 'step[0-9][0-9]_*'
-fail compare_time_missing            "compare: --time needs a value" compare --time
-fail compare_size_missing            "compare: --size needs a value" compare --size
-fail compare_camera_missing          "compare: --camera needs a value" compare --camera
-fail compare_set_missing             "compare: --set needs a value"  compare --set
-fail compare_out_missing             "compare: --out needs a value"  compare --out
-fail compare_time_word               "compare: --time expects a decimal number in [0, 1e9], got 'abc'" compare --time abc
-fail compare_time_nan                "--time expects a decimal"      compare --time nan
-fail compare_time_inf                "--time expects a decimal"      compare --time inf
-fail compare_time_exponent           "--time expects a decimal"      compare --time 1e999
-fail compare_time_negative           "--time expects a decimal"      compare --time -1
-fail compare_time_huge               "--time expects a decimal"      compare --time 99999999999999999999
-fail compare_time_two_points         "--time expects a decimal"      compare --time 1.5.2
-fail compare_time_empty              "--time expects a decimal"      compare --time ''
-fail compare_time_substitution       "--time expects a decimal"      compare --time "$sub"
-fail compare_size_zero               "compare: --size expects WxH, each side in [1, 16384], got '0x0'" compare --size 0x0
-fail compare_size_negative           "--size expects WxH"            compare --size -5x10
-fail compare_size_enormous           "--size expects WxH"            compare --size 100000x100000
-fail compare_size_over               "--size expects WxH"            compare --size 16385x10
-fail compare_size_garbage            "--size expects WxH"            compare --size 12by9
-fail compare_size_half               "--size expects WxH"            compare --size 320x
-fail compare_camera_unknown          "compare: --camera expects overview deck low top, got 'sideways'" compare --camera sideways
-fail compare_camera_pattern          "--camera expects"              compare --camera 'd*'
-fail compare_set_no_equals           "compare: --set expects name=value" compare --set amplitude
-fail compare_set_no_name             "--set expects name=value"      compare --set =1
-fail compare_set_substitution        "--set expects name=value"      compare --set "$sub=1"
-fail compare_out_empty               "compare: --out needs a folder, not an empty name" compare --out ''
-fail compare_out_flag                "compare: --out '-x' looks like a flag" compare --out -x
+dry_says test_core "-L core"         test
+dry_says test_core_flags "-L core --output-on-failure" test --output-on-failure
+dry_says test_all "-j $(nproc)\$"    test --all
+dry_says test_all_flags "-j $(nproc) -j 1\$" test --all -j 1
+dry_says test_selection "-j $(nproc) -R step01\$" test -R step01
+dry_says test_selection_joined "-j $(nproc) --label-regex=gpu\$" test --label-regex=gpu
+dry_says test_exclusion "-j $(nproc) -LE long\$" test -LE long
+# --- compare (tools/ocean_tools.py: argparse's messages, one line, after "ocean: error: compare: ") ---
+fail compare_bracket                 "compare: argument STEP: unknown step 'step0[1]_sine2d'" compare 'step0[1]_sine2d'
+fail compare_glob                    "compare: argument STEP: unknown step" compare 'step[0-9][0-9]_*'
+fail compare_not_utf8                "compare: argument STEP: unknown step" compare $'\xff'
+fail compare_time_missing            "compare: argument --time: expected one argument" compare --time
+fail compare_size_missing            "compare: argument --size: expected one argument" compare --size
+fail compare_camera_missing          "compare: argument --camera: expected one argument" compare --camera
+fail compare_set_missing             "compare: argument --set: expected one argument" compare --set
+fail compare_out_missing             "compare: argument --out: expected one argument" compare --out
+fail compare_time_word               "compare: argument --time: expects a decimal number in [0, 1000000000], got 'abc'" compare --time abc
+fail compare_time_nan                "--time: expects a decimal"     compare --time nan
+fail compare_time_inf                "--time: expects a decimal"     compare --time inf
+fail compare_time_exponent           "--time: expects a decimal"     compare --time 1e999
+fail compare_time_negative           "--time: expects a decimal"     compare --time -1
+fail compare_time_huge               "--time: expects a decimal"     compare --time 99999999999999999999
+fail compare_time_two_points         "--time: expects a decimal"     compare --time 1.5.2
+fail compare_time_empty              "--time: expects a decimal"     compare --time ''
+fail compare_time_substitution       "--time: expects a decimal"     compare --time "$sub"
+fail compare_size_zero               "compare: argument --size: expects WxH, each side in [1, 16384], got '0x0'" compare --size 0x0
+fail compare_size_negative           "argument --size: expected one argument" compare --size -5x10
+fail compare_size_negative_joined    "--size: expects WxH"           compare --size=-5x10
+fail compare_size_enormous           "--size: expects WxH"           compare --size 100000x100000
+fail compare_size_over               "--size: expects WxH"           compare --size 16385x10
+fail compare_size_garbage            "--size: expects WxH"           compare --size 12by9
+fail compare_size_half               "--size: expects WxH"           compare --size 320x
+fail compare_camera_unknown          "compare: argument --camera: invalid choice: 'sideways'" compare --camera sideways
+fail compare_camera_pattern          "--camera: invalid choice"      compare --camera 'd*'
+fail compare_set_no_equals           "compare: argument --set: expects name=value" compare --set amplitude
+fail compare_set_no_name             "--set: expects name=value"     compare --set =1
+fail compare_set_substitution        "--set: expects name=value"     compare --set "$sub=1"
+fail compare_out_empty               "compare: argument --out: needs a folder, not an empty name" compare --out ''
+fail compare_out_flag                "compare: argument --out: '-x' looks like a flag" compare --out=-x
 fail compare_out_bar                 "a folder name with '|'"        compare --out 'a|b'
-fail compare_unknown_flag            "compare: unknown flag '--nope'" compare --nope
+fail compare_out_unwritable          "compare: cannot make the folder '/proc/ocean'" compare step01_sine2d --size 64x36 --out /proc/ocean
+fail compare_unknown_flag            "compare: unrecognized arguments: --nope" compare --nope
+fail compare_abbreviation            "compare: unrecognized arguments: --si" compare --si
+ok   compare_help                    compare --help
 ok   compare_one_step_hostile_folder compare step01_sine2d --size 64x36 --out "$out/compare $sub $quote"
 dry  compare_boundaries              compare step01_sine2d step07_buoyancy --time 0 --size 16384x1 --camera top --set wind_speed=3 --set "view=$sub"
+dry  compare_steps_between_flags     compare step01_sine2d --size 64x36 step02_sine3d
 dry  compare_longest_time            compare --time 1000000000 --size 1x16384
-fail compare_time_over               "--time expects a decimal"      compare --time 1000000000.5
+fail compare_time_over               "--time: expects a decimal"     compare --time 1000000000.5
 # --- bench ---
-fail bench_pairs_missing             "bench: --pairs needs a value"  bench --pairs
-fail bench_frames_missing            "bench: --frames needs a value" bench --frames
-fail bench_size_missing              "bench: --size needs a value"   bench --size
-fail bench_out_missing               "bench: --out needs a value"    bench --out
-fail bench_step_missing              "bench: --step needs a value"   bench --step
-fail bench_lab_missing               "bench: --lab needs a value"    bench --lab
-fail bench_against_missing           "bench: --against needs a value" bench --against
-fail bench_baseline_bin_missing      "bench: --baseline-bin needs a value" bench --baseline-bin
-fail bench_baseline_args_missing     "bench: --baseline-args needs a value" bench --baseline-args
-fail bench_current_args_missing      "bench: --current-args needs a value" bench --current-args
-fail bench_resolutions_missing       "bench: --resolutions needs a value" bench --sweep --resolutions
-fail bench_windows_missing           "bench: --windows needs a value" bench --sweep --windows
-fail bench_frames_zero               "bench: --frames expects a whole number in [1, 100000], got '0'" bench --frames 0
-fail bench_frames_word               "--frames expects a whole number" bench --frames abc
-fail bench_frames_negative           "--frames expects a whole number" bench --frames -1
-fail bench_frames_exponent           "--frames expects a whole number" bench --frames 1e3
-fail bench_frames_decimal            "--frames expects a whole number" bench --frames 2.5
-fail bench_frames_huge               "--frames expects a whole number" bench --frames 99999999999999999999
-fail bench_frames_nan                "--frames expects a whole number" bench --frames nan
-fail bench_pairs_zero                "bench: --pairs expects a whole number in [1, 1000]" bench --baseline-bin "$step01" --pairs 0
-fail bench_pairs_over                "--pairs expects a whole number" bench --baseline-bin "$step01" --pairs 1001
-fail bench_size_bad                  "bench: --size expects WxH"     bench --size 0x720
-fail bench_lab_regex                 "bench: no lab program 'x.*' (lab/CMakeLists.txt: compute_shading" bench --lab 'x.*'
-fail bench_lab_sed                   "bench: no lab program"         bench --lab 's/x/y/;e touch CANARY'
-fail bench_lab_sed_command           "bench: no lab program 'x/y/?1e touch" bench --lab $'x/y/\n1e touch '"$canary"$'\n#'
-fail bench_lab_empty                 "bench: no lab program ''"      bench --lab ''
-fail bench_step_regex                "bench: --step: unknown step 'step0.*'" bench --baseline-bin "$step01" --step 'step0.*'
-fail bench_step_regex_alone          "bench: --step: unknown step 'step0.*'" bench --step 'step0.*'
+fail bench_pairs_missing             "bench: argument --pairs: expected one argument" bench --pairs
+fail bench_frames_missing            "bench: argument --frames: expected one argument" bench --frames
+fail bench_size_missing              "bench: argument --size: expected one argument" bench --size
+fail bench_out_missing               "bench: argument --out: expected one argument" bench --out
+fail bench_step_missing              "bench: argument --step: expected one argument" bench --step
+fail bench_lab_missing               "bench: argument --lab: expected one argument" bench --lab
+fail bench_against_missing           "bench: argument --against: expected one argument" bench --against
+fail bench_baseline_bin_missing      "bench: argument --baseline-bin: expected one argument" bench --baseline-bin
+fail bench_baseline_args_missing     "bench: argument --baseline-args: expected one argument" bench --baseline-args
+fail bench_current_args_missing      "bench: argument --current-args: expected one argument" bench --current-args
+fail bench_resolutions_missing       "bench: argument --resolutions: expected one argument" bench --sweep --resolutions
+fail bench_windows_missing           "bench: argument --windows: expected one argument" bench --sweep --windows
+fail bench_frames_zero               "bench: argument --frames: expects a whole number in [1, 100000], got '0'" bench --frames 0
+fail bench_frames_word               "--frames: expects a whole number" bench --frames abc
+fail bench_frames_negative           "--frames: expects a whole number" bench --frames -1
+fail bench_frames_exponent           "--frames: expects a whole number" bench --frames 1e3
+fail bench_frames_decimal            "--frames: expects a whole number" bench --frames 2.5
+fail bench_frames_huge               "--frames: expects a whole number" bench --frames 99999999999999999999
+fail bench_frames_nan                "--frames: expects a whole number" bench --frames nan
+fail bench_pairs_zero                "bench: argument --pairs: expects a whole number in [1, 1000]" bench --baseline-bin "$step01" --pairs 0
+fail bench_pairs_over                "--pairs: expects a whole number" bench --baseline-bin "$step01" --pairs 1001
+fail bench_size_bad                  "bench: argument --size: expects WxH" bench --size 0x720
+fail bench_lab_regex                 "bench: argument --lab: no lab program 'x.*' (lab/CMakeLists.txt: compute_shading" bench --lab 'x.*'
+fail bench_lab_sed                   "bench: argument --lab: no lab program" bench --lab 's/x/y/;e touch CANARY'
+fail bench_lab_sed_command           "no lab program 'x/y/?1e touch" bench --lab $'x/y/\n1e touch '"$canary"$'\n#'
+fail bench_lab_empty                 "bench: argument --lab: no lab program ''" bench --lab ''
+fail bench_step_regex                "bench: argument --step: unknown step 'step0.*'" bench --baseline-bin "$step01" --step 'step0.*'
+fail bench_step_regex_alone          "bench: argument --step: unknown step 'step0.*'" bench --step 'step0.*'
 fail bench_step_alone                "bench: --step goes with --against or --baseline-bin" bench --step step01_sine2d
 fail bench_pairs_alone               "bench: --pairs goes with"      bench --pairs 2
+fail bench_flags_alone               "bench: --current-args goes with" bench --sweep --current-args '--time 1'
 fail bench_resolutions_alone         "bench: --resolutions goes with --sweep" bench --resolutions 64
-fail bench_against_flag              "bench: --against '-x' is not a revision" bench --against -x
-fail bench_against_substitution      "bench: --against"              bench --against "$sub"
+fail bench_windows_alone             "bench: --windows goes with --sweep" bench --lab compute_shading --windows 64x64
+fail bench_against_flag              "bench: argument --against: expected one argument" bench --against -x
+fail bench_against_flag_joined       "bench: argument --against: '-x' is not a revision" bench --against=-x
+fail bench_against_substitution      "bench: argument --against: '\$(touch" bench --against "$sub"
 fail bench_against_unknown           "is not a revision of this repository" bench --against no_such_branch_anywhere
-fail bench_baseline_missing          "bench: --baseline-bin '/no/such/program' is not a program" bench --baseline-bin /no/such/program
+fail bench_baseline_missing          "bench: argument --baseline-bin: '/no/such/program' is not a program" bench --baseline-bin /no/such/program
 fail bench_baseline_folder           "is not a program"              bench --baseline-bin "$out"
-fail bench_two_baselines             "choose one"                    bench --against HEAD --baseline-bin "$step01"
-fail bench_two_measurements          "choose one"                    bench --sweep --lab compute_shading
-fail bench_resolution_odd            "bench: --resolutions: '100' is not 64, 128, 256 or 512" bench --sweep --resolutions 100
+fail bench_two_baselines             "bench: argument --baseline-bin: not allowed with argument --against" bench --against HEAD --baseline-bin "$step01"
+fail bench_two_measurements          "bench: argument --lab: not allowed with argument --sweep" bench --sweep --lab compute_shading
+fail bench_resolution_odd            "bench: argument --resolutions: '100' is not 64, 128, 256 or 512" bench --sweep --resolutions 100
 fail bench_resolution_glob           "is not 64, 128, 256 or 512"    bench --sweep --resolutions '*'
-fail bench_resolutions_empty         "--resolutions needs at least one" bench --sweep --resolutions ' '
-fail bench_window_bad                "bench: --windows expects WxH"  bench --sweep --windows '320x180 0x0'
-fail bench_unknown                   "bench: unknown argument '--nope'" bench --nope
+fail bench_resolutions_empty         "--resolutions: needs at least one" bench --sweep --resolutions ' '
+fail bench_window_bad                "bench: argument --windows: expects WxH" bench --sweep --windows '320x180 0x0'
+fail bench_unknown                   "bench: unrecognized arguments: --nope" bench --nope
+fail bench_stray_word                "bench: unrecognized arguments: step01_sine2d" bench step01_sine2d
+ok   bench_help                      bench --help
 dry  bench_table                     bench --frames 100000 --size 16384x16384
 dry  bench_against_flags             bench --baseline-bin "$step01" --step step01_sine2d --pairs 1000 --baseline-args "--time 1 $sub" --current-args "$quote"
+dry  bench_one_flag                  bench --baseline-bin "$step01" --current-args=--nope
 dry  bench_lab                       bench --lab compute_shading --pairs 1
 dry  bench_sweep                     bench --sweep --resolutions '64 512' --windows '1x1 16384x16384'
 dry  bench_against_revision          bench --against HEAD --pairs 2
@@ -236,23 +268,24 @@ dry  web                             web
 dry  web_port_edges                  web --port 1024 --no-serve
 dry  web_port_top                    web --port 65535
 # --- gallery, figures, animations ---
-fail gallery_extra                   "gallery: takes no arguments"   gallery --out x
+fail gallery_extra                   "gallery: unrecognized arguments: --out x" gallery --out x
+ok   gallery_help                    gallery --help
 dry  gallery                         gallery
-fail figures_out_missing             "figures: --out needs a value"  figures --out
-fail figures_out_empty               "figures: --out needs a folder" figures --out ''
-fail figures_unknown                 "figures: unknown argument 'x'" figures x
+fail figures_out_missing             "figures: argument --out: expected one argument" figures --out
+fail figures_out_empty               "figures: argument --out: needs a folder" figures --out ''
+fail figures_unknown                 "figures: unrecognized arguments: x" figures x
 dry  figures_hostile_folder          figures --out "$out/figures $sub"
-fail animations_glob                 "animations: unknown step 'step*'" animations 'step*'
-fail animations_seconds_missing      "animations: --seconds needs a value" animations --seconds
-fail animations_size_missing         "animations: --size needs a value" animations --size
-fail animations_out_missing          "animations: --out needs a value" animations --out
-fail animations_seconds_zero         "animations: --seconds expects a whole number in [1, 20], got '0'" animations --seconds 0
-fail animations_seconds_over         "--seconds expects a whole number" animations --seconds 21
-fail animations_seconds_decimal      "--seconds expects a whole number" animations --seconds 1.5
-fail animations_seconds_nan          "--seconds expects a whole number" animations --seconds nan
-fail animations_seconds_negative     "--seconds expects a whole number" animations --seconds -1
-fail animations_size_bad             "animations: --size expects WxH" animations --size 480x0
-fail animations_unknown              "animations: unknown flag '--fps'" animations --fps 30
+fail animations_glob                 "animations: argument STEP: unknown step 'step*'" animations 'step*'
+fail animations_seconds_missing      "animations: argument --seconds: expected one argument" animations --seconds
+fail animations_size_missing         "animations: argument --size: expected one argument" animations --size
+fail animations_out_missing          "animations: argument --out: expected one argument" animations --out
+fail animations_seconds_zero         "animations: argument --seconds: expects a whole number in [1, 20], got '0'" animations --seconds 0
+fail animations_seconds_over         "--seconds: expects a whole number" animations --seconds 21
+fail animations_seconds_decimal      "--seconds: expects a whole number" animations --seconds 1.5
+fail animations_seconds_nan          "--seconds: expects a whole number" animations --seconds nan
+fail animations_seconds_negative     "--seconds: expects a whole number" animations --seconds -1
+fail animations_size_bad             "animations: argument --size: expects WxH" animations --size 480x0
+fail animations_unknown              "animations: unrecognized arguments: --fps" animations --fps
 dry  animations_boundaries           animations step01_sine2d --seconds 20 --size 1x1
 dry  animations_octal_looking        animations --seconds 08
 # --- exercise and check ---

@@ -3,9 +3,10 @@
 # (OCEAN, on BUILD_DIR's programs, never building), drawn with a fixed seed, so the same RUNS lines
 # (default 500) every time, from a pool of commands, flags, step names, numbers and hostile words
 # (quotes, $(...), backticks, ';', ../, .*, *, -1, 1e999, nan, empty, 5000 characters, newlines).
-# Every line runs under OCEAN_DRY_RUN=1: the driver checks its arguments, prints what would run
-# and stops, so nothing builds, renders or writes and a run takes milliseconds; diff, list and
-# help only read, and half of their lines also run for real. Each run must:
+# Every line runs under OCEAN_DRY_RUN=1: the driver checks its arguments (compare, bench, figures,
+# animations and gallery through tools/ocean_tools.py's argparse), prints what would run and stops,
+# so nothing builds, renders or writes and a run takes milliseconds; diff, list and help only read,
+# and half of their lines also run for real. Each run must:
 #   exit 0, 1 or 2: never 124 (a hang), 126 and over (a command not found, a signal);
 #   when it fails, print exactly one line on stderr, starting "ocean: error: " (every failure here
 #   is the driver refusing its arguments);
@@ -30,9 +31,10 @@ repo_state() {
 }
 
 mapfile -t steps < <(cd "$repo" && for f in step[0-9][0-9]_*/CMakeLists.txt; do dirname "$f"; done)
-commands=(run test list compare bench new diff gallery figures animations exercise check help --help nope '')
+commands=(run test list compare bench new diff gallery figures animations exercise check web help --help nope '')
 flags=(--time --size --camera --set --out --frames --sweep --resolutions --windows --against --baseline-bin --step
-       --pairs --baseline-args --current-args --lab --seconds --hint --headless --list-params --nope -x --)
+       --pairs --baseline-args --current-args --lab --seconds --hint --headless --list-params --nope -x --
+       --all --help -h --out=-x --size=1x1 --current-args=--nope -L -R --port --no-serve)
 names=("${steps[@]}" 'step0.*' 'step*' ../step01_sine2d 'step0[1]_sine2d' step99_none step08_new step_template)
 values=(0 1 01 08 1.5 20 21 64 100 512 1000 -1 +1 1e999 1e3 nan inf -inf 0x0 480x270 16384x16384 16385x1 12by9 x
         99999999999999999999 overview deck sideways compute_shading HEAD HEAD~1 wind_speed=3 "=1" name=value
