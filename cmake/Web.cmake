@@ -52,11 +52,13 @@ target_compile_definitions(ocean_imgui PRIVATE IMGUI_IMPL_OPENGL_ES3)
 target_include_directories(ocean_imgui SYSTEM PUBLIC "${OCEAN_IMGUI_DIR}")
 target_link_libraries(ocean_imgui PUBLIC glfw)
 
-# Every page: exceptions caught as natively; the frame loop yields to the browser after each frame (asyncify: App's loop stays a
-# loop), the memory grows as a chapter needs, and the shaders are in the page's file system at the
-# paths the native build reads them from (add_step preloads each chapter's).
+# Every page: exceptions caught as natively; the browser calls the frame loop a frame at a time
+# (App::browser_frame, through emscripten_set_main_loop: no Asyncify, whose rewrite of every
+# function made the links slow and the pages slower), the memory grows as a chapter needs, and the
+# shaders are in the page's file system at the paths the native build reads them from (add_step
+# preloads each chapter's).
 # C++ exceptions on (emscripten leaves them off by default): the framework reports errors by them.
 add_compile_options(-fexceptions)
-add_link_options(-fexceptions -sASYNCIFY -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1
+add_link_options(-fexceptions -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1
                  -sEXPORTED_RUNTIME_METHODS=FS  # tests/web/page.js reads a screenshot from the page's files
                  "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/common/shaders@${PROJECT_SOURCE_DIR}/common/shaders")

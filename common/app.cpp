@@ -9,6 +9,9 @@
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
 
 #include <filesystem>
 #include <iostream>
@@ -16,6 +19,24 @@
 namespace ocean {
 
 namespace fs = std::filesystem;
+
+// What the frame loop keeps from one frame to the next: run_loop's state, held by the App so that
+// a browser, which calls the loop one frame at a time, finds it between two calls.
+struct App::FrameLoop {
+    FrameLoop(const Options& run_options, bool run_headless, int limit, int timed)
+        : options(run_options), headless(run_headless), frame_limit(limit), pass_timed_frames(timed),
+          clock(run_options), probes(run_options) {}
+    const Options options;
+    const bool headless;
+    const int frame_limit;        // 0: until the window closes
+    const int pass_timed_frames;  // --bench: the last frames, whose passes are timed one by one
+    FrameClock clock;
+    TestProbes probes;
+    CloseOnSignal signals;
+    Image screenshot;
+    int frame = 0;
+    bool closed_early = false;
+};
 
 App::App(StepInfo info) : info_(std::move(info)) {}
 
@@ -122,52 +143,84 @@ int App::run_loop(const Options& options) {
     panel_visible_ = draws_panel && !options.hide_ui;
     init();
 
-    FrameClock clock(options);
-    time_ = clock.start_time();
-    Image screenshot;
-    int frame = 0;
-    CloseOnSignal signals;
-    const TestProbes probes(options);
-    bool closed_early = false;
-    for (; frame_limit == 0 || frame < frame_limit; ++frame) {
-        context_->poll_events();
-        if (context_->should_close() || signals.requested()) {
-            closed_early = true;
-            break;
-        }
-        const FrameClock::Tick tick = clock.tick(frame, paused_, warming_up_ && warming_up_());
-        if (pass_timed_frames > 0 && frame == frame_limit - pass_timed_frames) {
-            glFinish();  // the frames before it have finished: the clock's end
-            clock.stop(frame);
-            timers_.set_enabled(true);
-        }
-        if (frame > 0) time_ += tick.dt;
-        if (tick.wall - last_reload_check_ > 0.5) {
-            last_reload_check_ = tick.wall;
-            programs_.reload_changed();
-        }
-        this->frame(probes, frame, tick.dt, tick.real_dt);
-        const bool last = frame_limit > 0 && frame + 1 == frame_limit;
-        if (!options.record_dir.empty()) record_frame(options.record_dir, frame);
-        if (last && (!options.screenshot.empty() || headless)) screenshot = capture_frame(*context_, framebuffer_size_);
-        context_->swap_buffers();
-        timers_.collect();
-        probes.after_frame(frame);
-        programs_.set_running();  // a variant that fails to build from now on is shown, not fatal
+    loop_ = std::make_unique<FrameLoop>(options, headless, frame_limit, pass_timed_frames);
+    time_ = loop_->clock.start_time();
+#if defined(__EMSCRIPTEN__)
+    // A page hands each frame to the browser as a callback (its own frame loop), so that the
+    // browser shows the frame and runs its events in between; this call does not return.
+    emscripten_set_main_loop_arg(&App::browser_frame, this, 0, true);
+#endif
+    while (loop_turn()) {
     }
+    return finish_loop();
+}
+
+bool App::loop_turn() {
+    FrameLoop& loop = *loop_;
+    if (loop.frame_limit > 0 && loop.frame >= loop.frame_limit) return false;
+    context_->poll_events();
+    if (context_->should_close() || loop.signals.requested()) {
+        loop.closed_early = true;
+        return false;
+    }
+    const int frame = loop.frame;
+    const FrameClock::Tick tick = loop.clock.tick(frame, paused_, warming_up_ && warming_up_());
+    if (loop.pass_timed_frames > 0 && frame == loop.frame_limit - loop.pass_timed_frames) {
+        glFinish();  // the frames before it have finished: the clock's end
+        loop.clock.stop(frame);
+        timers_.set_enabled(true);
+    }
+    if (frame > 0) time_ += tick.dt;
+    if (tick.wall - last_reload_check_ > 0.5) {
+        last_reload_check_ = tick.wall;
+        programs_.reload_changed();
+    }
+    this->frame(loop.probes, frame, tick.dt, tick.real_dt);
+    const bool last = loop.frame_limit > 0 && frame + 1 == loop.frame_limit;
+    if (!loop.options.record_dir.empty()) record_frame(loop.options.record_dir, frame);
+    if (last && (!loop.options.screenshot.empty() || loop.headless))
+        loop.screenshot = capture_frame(*context_, framebuffer_size_);
+    context_->swap_buffers();
+    timers_.collect();
+    loop.probes.after_frame(frame);
+    programs_.set_running();  // a variant that fails to build from now on is shown, not fatal
+    ++loop.frame;
+    return true;
+}
+
+int App::finish_loop() {
+    FrameLoop& loop = *loop_;
     // Closed before the last frame: a headless target still holds the last picture.
-    if (closed_early && headless && frame > 0 && !options.screenshot.empty())
-        screenshot = capture_frame(*context_, framebuffer_size_);
-    write_outputs(options, screenshot, clock, frame);
+    if (loop.closed_early && loop.headless && loop.frame > 0 && !loop.options.screenshot.empty())
+        loop.screenshot = capture_frame(*context_, framebuffer_size_);
+    write_outputs(loop.options, loop.screenshot, loop.clock, loop.frame);
 
     const GlDebugStats& gl = gl_debug_stats();
-    if (gl.errors > 0 && headless) {
+    if (gl.errors > 0 && loop.headless) {
         std::cerr << "error: " << gl.errors << " OpenGL error(s) in a headless run; first: "
                   << gl.first_error << std::endl;
         return kExitGlError;
     }
     return kExitOk;
 }
+
+#if defined(__EMSCRIPTEN__)
+// One frame of a page; after the last, what main would do after run(): the exit status, the
+// neighbouring chapter's page if one was chosen, and the exit the page reports (onExit).
+void App::browser_frame(void* self) {
+    App& app = *static_cast<App*>(self);
+    int status = kExitOk;
+    try {
+        if (app.loop_turn()) return;
+        status = app.finish_loop();
+    } catch (const Error& e) {
+        std::cerr << "error: " << e.what() << std::endl;
+        status = kExitRuntimeError;
+    }
+    emscripten_cancel_main_loop();
+    std::exit(run_next_step(status, app.next_step_command()));
+}
+#endif
 
 // One frame, in the order app.hpp documents: input, update, render (twice with the split view),
 // the panel, then the caller presents.

@@ -160,7 +160,13 @@ protected:
     GLuint fullscreen_vao() const { return empty_vao_.id(); }  // for passes that draw it themselves
 
 private:
+    // The frame loop: run_loop sets it up and runs loop_turn until it says the run is over (a page
+    // has the browser call browser_frame instead), then finish_loop writes the outputs.
+    struct FrameLoop;
     int run_loop(const Options& options);
+    bool loop_turn();
+    int finish_loop();
+    static void browser_frame(void* self);
     void frame(const class TestProbes& probes, int frame, double dt, double real_dt);
     // Output writing (app_output.cpp): --record, the screenshot, --export, --bench (what `clock`
     // timed of the run's `frames`).
@@ -218,6 +224,7 @@ private:
     std::string panel_message_;
     std::vector<std::string> next_step_command_;
     std::vector<std::string> all_steps_;
+    std::unique_ptr<FrameLoop> loop_;
 };
 
 }  // namespace ocean

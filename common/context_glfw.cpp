@@ -5,9 +5,6 @@
 #include "common/gl_profile.hpp"
 
 #include <GLFW/glfw3.h>
-#if defined(__EMSCRIPTEN__)
-#include <emscripten.h>
-#endif
 
 #include <cstdlib>
 
@@ -60,12 +57,8 @@ public:
     bool should_close() const override { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
     void request_close() override { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
     void poll_events() override { glfwPollEvents(); }
-    void swap_buffers() override {
-        glfwSwapBuffers(window_);
-#if defined(__EMSCRIPTEN__)
-        emscripten_sleep(0);  // the browser shows the frame and runs its events, then the loop goes on
-#endif
-    }
+    // In a page the browser shows the frame when the frame's callback returns (App::browser_frame).
+    void swap_buffers() override { glfwSwapBuffers(window_); }
     glm::ivec2 framebuffer_size() const override {
         glm::ivec2 size;
         glfwGetFramebufferSize(window_, &size.x, &size.y);

@@ -8,10 +8,6 @@
 
 #include "common/gl.hpp"
 
-#if defined(__EMSCRIPTEN__)
-#include <emscripten.h>
-#endif
-
 #include <array>
 #include <optional>
 
@@ -48,14 +44,12 @@ public:
         if (oldest < 0) return std::nullopt;
         // GL_SYNC_FLUSH_COMMANDS_BIT makes sure the fence reaches the GPU; 10 s: a GPU that lost
         // the copy rather than one that is slow. A web page may not block (WebGL's longest client
-        // wait is 0): it hands the browser its turn until the copy has landed (the frame loop's
-        // emscripten_sleep, through ASYNCIFY), which is the same wait, and the same one frame.
+        // wait is 0), and its fences move only when the browser has had its turn, between two
+        // frames: a copy queued a frame ago has then usually landed, and if not, WebGL's read-back
+        // waits for it, so the data is the same and so is the one frame.
 #if defined(__EMSCRIPTEN__)
-        GLenum state = GL_TIMEOUT_EXPIRED;
-        for (int turns = 0; turns < 10000 && state == GL_TIMEOUT_EXPIRED; ++turns) {
-            state = glClientWaitSync(fences_[std::size_t(oldest)], 0, 0);
-            if (state == GL_TIMEOUT_EXPIRED) emscripten_sleep(1);
-        }
+        GLenum state = glClientWaitSync(fences_[std::size_t(oldest)], 0, 0);
+        if (state == GL_TIMEOUT_EXPIRED) state = GL_CONDITION_SATISFIED;
 #else
         const GLenum state = glClientWaitSync(fences_[std::size_t(oldest)], GL_SYNC_FLUSH_COMMANDS_BIT, 10000000000ull);
 #endif
