@@ -11,12 +11,12 @@
 add_test(NAME tools.driver_catalogue
   COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/cli/driver_catalogue.sh" "${PROJECT_SOURCE_DIR}/ocean"
           "${CMAKE_BINARY_DIR}" "${CMAKE_BINARY_DIR}/test-output/driver_catalogue")
-# tools.driver_fuzz: 500 random command lines from a fixed seed (tests/cli/driver_fuzz.sh), under
+# tools.driver_fuzz: 200 random command lines from a fixed seed (tests/cli/driver_fuzz.sh), under
 # OCEAN_DRY_RUN=1: exit 0, 1 or 2, a failure's one line "ocean: error: ...", no bash message,
 # no canary, no temporary file.
 add_test(NAME tools.driver_fuzz
   COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/cli/driver_fuzz.sh" "${PROJECT_SOURCE_DIR}/ocean"
-          "${CMAKE_BINARY_DIR}" "${CMAKE_BINARY_DIR}/test-output/driver_fuzz" 500)
+          "${CMAKE_BINARY_DIR}" "${CMAKE_BINARY_DIR}/test-output/driver_fuzz" 200)
 set_tests_properties(tools.driver_catalogue tools.driver_fuzz PROPERTIES
   LABELS "bad_input;tools" TIMEOUT 300
   ENVIRONMENT "OCEAN_NO_BUILD=1;OCEAN_BUILD_DIR=${CMAKE_BINARY_DIR}")
