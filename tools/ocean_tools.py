@@ -283,13 +283,13 @@ def bench_table(args, out):
 
 def bench_sweep(args, out):
     """Each simulating step (a `resolution` parameter) at each FFT resolution at --size, and at each
-    window at resolution 256: sweep.csv, sweep_chart.csv (bench_chart's columns) and sweep.png."""
+    window at --window-resolution (256): sweep.csv, sweep_chart.csv (bench_chart's columns) and sweep.png."""
     steps = all_steps()
     require_built(*map(step_program, steps), build_dir() / "tools/bench_chart")
     runs = []  # (step, window, resolution, the chart's label)
     for step_name in filter(lambda s: has_param(s, "resolution"), steps):
         runs += [(step_name, args.size, n, f"N={n}") for n in args.resolutions]
-        runs += [(step_name, window, "256", window) for window in args.windows]
+        runs += [(step_name, window, args.window_resolution, window) for window in args.windows]
     if not runs:
         raise Failure("no step simulates (none has a resolution parameter)")
     sweep = ["step,size,resolution,fps,total_ms,passes,simulation_ms"]
@@ -358,7 +358,7 @@ def bench(args):
     measurement = "sweep" if args.sweep else "lab" if args.lab else \
                   "against" if args.against or args.baseline_bin else "table"
     plan = ["bench"] + plan_of(args, ["sweep", "against", "baseline_bin", "lab", "step", "pairs", "size", "frames",
-                                      "resolutions", "windows", "out", "baseline_args", "current_args"])
+                                      "resolutions", "windows", "window_resolution", "out", "baseline_args", "current_args"])
     dry_run_stops(plan)
     out = make_folder(args.out)
     if measurement == "table":
@@ -380,19 +380,20 @@ def bench_flags_fit(parser, args):
     for flag, given, allowed, goes_with in [
             ("--resolutions", args.resolutions, args.sweep, "--sweep"),
             ("--windows", args.windows, args.sweep, "--sweep"),
+            ("--window-resolution", args.window_resolution, args.sweep, "--sweep"),
             ("--step", args.step, args.against or args.baseline_bin, "--against or --baseline-bin"),
             ("--pairs", args.pairs, pairs_based, "--against, --baseline-bin or --lab"),
             ("--baseline-args", args.baseline_args, pairs_based, "--against, --baseline-bin or --lab"),
             ("--current-args", args.current_args, pairs_based, "--against, --baseline-bin or --lab")]:
         if given is not None and not allowed:
             parser.error(f"{flag} goes with {goes_with}")
-    defaults = {"resolutions": RESOLUTIONS, "windows": ["854x480", "1280x720", "1920x1080"],
+    defaults = {"resolutions": RESOLUTIONS, "windows": ["854x480", "1280x720", "1920x1080"], "window_resolution": "256",
                 "step": all_steps()[-1], "pairs": 8, "baseline_args": [], "current_args": []}
     for name, value in defaults.items():
         if getattr(args, name) is None:
             setattr(args, name, value)
     if not args.sweep:
-        args.resolutions = args.windows = None  # not part of this measurement's plan
+        args.resolutions = args.windows = args.window_resolution = None  # not part of this measurement's plan
     if not (args.against or args.baseline_bin):
         args.step = None
     if not pairs_based:
@@ -576,6 +577,8 @@ def parsers():
     p.add_argument("--out", metavar="DIR", type=folder, default="build/bench", help="the folder written (default build/bench)")
     p.add_argument("--resolutions", metavar='"N ..."', type=resolutions, help='--sweep: "64 128 256 512" (the default), any of them')
     p.add_argument("--windows", metavar='"WxH ..."', type=sizes, help='--sweep: "WxH ..." (default "854x480 1280x720 1920x1080")')
+    p.add_argument("--window-resolution", metavar="N", choices=RESOLUTIONS,
+                   help="--sweep: the FFT resolution of the window runs (default 256)")
     p.add_argument("--step", type=step, help="--against, --baseline-bin: the step (default the newest)")
     p.add_argument("--pairs", metavar="N", type=whole(1, 1000), help="AB/BA pairs of runs, 1 to 1000 (default 8)")
     p.add_argument("--baseline-args", metavar='"FLAGS"', type=flags, help="flags for the baseline's runs only")

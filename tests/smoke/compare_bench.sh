@@ -40,8 +40,9 @@ case "$what" in
         exit bad
       }' "$out/bench.csv" ;;
   sweep)
-    # One resolution and one window, tiny: each simulating step (a resolution parameter) 2 runs.
-    ./ocean bench --sweep --size 96x54 --frames 2 --resolutions 64 --windows 96x54 --out "$out" ||
+    # One resolution and one window, tiny (the window's run at resolution 64, not 256): each
+    # simulating step (a resolution parameter) 2 runs.
+    ./ocean bench --sweep --size 96x54 --frames 2 --resolutions 64 --windows 128x72 --window-resolution 64 --out "$out" ||
       { echo "FAIL: ./ocean bench --sweep"; exit 1; }
     [ -s "$out/sweep.png" ] || { echo "FAIL: no sweep.png"; exit 1; }
     simulating=0
@@ -57,7 +58,7 @@ case "$what" in
       }
       END {
         if (rows != runs || runs == 0) { print "FAIL: " rows " rows for " runs " runs"; bad = 1 }
-        if (!("96x54 64" in seen) || !("96x54 256" in seen)) { print "FAIL: the resolution or the window is missing"; bad = 1 }
+        if (!("96x54 64" in seen) || !("128x72 64" in seen)) { print "FAIL: the resolution or the window is missing"; bad = 1 }
         if (!bad) print "sweep.csv: " rows " rows, every resolution and window, all numeric"
         exit bad
       }' "$out/sweep.csv" ;;
