@@ -17,6 +17,6 @@ add_test(NAME tools.driver_catalogue
 add_test(NAME tools.driver_fuzz
   COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/cli/driver_fuzz.sh" "${PROJECT_SOURCE_DIR}/ocean"
           "${CMAKE_BINARY_DIR}" "${CMAKE_BINARY_DIR}/test-output/driver_fuzz" 200)
-set_tests_properties(tools.driver_catalogue tools.driver_fuzz PROPERTIES
+set_tests_properties(tools.driver_catalogue tools.driver_fuzz PROPERTIES COST 25
   LABELS "bad_input;tools" TIMEOUT 300
   ENVIRONMENT "OCEAN_NO_BUILD=1;OCEAN_BUILD_DIR=${CMAKE_BINARY_DIR}")
