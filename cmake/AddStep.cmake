@@ -21,7 +21,7 @@
 # `ctest -R '^STEP\.'` run the same tests (tools.test_names checks it).
 # A new chapter needs nothing else: the top CMakeLists.txt finds the folder (see "Adding a
 # chapter" in the README, and step_template/).
-include(GoogleTest)
+include(GoogleTests)  # ocean_gtests()
 set(OCEAN_TESTS_DIR "${CMAKE_CURRENT_LIST_DIR}/../tests")
 
 function(add_step name)
@@ -113,20 +113,12 @@ function(add_step name)
     target_compile_definitions(${exe} PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
       OCEAN_STEP_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
     ocean_warnings(${exe})
-    # LeakSanitizer checks the CPU tests (the asan preset turns it off where GL runs: llvmpipe's
-    # JIT-compiled code and unloaded drivers leave allocations it cannot even name).
+    # LeakSanitizer checks the CPU tests (cmake/GoogleTests.cmake).
     if(kind STREQUAL "tests")
-      gtest_discover_tests(${exe} TEST_PREFIX "${name}." TEST_LIST ${exe}_list DISCOVERY_TIMEOUT 60
-                           PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1")
+      ocean_gtests(${exe} "${name}." LABELS ${labels} LEAK_CHECK)
     else()
-      gtest_discover_tests(${exe} TEST_PREFIX "${name}." TEST_LIST ${exe}_list DISCOVERY_TIMEOUT 60)
+      ocean_gtests(${exe} "${name}." LABELS ${labels})
     endif()
-    # Two labels, the kind and the chapter (ctest -L ${name}): gtest_discover_tests cannot pass a
-    # list through, so a script ctest reads after the discovered tests sets them.
-    set(label_script "${CMAKE_CURRENT_BINARY_DIR}/${exe}_labels.cmake")
-    file(WRITE "${label_script}"
-         "if(${exe}_list)\n  set_tests_properties(\${${exe}_list} PROPERTIES LABELS \"${labels}\")\nendif()\n")
-    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${label_script}")
   endforeach()
 
   # The chapter's exercises (./ocean exercise): exercises/exercise compiles every chapter's list in.

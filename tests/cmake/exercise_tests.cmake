@@ -7,14 +7,7 @@
 add_executable(exercise_input_tests unit/test_exercise_input.cpp)
 target_link_libraries(exercise_input_tests PRIVATE exercise_input GTest::gtest_main)
 ocean_warnings(exercise_input_tests)
-gtest_discover_tests(exercise_input_tests TEST_PREFIX "tools.exercise_input." TEST_LIST exercise_input_tests_list
-                     DISCOVERY_TIMEOUT 60 PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1")
-# Two labels: gtest_discover_tests cannot pass a list through, so a script ctest reads after the
-# discovered tests sets them (as add_step does for the chapters' tests).
-set(_exercise_labels "${CMAKE_CURRENT_BINARY_DIR}/exercise_input_tests_labels.cmake")
-file(WRITE "${_exercise_labels}" "if(exercise_input_tests_list)\n"
-     "  set_tests_properties(\${exercise_input_tests_list} PROPERTIES LABELS \"bad_input;tools\")\nendif()\n")
-set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${_exercise_labels}")
+ocean_gtests(exercise_input_tests "tools.exercise_input." LABELS bad_input tools LEAK_CHECK)
 
 # Every bad command line we know of, from one table (tests/cli/exercise_catalogue.sh): one
 # "exercise: error: " line, a non-zero exit, no file written, no command run from a quote.

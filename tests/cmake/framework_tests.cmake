@@ -24,8 +24,7 @@ target_compile_definitions(unit_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE
 ocean_warnings(unit_tests)
 # LeakSanitizer checks the CPU-only unit tests (the asan preset turns it off elsewhere: llvmpipe's
 # JIT-compiled code and unloaded GL drivers leave allocations it cannot even name).
-gtest_discover_tests(unit_tests TEST_PREFIX "unit." PROPERTIES LABELS "unit;core" DISCOVERY_TIMEOUT 60
-                     ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1")
+ocean_gtests(unit_tests "unit." LABELS unit core LEAK_CHECK)
 endif()
 
 # The fragment passes that stand in for compute shaders, in the build's GL profile: float textures
@@ -44,7 +43,7 @@ target_link_libraries(portable_gpu_tests PRIVATE ocean_common GTest::gtest)
 target_include_directories(portable_gpu_tests PRIVATE "${PROJECT_SOURCE_DIR}")
 target_compile_definitions(portable_gpu_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 ocean_warnings(portable_gpu_tests)
-gtest_discover_tests(portable_gpu_tests TEST_PREFIX "gpu." PROPERTIES LABELS "gpu;core" DISCOVERY_TIMEOUT 60)
+ocean_gtests(portable_gpu_tests "gpu." LABELS gpu core)
 
 # split_check: a --split screenshot against its two variants' renders (each chapter's step_split).
 add_executable(split_check "${_tests}/split_check.cpp")

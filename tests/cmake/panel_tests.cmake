@@ -18,7 +18,7 @@ add_executable(panel_screen_tests unit/test_panel_screen.cpp)
 target_link_libraries(panel_screen_tests PRIVATE ocean_common GTest::gtest_main)
 target_compile_definitions(panel_screen_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 ocean_warnings(panel_screen_tests)
-gtest_discover_tests(panel_screen_tests TEST_PREFIX "gpu." PROPERTIES LABELS gpu DISCOVERY_TIMEOUT 60)
+ocean_gtests(panel_screen_tests "gpu." LABELS gpu)
 
 # Every chapter's panel at its first-use width in 640x360 and 960x540: nothing in it is cut off at
 # its edge (tests/smoke/panel_fits.sh; the status lines wrap, a long parameter name goes above its
