@@ -1,5 +1,5 @@
 # ./ocean web: the chapters in a browser. Sourced by ./ocean (its helpers: refuse, say,
-# stop_if_dry_run, install_missing_packages, hand_over, check_whole).
+# stop_if_dry_run, install_missing_packages, hand_over, need_value, shown).
 #
 #   ./ocean web [--port N] [--no-serve]
 #
@@ -20,7 +20,10 @@ web() {
   local port=8080 serve=1
   while [ $# -gt 0 ]; do
     case "$1" in
-      --port) need_value "a port, 1024 to 65535" "$@"; check_whole --port "$2" 1024 65535; port=$((10#$2)); shift 2 ;;
+      --port) need_value "a port, 1024 to 65535" "$@"
+        [[ $2 =~ ^[0-9]{4,5}$ ]] && [ $((10#$2)) -ge 1024 ] && [ $((10#$2)) -le 65535 ] ||
+          refuse "--port expects a whole number in [1024, 65535], got $(shown "$2")"
+        port=$((10#$2)); shift 2 ;;
       --no-serve) serve=0; shift ;;
       *) refuse "unknown flag $(shown "$1") (--port N, --no-serve)" ;;
     esac

@@ -15,7 +15,7 @@
 # After every row: the canary file that the hostile strings try to create does not exist, the
 # row's own TMPDIR (an empty folder) is empty again, and `git status` of the repository (build/,
 # screenshots/ and __pycache__/ aside: other tests write there) is what it was before the row.
-# Last, Ctrl-C while the driver holds a temporary file: exit 130 and nothing left behind.
+# Last, Ctrl-C while the driver waits on a program: exit 130 and nothing left behind.
 set -u
 ocean=$1 build=$2 out=$3
 repo=$(cd "$(dirname "$ocean")" && pwd)
@@ -317,22 +317,27 @@ else
   fail check_no_work_folder          "check: exercises/work/step01_sine2d-2 does not exist: start with ./ocean exercise step01_sine2d 2" check step01_sine2d 2
 fi
 
-# Ctrl-C while the driver holds a temporary file (the exercise tool's messages, held until it
-# ends): a build folder whose exercise tool sleeps; SIGINT to the driver's process group, as a
-# terminal sends it; then exit 130 and an empty TMPDIR. Job control (set -m) gives the driver its
-# own process group, and without it bash would start it with SIGINT ignored, as for any `&` job.
+# Ctrl-C while the driver waits on a program (the exercise tool, whose messages it holds until it
+# ends): a build folder whose exercise tool says it started, then sleeps; SIGINT to the driver's
+# process group, as a terminal sends it; then exit 130 and an empty TMPDIR (the driver writes no
+# temporary file at all). Job control (set -m) gives the driver its own process group, and without
+# it bash would start it with SIGINT ignored, as for any `&` job.
 interrupted() {
-  local fake="$out/interrupt_build" tmp="$out/tmp/interrupt" pid i
+  local fake="$out/interrupt_build" tmp="$out/tmp/interrupt" started="$out/interrupt.started" pid i
   mkdir -p "$fake/exercises" "$tmp"
-  printf '#!/bin/sh\nsleep 30\n' > "$fake/exercises/exercise"
+  rm -f "$started"
+  printf '#!/bin/sh
+touch "%s"
+sleep 30
+' "$started" > "$fake/exercises/exercise"
   chmod +x "$fake/exercises/exercise"
   set -m
   OCEAN_BUILD_DIR=$fake TMPDIR=$tmp "$ocean" exercise > "$out/interrupt.stdout" 2> "$out/interrupt.stderr" &
   pid=$!
   set +m
-  for ((i = 0; i < 100; i++)); do [ -n "$(ls -A "$tmp")" ] && break; sleep 0.1; done
+  for ((i = 0; i < 100; i++)); do [ -e "$started" ] && break; sleep 0.1; done
   problems=()
-  [ -n "$(ls -A "$tmp")" ] || problems+=("no temporary file appeared within 10 s")
+  [ -e "$started" ] || problems+=("the exercise tool did not start within 10 s")
   kill -INT -- "-$pid" 2> /dev/null
   wait "$pid"
   status=$?
@@ -340,7 +345,7 @@ interrupted() {
   message=$(head -n 1 "$out/interrupt.stderr")
   [ "$status" -eq 130 ] || problems+=("exit $status, not 130")
   [ -z "$(ls -A "$tmp")" ] || problems+=("left in TMPDIR after Ctrl-C: $(ls -A "$tmp" | tr '\n' ' ')")
-  verdict interrupt_removes_temporary_files
+  verdict interrupt_exits_130_and_leaves_nothing
 }
 interrupted
 
