@@ -619,7 +619,7 @@ BENCH_EPILOG = """\
 measurements (one at a time; the results go into --out):
   (none)               every step's --bench in one table: bench.csv and the bar chart bench.png
   --sweep              each step that simulates at each FFT resolution (--resolutions, at --size)
-                       and each window (--windows, at resolution 256): sweep.csv and sweep.png
+                       and each window (--windows, at --window-resolution: 256): sweep.csv and sweep.png
   --against REV        the working tree's --step against the same step at REV (built in
                        build/against/SHA): the two alternate run by run (AB, BA, ...) and each pass
                        is the median of the per-pair ratios (tools/bench_pairs.py): against.txt
