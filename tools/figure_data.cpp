@@ -536,7 +536,7 @@ Figure frame_path(const std::string& name, const std::string& title, const Passe
             if (*mark) f.script << "set label \"" << mark << "\" at " << c << ", " << r << " center tc rgb 'white' front\n";
         }
     }
-    f.script << "set label \"R: the pass reads it   W: writes it   RW: both (in place)\" at screen " << 10.0 / width
+    f.script << "set label \"R: the pass reads it   W: writes it   RW: both\" at screen " << 10.0 / width
              << ", screen " << 15.0 / height << " left\n"
              << "plot NaN\n";
     f.data << "# drawn from the pass table; no data\n";
