@@ -97,7 +97,7 @@ double jonswap_variance_per_alpha(double peak_omega, double gamma);
 // observations"). Where the energy would pass PM's, gamma is lowered towards 1 (the peak's
 // enhancement is a young sea's overshoot, which the fully developed sea has lost), then alpha;
 // at F~_fd the fitted sea is PM's spectrum itself (alpha 0.0081, gamma 1). Lowering alpha alone
-// would drop the short waves' level to 0.0053, below PM's 0.0081, and with it the slopes step06's
+// there would drop the short waves' level to 0.0053, below PM's 0.0081, and with it the slopes step06's
 // glitter is held to. Under the growth law the energy stays below PM's (0.90 of it at F~_fd).
 struct JonswapShape {
     double alpha = 0;

@@ -1,6 +1,6 @@
 // Chapter 7.3-7.4: a rigid body on the sea. Its hull is cut into small cells; each frame the sea
 // is queried under every cell (sea_query.hpp), and each substep adds up, cell by cell,
-//   buoyancy   rho_w g V_submerged, up, at the submerged part's centre   (Archimedes)
+//   buoyancy   rho_w g V_submerged, up, on the cell's vertical            (Archimedes)
 //   drag       -rho_w V_submerged c (v_cell - v_water)                    (linear, against the water's own
 //   motion)
 // and their torques about the centre of mass, then moves the body by semi-implicit Euler.

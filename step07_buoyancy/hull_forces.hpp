@@ -34,7 +34,9 @@ struct Wrench {
 // Archimedes over the hull: each cell i (centred at centre_of_mass + rotation * offset, the water's
 // height above its centre water_lines[i]) is pushed up by the weight of the water it displaces,
 // rho_w g V wet_share, at the middle of its submerged part (on its vertical through the centre,
-// half the wet height above the cell's bottom); summed, with the torques about the centre of mass.
+// half the wet height above the cell's bottom: a vertical force's torque does not depend on the
+// height it acts at, so it is the torque of a force at the cell's centre); summed, with the
+// torques about the centre of mass.
 Wrench buoyancy(const std::vector<HullCell>& cells, const glm::dmat3& rotation, glm::dvec3 centre_of_mass,
                 const std::vector<double>& water_lines);
 
