@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """links.py REPO: every relative link and image in every Markdown file of the repository resolves.
 
-For each [text](target) and ![alt](target) outside code blocks and code spans: a web address
+For each [text](target), ![alt](target) and <img src="target"> outside code blocks and code spans: a web address
 (http, https, mailto) is left alone; any other target must name a file or folder of the repository,
 relative to the Markdown file, and a #fragment must be a heading of the file it points to (GitHub's
 anchors: lower case, punctuation dropped, spaces to hyphens). So no page links a file that is not
@@ -26,6 +26,7 @@ except (subprocess.CalledProcessError, FileNotFoundError):
     pages = sorted(p for p in repo.rglob("*.md") if "build" not in p.parts and "work" not in p.parts)
 
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
+IMG = re.compile(r"<img\s[^>]*src=\"([^\"]+)\"")  # an HTML picture (a table's thumbnail, sized)
 SPAN = re.compile(r"`[^`]*`")
 
 
@@ -56,7 +57,7 @@ for page in pages:
             continue
         where = f"{page.relative_to(repo)}:{number}"
         text = SPAN.sub("", line)
-        for target in LINK.findall(text):
+        for target in LINK.findall(text) + IMG.findall(text):
             if re.match(r"^(https?|mailto):", target):
                 continue
             checked += 1
