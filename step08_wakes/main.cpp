@@ -396,7 +396,7 @@ private:
         const double froude = step08::froude_number(speed, length);
         ImGui::TextWrapped("boat %.1f m/s; Froude number U / sqrt(g L) = %.2f; transverse waves %.1f m long", speed,
                            froude, step08::transverse_wavelength(speed));
-        ImGui::TextWrapped("%s", froude < 0.6 ? "a Kelvin wake: its edge at 19.5 degrees"
+        ImGui::TextWrapped("%s", froude < 0.5 ? "a Kelvin wake: its edge at 19.5 degrees"
                                               : "fast: the largest waves at a narrower angle, about 1 / Fr");
         if (plan_ && ImGui::Button("drop a stone ahead")) plan_view_.drop_stone_ahead();
     }
