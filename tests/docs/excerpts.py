@@ -5,17 +5,24 @@ A block names its file with a line `// from FILE` (relative to the step's folder
 ocean_simulation.cpp, ../step05_fft/ocean_simulation.cpp; more than one may follow each other); every other
 line, but the `//>` notes and blank lines, must be a line of that file (leading and trailing spaces
 aside). So an excerpt, shader or host code, cannot drift from the code: change the source and this
-test names the README line to update. Exit 0 when all hold.
+test names the README line to update. docs/portability.md holds the chapters' excerpts for the other
+GL profiles: there a block's files are relative to the chapter whose "### stepNN_name: ..." heading
+it sits under. Exit 0 when all hold.
 """
+import re
 import pathlib
 import sys
 
 repo = pathlib.Path(sys.argv[1])
 failures, checked = [], 0
-for readme in sorted(repo.glob("step*/README.md")):
-    step = readme.parent
+pages = [(readme, readme.parent) for readme in sorted(repo.glob("step*/README.md"))]
+pages.append((repo / "docs" / "portability.md", None))
+for readme, step in pages:
     in_block, source, lines = False, None, set()
     for number, line in enumerate(readme.read_text(encoding="utf-8").splitlines(), 1):
+        chapter = re.match(r"^### (step\d\d_[a-z0-9_]+)", line)
+        if chapter and readme.name == "portability.md":
+            step = repo / chapter.group(1)
         if line.startswith("```"):
             in_block = line.strip() in ("```glsl", "```cpp") and not in_block
             source = None
@@ -23,6 +30,9 @@ for readme in sorted(repo.glob("step*/README.md")):
         if not in_block or not line.strip() or line.lstrip().startswith("//>"):
             continue
         if line.startswith("// from "):
+            if step is None:
+                failures.append(f"{readme}:{number}: an excerpt outside any chapter's '### stepNN_name' section")
+                continue
             path = step / line[len("// from "):].strip()
             if not path.is_file():
                 failures.append(f"{readme}:{number}: no file {path}")
