@@ -12,43 +12,43 @@ ocean_warnings(image_compare)
 
 # unit: the framework on the CPU (each chapter's own math is tested in its folder: add_step TESTS).
 if(NOT OCEAN_GL_PORTABLE)
-set(_unit test_params test_cli test_image test_grid test_shader_source test_frame_clock test_faster_of_two
-          test_file_output test_input_events test_input_hand_over test_panel_groups test_panel_state
-          test_panel_widgets)
-list(TRANSFORM _unit PREPEND "${_tests}/unit/")
-list(TRANSFORM _unit APPEND ".cpp")
-add_executable(unit_tests ${_unit})
-target_link_libraries(unit_tests PRIVATE ocean_common GTest::gtest_main)
-target_include_directories(unit_tests PRIVATE "${PROJECT_SOURCE_DIR}")
-target_compile_definitions(unit_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-ocean_warnings(unit_tests)
-# LeakSanitizer checks the CPU-only unit tests (the asan preset turns it off elsewhere: llvmpipe's
-# JIT-compiled code and unloaded GL drivers leave allocations it cannot even name).
-ocean_gtests(unit_tests "unit." LABELS unit core LEAK_CHECK)
+  set(_unit test_params test_cli test_image test_grid test_shader_source test_frame_clock test_faster_of_two
+            test_file_output test_input_events test_input_hand_over test_panel_groups test_panel_state
+            test_panel_widgets)
+  list(TRANSFORM _unit PREPEND "${_tests}/unit/")
+  list(TRANSFORM _unit APPEND ".cpp")
+  add_executable(unit_tests ${_unit})
+  target_link_libraries(unit_tests PRIVATE ocean_common GTest::gtest_main)
+  target_include_directories(unit_tests PRIVATE "${PROJECT_SOURCE_DIR}")
+  target_compile_definitions(unit_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  ocean_warnings(unit_tests)
+  # LeakSanitizer checks the CPU-only unit tests (the asan preset turns it off elsewhere: llvmpipe's
+  # JIT-compiled code and unloaded GL drivers leave allocations it cannot even name).
+  ocean_gtests(unit_tests "unit." LABELS unit core LEAK_CHECK)
 endif()
 
 # The fragment passes that stand in for compute shaders, in the build's GL profile: float textures
 # (common/gl_texture.hpp), step05's fragment FFT and simulation, and step06's sky and foam, whose sources it
 # compiles (they need nothing else of their chapters, which the portable builds may leave out).
 if(NOT OCEAN_SANITIZE)
-add_executable(portable_gpu_tests "${_tests}/gpu/gpu_main.cpp" "${_tests}/gpu/portable_gpu.cpp"
-               "${PROJECT_SOURCE_DIR}/step05_fft/fragment_fft.cpp" "${PROJECT_SOURCE_DIR}/step05_fft/fragment_simulation.cpp"
-               "${PROJECT_SOURCE_DIR}/step06_foam_sky/sky.cpp" "${PROJECT_SOURCE_DIR}/step06_foam_sky/foam.cpp"
-               "${PROJECT_SOURCE_DIR}/step06_foam_sky/local_waves.cpp"
-               "${PROJECT_SOURCE_DIR}/step06_foam_sky/foam_pattern.cpp")
-if(NOT OCEAN_GL_PORTABLE)
-  target_sources(portable_gpu_tests PRIVATE "${PROJECT_SOURCE_DIR}/step05_fft/box_mipmaps.cpp")  # the sky's mipmaps in 4.5
-endif()
-target_link_libraries(portable_gpu_tests PRIVATE ocean_common GTest::gtest)
-target_include_directories(portable_gpu_tests PRIVATE "${PROJECT_SOURCE_DIR}")
-target_compile_definitions(portable_gpu_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-ocean_warnings(portable_gpu_tests)
-ocean_gtests(portable_gpu_tests "gpu." LABELS gpu core)
+  add_executable(portable_gpu_tests "${_tests}/gpu/gpu_main.cpp" "${_tests}/gpu/portable_gpu.cpp"
+                 "${PROJECT_SOURCE_DIR}/step05_fft/fragment_fft.cpp" "${PROJECT_SOURCE_DIR}/step05_fft/fragment_simulation.cpp"
+                 "${PROJECT_SOURCE_DIR}/step06_foam_sky/sky.cpp" "${PROJECT_SOURCE_DIR}/step06_foam_sky/foam.cpp"
+                 "${PROJECT_SOURCE_DIR}/step06_foam_sky/local_waves.cpp"
+                 "${PROJECT_SOURCE_DIR}/step06_foam_sky/foam_pattern.cpp")
+  if(NOT OCEAN_GL_PORTABLE)
+    target_sources(portable_gpu_tests PRIVATE "${PROJECT_SOURCE_DIR}/step05_fft/box_mipmaps.cpp")  # the sky's mipmaps in 4.5
+  endif()
+  target_link_libraries(portable_gpu_tests PRIVATE ocean_common GTest::gtest)
+  target_include_directories(portable_gpu_tests PRIVATE "${PROJECT_SOURCE_DIR}")
+  target_compile_definitions(portable_gpu_tests PRIVATE OCEAN_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  ocean_warnings(portable_gpu_tests)
+  ocean_gtests(portable_gpu_tests "gpu." LABELS gpu core)
 
-# split_check: a --split screenshot against its two variants' renders (each chapter's step_split).
-add_executable(split_check "${_tests}/split_check.cpp")
-target_link_libraries(split_check PRIVATE ocean_common)
-ocean_warnings(split_check)
+  # split_check: a --split screenshot against its two variants' renders (each chapter's step_split).
+  add_executable(split_check "${_tests}/split_check.cpp")
+  target_link_libraries(split_check PRIVATE ocean_common)
+  ocean_warnings(split_check)
 endif()
 
 get_property(OCEAN_STEPS GLOBAL PROPERTY OCEAN_STEPS)

@@ -24,10 +24,9 @@ foreach(_case IN LISTS _cases ITEMS "step07_buoyancy;steer_push" "step04_fbm;dra
   endif()
   set(_name ${_step}.window_input.${_kind})
   add_test(NAME ${_name} COMMAND bash "${_window_input}" ${_kind} $<TARGET_FILE:${_step}> ${_flags})
-  set(_hold 1)        # seconds the arrows are held (read as held once a frame)
-  set(_frame_wait 10)  # seconds for what was sent within one frame to show (window_input.sh)
-  set(_timeout 120)
-  set_tests_properties(${_name} PROPERTIES LABELS "windowed;gpu;${_step}" TIMEOUT ${_timeout} SKIP_RETURN_CODE 77
+  # ARROWS_HELD_S: seconds the arrows are held (read as held once a frame); FRAME_WAIT_S: seconds
+  # for what was sent within one frame to show (window_input.sh).
+  set_tests_properties(${_name} PROPERTIES LABELS "windowed;gpu;${_step}" TIMEOUT 120 SKIP_RETURN_CODE 77
                                            RUN_SERIAL TRUE
-                                           ENVIRONMENT "XDG_CONFIG_HOME=${CMAKE_BINARY_DIR}/test-output/config;ARROWS_HELD_S=${_hold};FRAME_WAIT_S=${_frame_wait}")
+                                           ENVIRONMENT "XDG_CONFIG_HOME=${CMAKE_BINARY_DIR}/test-output/config;ARROWS_HELD_S=1;FRAME_WAIT_S=10")
 endforeach()
