@@ -1,6 +1,6 @@
 // What the exercises' checks give the learner's functions (STEP/exercises.cpp): the same waves, at
-// the same time, as the chapters' tests of their CPU references. step01's here; step02's
-// (step02_sine3d/exercise_inputs.hpp) adds its directional waves at the same time.
+// the same time, as the chapter's tests of its CPU reference (a later chapter's exercise_inputs.hpp
+// adds its own waves at the same time).
 #pragma once
 
 #include <vector>

@@ -1,14 +1,9 @@
-// The GPU's waves against the CPU reference in double precision.
-//  - step01: sine_sum.glsl evaluated by a compute shader into a buffer.
-//  - step02: the positions ocean.vert outputs, captured by transform feedback from the real
-//    vertex shader, fed by the real grid and the real uniform upload.
+// The GPU's waves against the CPU reference in double precision: sine_sum.glsl evaluated by a
+// compute shader into a buffer.
 // Tolerance 1e-4 m: float sin() of arguments up to ~60 rad has an absolute error near 1e-5.
-#include "common/grid.hpp"
 #include "common/shader.hpp"
 #include "step01_sine2d/sine_sum.hpp"
-#include "step02_sine3d/wave_uniforms.hpp"
 #include "tests/gpu/gl_test_context.hpp"
-#include "tests/gpu/vertex_capture.hpp"
 
 #include <cmath>
 #include <cstring>

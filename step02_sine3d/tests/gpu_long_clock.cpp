@@ -1,8 +1,7 @@
 // A 10-day clock: the phases are reduced modulo 2 pi in double precision before they become
-// floats, so after ten days of simulated time the waves are still exact. One mode alone makes it
+// floats, so after ten days of simulated time the waves are still exact. One wave alone makes it
 // checkable: its height repeats every period T = 2 pi / omega, and matches the closed form.
 #include "step02_sine3d/wave_uniforms.hpp"
-#include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 #include "tests/gpu/vertex_capture.hpp"
