@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""excerpts.py REPO: every ```glsl and ```cpp block in a step's README quotes its code verbatim.
+"""excerpts.py REPO: every ```glsl and ```cpp block in a chapter's lesson pages quotes its code verbatim.
 
 A block names its file with a line `// from FILE` (relative to the step's folder: shaders/ocean.vert,
 ocean_simulation.cpp, ../step05_fft/ocean_simulation.cpp; more than one may follow each other); every other
@@ -13,9 +13,11 @@ import re
 import pathlib
 import sys
 
+from lessons import lesson_pages
+
 repo = pathlib.Path(sys.argv[1])
 failures, checked = [], 0
-pages = [(readme, readme.parent) for readme in sorted(repo.glob("step*/README.md"))]
+pages = [(page, page.parent) for page in lesson_pages(repo)]
 pages.append((repo / "docs" / "portability.md", None))
 for readme, step in pages:
     in_block, source, lines = False, None, set()

@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
-"""lab_free.py REPO: no chapter's README is a lab report.
+"""lab_free.py REPO: no chapter's lesson page is a lab report, nor a porting guide.
 
 A lesson teaches what the code does and why; how fast it ran on which machine, which issue changed
 it and what was tried and not kept belong to the maintainers' pages: docs/performance.md (costs,
 drivers, what did not pay) and each step's how_we_know.md (tests and their evidence). Where a technique exists for speed the lesson says why in one sentence and links
 ../docs/performance.md; the figures stay there, so a lesson does not go stale with a driver.
 
-Every line of every step*/README.md (step_template's too), code blocks included but their
-`// from FILE` lines, is checked for four kinds of lab text:
+Every line of every lesson page (lessons.py: step*/*.md but how_we_know.md, step_template's too),
+code blocks included but their `// from FILE` lines, is checked for six kinds of lab text:
   timing      a number with a unit of time or rate: 3.4 ms, 5 µs, 30 fps, 60 frames per second
               (not an animation's caption: "4 s at 15 frames a second" describes the picture),
               "N times faster/slower", "2.5x faster";
@@ -15,13 +15,22 @@ Every line of every step*/README.md (step_template's too), code blocks included 
               AMD, Intel, SwiftShader, ANGLE (upper case only: "angle" is geometry) ...;
   issue       an issue's number or its stops: "issue 23", "#23", "stop 12", "the fourth stop";
   rejected    a phrase that only a report of what was tried uses (REJECTED below; kept short, so
-              that plain lesson words such as "measured" or "slower" stay free).
+              that plain lesson words such as "measured" or "slower" stay free);
+  report      a test report or a history: "For maintainers", "what went wrong first", "measured
+              about", an RMSE, a driver that "miscompiled", "the issue that asked", "we have not
+              read", a command line with a build folder or a --gtest_filter;
+  profile     the plumbing of the other GL profiles: a "Without GL 4.5" section, a build macro
+              (OCEAN_GL_..., __EMSCRIPTEN__), or a paragraph that names GL 4.1, ES 3.0, WebGL or
+              macOS without linking docs/portability.md, where that plumbing is taught. A chapter
+              says where its code differs by profile in a line, with that link.
 It prints `FAIL: path:line: kind: text` for each hit and exits 1 on any. It cannot pass vacuously:
 it fails when it finds no README, or when its own patterns misjudge the samples below.
 """
 import pathlib
 import re
 import sys
+
+from lessons import lesson_pages
 
 ORDINALS = ("first|second|third|fourth|fifth|sixth|seventh|eighth|ninth|tenth|eleventh|twelfth|"
             "thirteenth|fourteenth|fifteenth|\\d+(?:st|nd|rd|th)")
@@ -51,7 +60,24 @@ REJECTED_PHRASES = (
 )
 REJECTED = [re.compile(r"\b" + re.escape(p).replace(r"\ ", r"\s+") + r"(?:s|ed|ing)?\b", re.I)
             for p in REJECTED_PHRASES]  # benchmark, benchmarks, benchmarked
-KINDS = (("timing", TIMING), ("gpu", GPU), ("issue", ISSUE), ("rejected", REJECTED))
+REPORT = [
+    re.compile(r"\bfor maintainers\b", re.I),
+    re.compile(r"\bwhat went wrong\b|\bwent wrong first\b", re.I),
+    re.compile(r"\bmeasured (?:about|around|roughly|at about)\b", re.I),
+    re.compile(r"\bRMSE\b"),
+    re.compile(r"\bmiscompil", re.I),
+    re.compile(r"\bthe issue that\b", re.I),
+    re.compile(r"\b(?:we|I) have not read\b", re.I),
+    re.compile(r"\bbuild/(?:ci|release|debug|asan|portable|es|web|<preset>)/"),
+    re.compile(r"--gtest_filter"),
+]
+PROFILE = [
+    re.compile(r"\bwithout GL 4\.5\b", re.I),
+    re.compile(r"\bOCEAN_(?:GL|ES|WEB)_?\w*|__EMSCRIPTEN__"),
+]
+PROFILE_NAMES = re.compile(r"\bGL 4\.1\b|\bES 3\.0\b|\bWebGL\b|\bmacOS\b")
+KINDS = (("timing", TIMING), ("gpu", GPU), ("issue", ISSUE), ("rejected", REJECTED), ("report", REPORT),
+         ("profile", PROFILE))
 
 
 # Not lab text, removed before judging: an animation's caption gives its length and playback rate
@@ -87,6 +113,16 @@ MUST_CATCH = [
     ("rejected", "a shared twiddle table (we tried: normals flipped sign)"),
     ("rejected", "which is a benchmark"),
     ("rejected", "the cost (benchmarks, not tests)"),
+    ("report", "## For maintainers"),
+    ("report", "**What went wrong first, and why the identity.**"),
+    ("report", "the error, measured about 3 × 10⁻⁷, stays below"),
+    ("report", "an RMSE of 1.9 against the golden"),
+    ("report", "a GPU driver miscompiled the nested loop"),
+    ("report", "as the issue that asked for this chapter saw"),
+    ("report", "from the paper's abstract (the paper itself we have not read)"),
+    ("report", "`./build/release/step08_wakes/step08_wakes_tests --gtest_filter='Step08*'`"),
+    ("profile", "## Without GL 4.5: macOS, ES 3.0, the browser"),
+    ("profile", "#if OCEAN_GL_BIND_TO_EDIT"),
 ]
 MUST_PASS = [
     "A crest sits where the angle x w − t φ is constant",
@@ -102,7 +138,31 @@ MUST_PASS = [
     "float ms = 1.0; // a variable named ms",
     "the rounds: [how_we_know.md](how_we_know.md#what-it-costs-benchmarks-not-tests)",
     "![step01_sine2d in motion: 4 s at 15 frames a second](../docs/animations/step01_sine2d.webp)",
+    "the waves' heights, measured from the mean level",
+    "the root mean square of the heights",
 ]
+# A paragraph that names another profile must link where its plumbing is taught.
+PARAGRAPH_MUST_CATCH = ["The Mac's GL 4.1 has no compute shaders,\nso this pass draws into a float texture."]
+PARAGRAPH_MUST_PASS = ["GL 4.1 and ES 3.0 bind the object first\n([docs/portability.md](../docs/portability.md#step02))."]
+
+
+def unlinked_profile_paragraphs(text):
+    """(first line number, text) of each paragraph outside code blocks that names GL 4.1, ES 3.0,
+    WebGL or macOS without a link to docs/portability.md."""
+    found, paragraph, start, in_block = [], [], 0, False
+    for number, line in enumerate(text.splitlines() + [""], 1):
+        if line.startswith("```"):
+            in_block = not in_block
+        if in_block or line.startswith(("```", "#")) or not line.strip():  # a heading is judged as a line
+            joined = "\n".join(paragraph)
+            if PROFILE_NAMES.search(joined) and "portability.md" not in joined:
+                found.append((start, paragraph[0].strip()))
+            paragraph = []
+            continue
+        if not paragraph:
+            start = number
+        paragraph.append(line)
+    return found
 
 failures = []
 for kind, sample in MUST_CATCH:
@@ -111,12 +171,21 @@ for kind, sample in MUST_CATCH:
 for sample in MUST_PASS:
     if judge(sample):
         failures.append(f"self-check: a lesson line caught as {', '.join(judge(sample))}: {sample}")
+for sample in PARAGRAPH_MUST_CATCH:
+    if not unlinked_profile_paragraphs(sample):
+        failures.append(f"self-check: a profile paragraph without its link not caught: {sample!r}")
+for sample in PARAGRAPH_MUST_PASS:
+    if unlinked_profile_paragraphs(sample):
+        failures.append(f"self-check: a linked profile paragraph caught: {sample!r}")
 
 repo = pathlib.Path(sys.argv[1]).resolve()
-readmes = sorted(repo.glob("step*/README.md"))
+readmes = lesson_pages(repo)
 lines_checked = 0
 for readme in readmes:
-    for number, line in enumerate(readme.read_text(encoding="utf-8").splitlines(), 1):
+    text = readme.read_text(encoding="utf-8")
+    for number, first in unlinked_profile_paragraphs(text):
+        failures.append(f"{readme.relative_to(repo)}:{number}: profile (no link to docs/portability.md): {first}")
+    for number, line in enumerate(text.splitlines(), 1):
         if line.startswith("// from "):
             continue  # a code excerpt's file name (excerpts.py checks the rest of the block)
         lines_checked += 1
@@ -125,6 +194,6 @@ for readme in readmes:
 for failure in failures:
     print("FAIL:", failure)
 if not readmes:
-    print("FAIL: no step*/README.md found")
-print(f"lab_free: {lines_checked} lines of {len(readmes)} READMEs checked, {len(failures)} with lab text")
+    print("FAIL: no lesson page (step*/README.md) found")
+print(f"lab_free: {lines_checked} lines of {len(readmes)} lesson pages checked, {len(failures)} with lab text")
 sys.exit(1 if failures or not readmes else 0)
