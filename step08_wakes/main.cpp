@@ -11,7 +11,6 @@
 // the lesson's laboratory, where Kelvin's angle is measured.
 // Controls: step06's; the arrows (held) steer the boat; a left click drops a stone.
 #include "common/app.hpp"
-#include "common/error.hpp"
 #include "common/gpu_timer.hpp"
 #include "step06_foam_sky/look_params.hpp"
 #include "step06_foam_sky/post.hpp"
@@ -24,7 +23,6 @@
 #include "step07_buoyancy/hull_forces.hpp"
 #include "step07_buoyancy/sea_feed.hpp"
 #include "step07_buoyancy/sea_query.hpp"
-#include "step08_wakes/hull_contact.hpp"
 #include "step08_wakes/plan_view.hpp"
 #include "step08_wakes/wake_experiments.hpp"
 #include "step08_wakes/wake_maps.hpp"
@@ -75,7 +73,6 @@ public:
             p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat has sailed before the first frame");
             p.add_bool("follow_boat", &follow_boat_, "the camera keeps the boat where it is in the view");
             p.add_bool("show_wake", &show_wake_, "the wake added to the sea (off: step07's sea, which no body disturbs)");
-            p.add_bool("buoy_waves", &buoy_waves_, "the buoy makes waves as it heaves (off: it rides the wake on step07's Archimedes)");
         }
         plan_view_.declare(p);
         use_camera({{0, 0, 0}, 45, 35, 22}, ocean::kOceanReach);
@@ -150,78 +147,35 @@ private:
             // step07's sea: the field waits where the boat is, to take up from there.
             const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
             wake_->place({boat.position().x, boat.position().z}, {along.x, along.z});
-            if (buoy_sources_) buoy_sources_->let_go(bodies_[step07::kBuoy]);
             for (std::size_t b = 0; b < bodies_.size(); ++b)
-                if (b != step07::kBoat) {
-                    if (!bodies_[b].archimedes()) wake_->lift_out(bodies_[b], feed_.before());
-                    bodies_[b].set_archimedes(true);
-                    bodies_[b].step(feed_.before(), feed_.now(), dt, feed_.interval());
-                }
+                if (b != step07::kBoat) bodies_[b].step(feed_.before(), feed_.now(), dt, feed_.interval());
             sea_.add_local_waves(nullptr);
             stones_.clear();
             wake_ms_ = 0;
             return;
         }
-        // The raft, within the field, in contact with it, and the buoy afloat within it, radiating:
-        // they move with the field's steps and make their waves; a body outside the field (or the
-        // buoy out of the water) floats on the sea with the wake in it.
-        step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval(), {}};
-        step07::FloatingBody& buoy = bodies_[step07::kBuoy];
-        const bool radiating = buoy_radiates(wake_->field(), buoy);
-        if (radiating)
-            in_contact.radiating.push_back({&buoy, buoy_sources_.get()});
-        else if (buoy_sources_)
-            buoy_sources_->let_go(buoy);
-        for (std::size_t b = 0; b < bodies_.size(); ++b) {
-            const bool contact = b != step07::kBoat && step08::can_touch(wake_->field(), bodies_[b]);
-            // A body coming into the field brings its dent with it: the water under it settled
-            // where its hull is, as Archimedes held it (else the first step would push it all in);
-            // one leaving takes its dent away (else the dent would fall back as a ring of waves).
-            if (contact && bodies_[b].archimedes()) wake_->settle_under(bodies_[b], feed_.before());
-            if (!contact && !bodies_[b].archimedes()) wake_->lift_out(bodies_[b], feed_.before());
-            bodies_[b].set_archimedes(!contact);
-            if (contact) in_contact.bodies.push_back(&bodies_[b]);
-        }
-        try {
-            press(*wake_, boat, dt, &in_contact);
-        } catch (const ocean::Error& failure) {
-            // Should a contact's system still be singular, the frame goes on without it: its bodies
-            // float on Archimedes (and try again next frame), rather than the program stopping.
-            if (!contact_failed_) std::cerr << "warning: " << failure.what() << "; the bodies in contact float on Archimedes this frame\n";
-            contact_failed_ = true;
-            for (step07::FloatingBody* body : in_contact.bodies) {
-                wake_->lift_out(*body, feed_.before());
-                body->set_archimedes(true);
-            }
-        }
+        press(*wake_, boat, dt);
         for (const glm::dvec2& stone : stones_) wake_->drop_stone(stone);
         stones_.clear();
         wake_before_ = std::move(wake_now_);
         wake_now_ = step08::wake_maps(wake_->field(), sea_.choppiness());
         const step08::SeaWithWake before(feed_.before(), wake_before_), now(feed_.now(), wake_now_);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
-            if (b != step07::kBoat && bodies_[b].archimedes() && !(b == step07::kBuoy && radiating))
-                bodies_[b].step(before, now, dt, feed_.interval());
+            if (b != step07::kBoat) bodies_[b].step(before, now, dt, feed_.interval());
         local_waves_.upload(wake_now_);
         sea_.add_local_waves(&local_waves_);
         wake_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     }
 
-    // Whether the buoy makes waves this frame: switched on, with sources, and as they hold for it.
-    bool buoy_radiates(const step08::WaveField& field, const step07::FloatingBody& buoy) const {
-        return buoy_waves_ && buoy_sources_ && buoy_sources_->holds(field, buoy, feed_.before());
-    }
-
     // The hull's patch pressed on the field over dt, from where it was to where the boat is now.
-    static void press(step08::WakeScene& wake, const step07::FloatingBody& boat, double dt,
-                      const step08::BodiesInContact* bodies) {
+    static void press(step08::WakeScene& wake, const step07::FloatingBody& boat, double dt) {
         const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
-        wake.press(dt, {boat.position().x, boat.position().z}, {along.x, along.z}, hull_patch(boat), bodies);
+        wake.press(dt, {boat.position().x, boat.position().z}, {along.x, along.z}, hull_patch(boat));
     }
     // The patch of the water the boat displaces afloat, its mass over the water's density
     // (Archimedes): its weight is what presses. Not the volume under water at this instant, which
     // swings as the boat heaves in the sea's waves (and is nothing while it falls on its drop):
-    // the patch would pulse and ring; the waves a heaving hull makes are section 4's contact.
+    // the patch would pulse and ring.
     static step08::BoatSettings hull_patch(const step07::FloatingBody& boat) {
         return step08::hull_of(boat.settings().shape.size.x, boat.mass() / step07::kWaterDensity);
     }
@@ -241,9 +195,8 @@ private:
         const glm::dvec2 heading = glm::normalize(glm::dvec2(along.x, along.z));
         boat.push(boat.mass() * speed * glm::dvec3(heading.x, 0, heading.y), boat.position());
         // The raft abeam of the boat, 10 m off its course (step07 drops it where this boat, under
-        // way, would sail through it): within the field, where its waves are the field's, and where
-        // the boat's wake reaches it a few seconds on. Put afloat at its draft, not dropped: a 5 m
-        // raft falling 1.5 m flat on the water would splash the view white with its rings.
+        // way, would sail through it): where the boat's wake reaches it a few seconds on. Put
+        // afloat at its draft, not dropped, so that what rocks it is the wake.
         step07::FloatingBody& raft = bodies_[step07::kRaft];
         const glm::dvec2 beside = glm::dvec2(boat.position().x, boat.position().z) + 10.0 * glm::dvec2(-heading.y, heading.x);
         const step07::BodySettings& r = raft.settings();
@@ -251,14 +204,6 @@ private:
         raft = step07::FloatingBody(r, {beside.x, afloat, beside.y}, raft.orientation());
         wake_settings_ = field_settings();
         wake_ = std::make_unique<step08::WakeScene>(wake_settings_);
-        try {
-            buoy_sources_ = std::make_unique<step08::RadiatingBuoy>(wake_->field(), bodies_[step07::kBuoy]);
-        } catch (const ocean::Error& failure) {
-            // A buoy as dense as the water (it sinks) or too large for the grid has no sources: it
-            // rides the wake on step07's Archimedes.
-            std::cerr << "warning: " << failure.what() << "; the buoy rides the wake without making waves\n";
-            buoy_sources_.reset();
-        }
         step08::BoatSettings hull = hull_patch(boat);
         hull.speed = speed;
         const glm::dvec2 at(boat.position().x, boat.position().z);
@@ -278,9 +223,9 @@ private:
     }
 
     // --bench: the wake's CPU time per 1/60 s frame (median of 15, milliseconds), as a machine that
-    // draws 60 frames a second would spend it: a copy of the boat, the raft (in contact with the
-    // field when it is) and the field, the boat going straight on and pressing the field, the
-    // field's maps made each frame; and step05's backends as step07 times them.
+    // draws 60 frames a second would spend it: a copy of the boat and the field, the boat going
+    // straight on and pressing the field, the field's maps made each frame; and step05's backends
+    // as step07 times them.
     BenchFigures bench_figures() {
         BenchFigures figures;
 #ifndef OCEAN_GL_PORTABLE
@@ -299,25 +244,12 @@ private:
             time_frames([&] { scene.sail(1.0 / 60, plan_view_.boat(), plan_view_.rudder()); });
         } else if (wake_ && !bodies_.empty() && feed_.ready()) {
             step08::WakeScene scene = *wake_;
-            std::vector<step07::FloatingBody> bodies = bodies_;
-            step08::BodiesInContact in_contact{{}, &feed_.before(), &feed_.now(), feed_.interval(), {}};
-            for (std::size_t b = 0; b < bodies.size(); ++b)
-                if (b != step07::kBoat && !bodies[b].archimedes()) in_contact.bodies.push_back(&bodies[b]);
-            std::unique_ptr<step08::RadiatingBuoy> sources;
-            if (buoy_radiates(scene.field(), bodies[step07::kBuoy])) {
-                sources = std::make_unique<step08::RadiatingBuoy>(*buoy_sources_);
-                in_contact.radiating.push_back({&bodies[step07::kBuoy], sources.get()});
-            }
-            try {
-                time_frames([&] {
-                    bodies[step07::kBoat].step(feed_.before(), feed_.now(), 1.0 / 60, feed_.interval());
-                    press(scene, bodies[step07::kBoat], 1.0 / 60, &in_contact);
-                    step08::wake_maps(scene.field(), sea_.choppiness());
-                });
-            } catch (const ocean::Error& failure) {  // as sail() does: the run goes on, without this figure
-                std::cerr << "warning: " << failure.what() << "; no wave_field_ms\n";
-                return figures;
-            }
+            step07::FloatingBody boat = bodies_[step07::kBoat];
+            time_frames([&] {
+                boat.step(feed_.before(), feed_.now(), 1.0 / 60, feed_.interval());
+                press(scene, boat, 1.0 / 60);
+                step08::wake_maps(scene.field(), sea_.choppiness());
+            });
         }
         figures.push_back({"wave_field_ms", ocean::median(times)});
         return figures;
@@ -416,13 +348,11 @@ private:
     unsigned bodies_built_for_ = 0;
     // The wake: its field, its maps last frame and now, and the textures step06's shaders read.
     std::unique_ptr<step08::WakeScene> wake_;
-    std::unique_ptr<step08::RadiatingBuoy> buoy_sources_;  // the buoy's, for the field's grid
     step08::WaveFieldSettings wake_settings_;
     step06::LocalWaveMaps wake_before_, wake_now_;
     step06::LocalWaves local_waves_;
     step08::PlanView plan_view_;
-    bool plan_ = false, follow_boat_ = true, show_wake_ = true, buoy_waves_ = true;
-    bool contact_failed_ = false;  // warned once
+    bool plan_ = false, follow_boat_ = true, show_wake_ = true;
     float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;
     int cells_choice_ = 1;
     double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held

@@ -1,19 +1,20 @@
 #include "step08_wakes/wake_maps.hpp"
 
 #include "common/constants.hpp"
+#include "common/error.hpp"
 
 #include <cmath>
 
 namespace step08 {
 
-step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness) {
+step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness, const std::vector<double>* heights_drawn) {
     const int n = field.n();
     const std::size_t cells = std::size_t(n) * std::size_t(n);
     const Fft2d& fft = field.fft();
     std::vector<Complex> heights(cells);
-    // The surface beside the bodies in contact: their dents (the water under a hull, which the
-    // hull hides) left out, their waves kept (wave_field.hpp's contact_pressure).
-    for (std::size_t c = 0; c < cells; ++c) heights[c] = field.heights()[c] + field.contact_pressure()[c] / ocean::kGravity;
+    const std::vector<double>& drawn = heights_drawn != nullptr ? *heights_drawn : field.heights();
+    if (drawn.size() != cells) throw ocean::Error("wake maps: heights of the wrong size");
+    for (std::size_t c = 0; c < cells; ++c) heights[c] = drawn[c];
     fft.forward(heights);
 
     // Four complex maps, each carrying two real ones (first + i second): the transform of a real

@@ -1,4 +1,4 @@
-// Chapter 8.6: the wake drawn on step06's sea. The renderer draws a sea as step05's two maps,
+// Chapter 8, the wake drawn on step06's sea. The renderer draws a sea as step05's two maps,
 // (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz): the wave field becomes the same
 // two maps over its own grid, and step06's shaders add them to the cascades (local_waves.glsl).
 //
@@ -19,6 +19,9 @@ namespace step08 {
 // The field's maps with choppiness l (step05's: how far the crests are pulled together), in
 // double then rounded to float, laid out as step06::LocalWaves takes them. The transform's Nyquist
 // row and column are left out: their horizontal motion is not a real field (i kx is odd there).
-step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness);
+// `heights_drawn` (n * n), if given, is drawn in place of the field's own heights, on its grid: a
+// program that hides part of the surface (under a hull) draws what it shows.
+step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness,
+                                const std::vector<double>* heights_drawn = nullptr);
 
 }  // namespace step08

@@ -1,7 +1,5 @@
 #include "step08_wakes/wake_scene.hpp"
 
-#include "step08_wakes/hull_contact.hpp"
-
 #include "common/constants.hpp"
 
 #include <glm/geometric.hpp>
@@ -50,7 +48,7 @@ void WakeScene::place(glm::dvec2 position, glm::dvec2 heading) {
 }
 
 void WakeScene::press(double seconds, glm::dvec2 to, glm::dvec2 heading, const BoatSettings& hull,
-                      const BodiesInContact* bodies) {
+                      const FieldStep& step) {
     if (!(seconds > 0)) return;
     const glm::dvec2 from = position_;
     const double from_heading = heading_;
@@ -61,14 +59,14 @@ void WakeScene::press(double seconds, glm::dvec2 to, glm::dvec2 heading, const B
     for (int s = 0; s < steps; ++s) {
         const double middle = (s + 0.5) / steps;
         heading_ = from_heading + middle * turn;
-        press_once(h, from + middle * (to - from), boat_heading(), hull, bodies, double(s) / steps, double(s + 1) / steps);
+        press_once(h, from + middle * (to - from), boat_heading(), hull, step, double(s) / steps, double(s + 1) / steps);
     }
     position_ = to;
     heading_ = from_heading + turn;
 }
 
 void WakeScene::press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const BoatSettings& hull,
-                           const BodiesInContact* bodies, double from, double to) {
+                           const FieldStep& step, double from, double to) {
     field_.follow(middle - 0.25 * field_.side() * ahead);
     const int n = field_.n();
     const glm::dvec2 across(-ahead.y, ahead.x);
@@ -79,25 +77,11 @@ void WakeScene::press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const 
                 hull_pressure(hull, {d.x * ahead.x + d.y * ahead.y, d.x * across.x + d.y * across.y});
         }
     forcing_.source.clear();
-    if (bodies == nullptr) {
-        field_.step(h, forcing_);
-        return;
-    }
-    const SeaBetween sea_from(*bodies->before, *bodies->now, from), sea_to(*bodies->before, *bodies->now, to);
-    const double sea_interval = bodies->sea_interval * (to - from);
-    // The buoys move first and hand their sources to this step's forcing, beside the hull's pressure.
-    for (const Radiating& buoy : bodies->radiating) buoy.sources->step(field_, *buoy.body, sea_from, sea_to, h, sea_interval, forcing_);
-    if (bodies->bodies.empty())
-        field_.step(h, forcing_);
+    if (step)
+        step(field_, h, forcing_, from, to);
     else
-        step_with_bodies(field_, bodies->bodies, sea_from, sea_to, h, sea_interval, forcing_);
+        field_.step(h, forcing_);
 }
-
-void WakeScene::settle_under(const step07::FloatingBody& body, const step07::Surface& sea) {
-    step08::settle_under(field_, body, sea);
-}
-
-void WakeScene::lift_out(const step07::FloatingBody& body, const step07::Surface& sea) { step08::lift_out(field_, body, sea); }
 
 void WakeScene::drop_stone(glm::dvec2 at, double impulse, double radius) { field_.add_impulse(at, impulse, radius); }
 

@@ -1,16 +1,14 @@
-// Chapter 8.5: the boat and the stones, as the program runs them: a pressure patch the shape of a
+// Chapter 8: the boat and the stones, as the program runs them: a pressure patch the shape of a
 // hull's waterline sailing at the boat's speed and heading, and stones dropped where the learner
 // clicks, pushing on a wave field that follows the boat. The tests and the README's figures drive
 // the same class, so what they measure is what the window shows.
 #pragma once
 
-#include "step07_buoyancy/floating_body.hpp"
-#include "step08_wakes/radiating_buoy.hpp"
 #include "step08_wakes/wave_field.hpp"
 
 #include <glm/vec2.hpp>
 
-#include <vector>
+#include <functional>
 
 namespace step08 {
 
@@ -32,22 +30,11 @@ double hull_pressure(const BoatSettings& boat, glm::dvec2 along_across);
 // submerged volume its buoyancy already gives.
 BoatSettings hull_of(double length, double submerged_volume);
 
-// A buoy and its sources (radiating_buoy.hpp).
-struct Radiating {
-    step07::FloatingBody* body = nullptr;
-    RadiatingBuoy* sources = nullptr;
-};
-
-// step07's bodies a press carries along in its steps, in contact with the field (hull_contact.hpp)
-// or radiating into it (radiating_buoy.hpp): each step moves them with the field, over the part of
-// the frame it covers.
-struct BodiesInContact {
-    std::vector<step07::FloatingBody*> bodies;  // such as the contact takes (can_touch)
-    const step07::Surface* before = nullptr;   // the incident sea at the frame's start and end
-    const step07::Surface* now = nullptr;
-    double sea_interval = 0;                   // seconds between those two seas
-    std::vector<Radiating> radiating;          // such as their sources hold for (RadiatingBuoy::holds)
-};
+// One step of the field of h seconds, the hull's pressure already in `forcing`, covering the share
+// `from` to `to` of the interval press() was given. A program that moves something else with the
+// field in the same steps (a body floating on it) takes the step in its place; by default it is
+// field.step(h, forcing).
+using FieldStep = std::function<void(WaveField& field, double h, Forcing& forcing, double from, double to)>;
 
 class WakeScene {
 public:
@@ -64,30 +51,24 @@ public:
     // A hull the program moves itself (step08's main: step07's boat, pushed by its engine): over
     // `seconds` its middle goes on from where it was to `to` (x, z) and its heading turns to
     // `heading` (x, z), pressing with `hull`'s patch (its speed and turn rate unused). Cut into steps
-    // in which it moves at most a cell, as sail() is; `bodies`, if given, are moved in the same
-    // steps, in contact with the field.
+    // in which it moves at most a cell, as sail() is; each step is `step`'s, if given.
     void press(double seconds, glm::dvec2 to, glm::dvec2 heading, const BoatSettings& hull,
-               const BodiesInContact* bodies = nullptr);
+               const FieldStep& step = {});
     // A stone's splash at `at` (x, z): an impulse of `impulse` m^4/s (its momentum over the
     // water's density) spread over `radius` metres.
     void drop_stone(glm::dvec2 at, double impulse = 0.02, double radius = 0.3);
 
-    // The field at rest under a body floating still (hull_contact.hpp's settle_under), for a body
-    // that comes into contact with it.
-    void settle_under(const step07::FloatingBody& body, const step07::Surface& sea);
-    // Its dent taken out again, for a body that leaves contact (hull_contact.hpp's lift_out).
-    void lift_out(const step07::FloatingBody& body, const step07::Surface& sea);
-
     const WaveField& field() const { return field_; }
+    WaveField& field() { return field_; }  // for a program that sets parts of it (a calm patch)
     glm::dvec2 boat_position() const { return position_; }
     glm::dvec2 boat_heading() const;  // unit (x, z)
 
 private:
     // One step of h seconds with the patch at `middle`, heading `ahead` (unit); the grid's centre a
     // quarter of its side behind it, so that most of the grid holds the wake.
-    // With `bodies`, the step covers the share `from` to `to` of their frame.
+    // The step covers the share `from` to `to` of press()'s interval (step's, if given).
     void press_once(double h, glm::dvec2 middle, glm::dvec2 ahead, const BoatSettings& hull,
-                    const BodiesInContact* bodies = nullptr, double from = 0, double to = 1);
+                    const FieldStep& step = {}, double from = 0, double to = 1);
 
     WaveField field_;
     Forcing forcing_;

@@ -24,65 +24,7 @@ TwoSpectra separate(Complex at_k, Complex at_minus_k) {
     return {(at_k + mirrored) * 0.5, -0.5 * times_i(at_k - mirrored)};
 }
 
-// The pushes q >= 0 with A q = b where they push and A q >= b where they do not (the water there
-// ends at or under the hull): every point first, then rounds that let go of the points a solution
-// pulls and take in those it leaves under water, until none changes (a few rounds); should points
-// keep changing, the last round's solution after m + 1 rounds.
-std::vector<double> solve_pushing(const std::vector<double>& a, const std::vector<double>& b) {
-    const std::size_t m = b.size();
-    std::vector<char> active(m, 1);
-    std::vector<double> q(m, 0.0);
-    for (std::size_t round = 0; round <= m; ++round) {
-        std::vector<std::size_t> in;
-        for (std::size_t i = 0; i < m; ++i)
-            if (active[i]) in.push_back(i);
-        std::vector<double> sub(in.size() * in.size()), x(in.size());
-        for (std::size_t r = 0; r < in.size(); ++r) {
-            for (std::size_t c = 0; c < in.size(); ++c) sub[r * in.size() + c] = a[in[r] * m + in[c]];
-            x[r] = b[in[r]];
-        }
-        if (!in.empty()) solve_symmetric(sub, x, in.size());
-        std::fill(q.begin(), q.end(), 0.0);
-        for (std::size_t r = 0; r < in.size(); ++r) q[in[r]] = x[r];
-        bool changed = false;
-        for (std::size_t i = 0; i < m; ++i) {
-            if (active[i] && q[i] < 0) {
-                active[i] = false, changed = true;
-                continue;
-            }
-            if (active[i]) continue;
-            double reached = 0;  // how far the pushes bring the water down, and the hull up, at i
-            for (std::size_t j = 0; j < m; ++j) reached += a[i * m + j] * q[j];
-            if (b[i] - reached > 1e-9) active[i] = true, changed = true;  // the water would end over the hull
-        }
-        if (!changed) break;
-    }
-    return q;
-}
-
 }  // namespace
-
-void solve_symmetric(std::vector<double>& a, std::vector<double>& b, std::size_t m) {
-    for (std::size_t j = 0; j < m; ++j) {
-        double d = a[j * m + j];
-        for (std::size_t k = 0; k < j; ++k) d -= a[j * m + k] * a[j * m + k];
-        if (!(d > 0)) throw ocean::Error("wave field: a contact's system is not positive definite");
-        a[j * m + j] = std::sqrt(d);
-        for (std::size_t i = j + 1; i < m; ++i) {
-            double s = a[i * m + j];
-            for (std::size_t k = 0; k < j; ++k) s -= a[i * m + k] * a[j * m + k];
-            a[i * m + j] = s / a[j * m + j];
-        }
-    }
-    for (std::size_t i = 0; i < m; ++i) {  // L y = b
-        for (std::size_t k = 0; k < i; ++k) b[i] -= a[i * m + k] * b[k];
-        b[i] /= a[i * m + i];
-    }
-    for (std::size_t i = m; i-- > 0;) {  // L^T x = y
-        for (std::size_t k = i + 1; k < m; ++k) b[i] -= a[k * m + i] * b[k];
-        b[i] /= a[i * m + i];
-    }
-}
 
 bool same_grid(const WaveFieldSettings& a, const WaveFieldSettings& b) {
     return a.n == b.n && a.cell == b.cell && a.depth == b.depth;
@@ -103,13 +45,12 @@ WaveField::WaveField(const WaveFieldSettings& settings) : settings_(settings), f
     const std::size_t cells = std::size_t(settings.n) * std::size_t(settings.n);
     eta_.assign(cells, 0.0);
     phi_.assign(cells, 0.0);
-    contact_pressure_.assign(cells, 0.0);
     work_.resize(cells);
     // The layer: the rate grows as the square of the depth into it, from 0 at its inner edge (a
     // smooth start reflects less) to absorbing_rate at the grid's edge; corners take the larger.
     absorbing_rate_.assign(cells, 0.0);
     const int n = settings.n;
-    // Each mode's K, once: every step, kernel and energy reads it.
+    // Each mode's K, once: every step and the energy read it.
     speed_factor_.resize(cells);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
@@ -135,7 +76,6 @@ glm::dvec2 WaveField::wavenumber(int i, int j) const {
 void WaveField::step(double dt, const Forcing& forcing) {
     turn(dt, forcing);
     absorb(dt);
-    std::fill(contact_pressure_.begin(), contact_pressure_.end(), 0.0);
 }
 
 void WaveField::turn(double dt, const Forcing& forcing) {
@@ -179,105 +119,6 @@ void WaveField::turn(double dt, const Forcing& forcing) {
         eta_[c] = work_[c].real() * scale;
         phi_[c] = work_[c].imag() * scale;
     }
-}
-
-void WaveField::make_kernels(double dt) {
-    if (kernels_for_ == dt) return;
-    // From rest, a pressure P held for dt leaves mode k at eta^ = -(P^ / g)(1 - cos omega dt) and
-    // phi^ = -(P^ / omega) sin omega dt (step()'s formulas with eta = phi = 0); the mean level's
-    // (omega = 0) eta^ = 0 and phi^ = -P^ dt. Their inverse transforms, for a unit P on one cell,
-    // are the kernels, real and even (both fields at once: eta + i phi).
-    const int n = settings_.n;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const double K = speed_factor_[index(i, j)];
-            if (K == 0) {
-                work_[index(i, j)] = Complex(0, -dt);
-                continue;
-            }
-            const double omega = std::sqrt(g * K);
-            work_[index(i, j)] = Complex(-(1 - std::cos(omega * dt)) / g, -std::sin(omega * dt) / omega);
-        }
-    // Both kernels are real and even, so their spectra are real: eta^ + i phi^ multiplies a pressure's
-    // spectrum into the transform of its height + i its potential. The contact's matrix needs the
-    // height kernel between cells too (the real part back in space); the potential's is only ever
-    // applied through the transform.
-    kernel_spectrum_ = work_;
-    fft_.inverse(work_);
-    const double scale = 1.0 / (double(n) * double(n));
-    height_kernel_.resize(work_.size());
-    for (std::size_t c = 0; c < work_.size(); ++c) height_kernel_[c] = work_[c].real() * scale;
-    kernels_for_ = dt;
-}
-
-std::vector<double> WaveField::step(double dt, const Contact& contact, const Forcing& forcing) {
-    const std::size_t m = contact.target.size(), taps = std::size_t(std::max(contact.taps, 1));
-    if (contact.cells.size() != m * taps || contact.compliance.size() != m * m ||
-        !(contact.weights.empty() || contact.weights.size() == m * taps))
-        throw ocean::Error("wave field: a contact's cells, weights or compliance do not match its points");
-    turn(dt, forcing);  // where the surface would go if nothing pushed on it
-    make_kernels(dt);
-    const int n = settings_.n;
-    const auto offset = [n](std::size_t to, std::size_t from) {  // index of the periodic offset
-        const int di = (int(to % std::size_t(n)) - int(from % std::size_t(n)) + n) % n;
-        const int dj = (int(to / std::size_t(n)) - int(from / std::size_t(n)) + n) % n;
-        return std::size_t(dj) * std::size_t(n) + std::size_t(di);
-    };
-    const auto weight = [&](std::size_t tap) { return contact.weights.empty() ? 1.0 : contact.weights[tap]; };
-    // The pushes Q_j at the contact points: the surface there ends at the hull,
-    //     eta_free(i) + sum_j kernel(i, j) Q_j = target(i) + sum_j compliance(i, j) Q_j
-    // (the hull moves up by compliance Q as the water pushes it), where kernel(i, j) is how far a
-    // unit push at point j, a pressure of w / dA on each of its cells, moves the surface read at
-    // point i: the sum over their taps of w w' kernel(cell - cell') / dA. A symmetric positive
-    // definite system: -kernel is (1 - cos omega dt) / g >= 0 mode by mode, and the compliance a
-    // body's.
-    // The kernel between the cells the points touch (each once: neighbouring points share cells),
-    // then summed over each pair of points' taps.
-    const double area = settings_.cell * settings_.cell;
-    std::vector<std::size_t> touched, slot(m * taps);
-    for (std::size_t tap = 0; tap < m * taps; ++tap) {
-        const auto found = std::find(touched.begin(), touched.end(), contact.cells[tap]);
-        slot[tap] = std::size_t(found - touched.begin());
-        if (found == touched.end()) touched.push_back(contact.cells[tap]);
-    }
-    const std::size_t k = touched.size();
-    std::vector<double> between(k * k), reach(m * k, 0.0);  // cell to cell; point to cell
-    for (std::size_t x = 0; x < k; ++x)
-        for (std::size_t y = 0; y < k; ++y) between[x * k + y] = height_kernel_[offset(touched[x], touched[y])];
-    for (std::size_t i = 0; i < m; ++i)
-        for (std::size_t t = 0; t < taps; ++t)
-            for (std::size_t y = 0; y < k; ++y) reach[i * k + y] += weight(i * taps + t) * between[slot[i * taps + t] * k + y];
-    std::vector<double> a(m * m), q(m);
-    for (std::size_t i = 0; i < m; ++i) {
-        for (std::size_t j = 0; j < m; ++j) {
-            double sum = 0;
-            for (std::size_t u = 0; u < taps; ++u) sum += weight(j * taps + u) * reach[i * k + slot[j * taps + u]];
-            a[i * m + j] = -sum / area + contact.compliance[i * m + j];
-        }
-        double felt = 0;
-        for (std::size_t t = 0; t < taps; ++t) felt += weight(i * taps + t) * eta_[contact.cells[i * taps + t]];
-        q[i] = felt - contact.target[i];
-    }
-    if (contact.push_only)
-        q = solve_pushing(a, q);
-    else
-        solve_symmetric(a, q, m);
-    // The pressure p / rho the pushes put on each cell, and its waves added to the free step's: the
-    // kernels' convolution with it, through the transform (the kernels' spectra times its).
-    for (std::size_t c = 0; c < work_.size(); ++c) work_[c] = 0.0;
-    for (std::size_t i = 0; i < m; ++i)
-        for (std::size_t t = 0; t < taps; ++t) work_[contact.cells[i * taps + t]] += weight(i * taps + t) * q[i] / area;
-    for (std::size_t c = 0; c < work_.size(); ++c) contact_pressure_[c] = work_[c].real();
-    fft_.forward(work_);
-    for (std::size_t c = 0; c < work_.size(); ++c) work_[c] *= kernel_spectrum_[c];
-    fft_.inverse(work_);
-    const double scale = 1.0 / (double(n) * double(n));
-    for (std::size_t c = 0; c < eta_.size(); ++c) {
-        eta_[c] += work_[c].real() * scale;
-        phi_[c] += work_[c].imag() * scale;
-    }
-    absorb(dt);
-    return q;
 }
 
 void WaveField::absorb(double dt) {

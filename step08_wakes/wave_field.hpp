@@ -1,4 +1,4 @@
-// Chapter 8.1-8.3: the waves the boat and the bodies make, on a square grid that follows the boat.
+// Chapter 8, the field: the waves the boat and the stones make, on a square grid that follows the boat.
 //
 // Linear water waves (the same theory as step05's spectrum) in two fields at the surface: the height
 // eta(x, z) and the velocity potential phi(x, z) of the water's flow (its velocity is grad phi).
@@ -7,16 +7,15 @@
 //     d phi^ / dt = -g eta^ - P^              P = p / rho, the pressure pushed on the surface
 // s a volume source (metres per second: the water a moving hull pushes out of its way). Without
 // sources, a mode turns in the (eta^, phi^) plane at omega = sqrt(g K): the dispersion relation
-// omega^2 = g k tanh(k h). step() turns every mode by its own omega dt, exactly (README 8.2):
+// omega^2 = g k tanh(k h). step() turns every mode by its own omega dt, exactly (the README's "exact step"):
 // waves of every length travel at their own speed, whatever dt, and the energy
 //     E = rho / 2 * integral of (g eta^2 + phi K phi)    (potential + kinetic)
 // is kept to rounding. A pressure held constant over a step is integrated exactly too: the
 // constant solution (eta = -P / g) is taken away, the rest turned, and added back (turn_mode,
-// which also takes a source s: the bodies and stones push with pressure, a hull of sources (README
-// 8.4) puts water in).
+// which also takes a source s: the boat and the stones push with pressure, a source puts water in).
 //
 // The grid is periodic (the FFT's), so a wave leaving at one edge would come back at the other:
-// an absorbing layer damps eta and phi near the edges (README 8.3). The grid follows the boat by
+// an absorbing layer damps eta and phi near the edges (the README's "absorbing layer"). The grid follows the boat by
 // whole cells (follow()): the samples move with the grid unchanged, so nothing is smeared.
 #pragma once
 
@@ -42,44 +41,15 @@ struct WaveFieldSettings {
 // on under the other (the absorbing layer aside, which the programs derive from these).
 bool same_grid(const WaveFieldSettings& a, const WaveFieldSettings& b);
 
-// Solves A x = b in place (b becomes x) for a symmetric positive definite A (m x m, row major),
-// by Cholesky's factorisation A = L L^T (A is overwritten). Throws ocean::Error if A is not.
-void solve_symmetric(std::vector<double>& a, std::vector<double>& b, std::size_t m);
-
 // K = k tanh(k h): what turns a potential into a surface's vertical speed (k in deep water).
 double vertical_speed_factor(double wavenumber, double depth);
 
 // What pushes the water during one step, one value a cell (row (z) major), held constant over it;
-// an empty vector is none. (The boat, the stones and the bodies in contact push with pressure; the
-// hemisphere of sources under the surface, README 8.4, puts water in at it.)
+// an empty vector is none. The boat and the stones push with pressure; a source puts water in at
+// the surface (the second forcing linear theory allows: a body that moves water under it).
 struct Forcing {
     std::vector<double> pressure;  // p / rho, m^2/s^2: a pressure on the surface
     std::vector<double> source;    // m/s: water put in at the surface, a volume per area and second
-};
-
-// A body in contact with the water (README 8.4): at M points under its hull the surface must end
-// each step where the hull is. Each point reads the field at `taps` cells with `weights` (one cell
-// and weight 1: the cell's own height; four and bilinear weights: the surface between cell
-// centres) and pushes on the same cells with the same weights, so that the push's work is the
-// body's and the system stays symmetric. `cells` and `weights` hold taps entries a point
-// (`weights` empty: all 1). The unknown at each point is its push, the force over the water's
-// density (p / rho times the point's area, m^4/s^2), spread on its cells as a pressure.
-// `target` is the height (m) the field must reach at each point if the body felt no push (the
-// hull's underside, moved on by its own velocity and gravity, less the incident sea's height);
-// `compliance`, M x M row major, how far the hull at point i moves in the step per unit push at
-// point j: travel (1 / m + (r_i x y) . I^-1 (r_j x y)) with m and I per unit density (m^3, m^5)
-// and travel the distance a step moves a body per unit acceleration (dt^2 for one step of
-// semi-implicit Euler).
-struct Contact {
-    // Whether the water may only push (a hull resting on it, which can lift off) or also pull (a
-    // hull held to the water, as linear theory's body is): pushing only, the points that would
-    // need a pull are let go, and those the water would rise over taken in, until neither is left.
-    bool push_only = false;
-    int taps = 1;
-    std::vector<std::size_t> cells;
-    std::vector<double> weights;
-    std::vector<double> target;
-    std::vector<double> compliance;
 };
 
 class WaveField {
@@ -94,11 +64,6 @@ public:
     // Advances `dt` seconds (> 0): every mode turned exactly, the forcing held constant, then the
     // absorbing layer applied.
     void step(double dt, const Forcing& forcing = {});
-    // The same step with a body in contact: the pushes at its points (returned, one a point, held
-    // over the step; force / rho, m^4/s^2) are those that leave the surface under it exactly where
-    // its hull ends the step, the body's response to them included. The body's force is rho times
-    // their sum (and its torque their moments).
-    std::vector<double> step(double dt, const Contact& contact, const Forcing& forcing = {});
 
     // Moves the grid by whole cells so that its centre is the cell nearest `centre` (x, z): the
     // samples keep their world positions; those that leave are dropped, the new ones are calm.
@@ -112,7 +77,7 @@ public:
     // The height at a world point, bilinear between cell centres; 0 outside the grid.
     double height_at(glm::dvec2 at) const;
     // The four cells around a world point (x, z) and their bilinear weights, as height_at reads
-    // them (the contact reads and pushes the field through them); false outside the grid.
+    // them; false outside the grid.
     struct Taps {
         std::size_t cells[4];
         double weights[4];
@@ -120,10 +85,6 @@ public:
     bool bilinear_taps(glm::dvec2 at, Taps& taps) const;
 
     const std::vector<double>& heights() const { return eta_; }     // n * n, metres
-    // The pressure p / rho (m^2/s^2) the last step's contact held on each cell (n * n; zero where
-    // it pushed on none, and everywhere after a step without one). Under a steady push the field
-    // rests at -p / g: heights() + p / g is what the field holds beside that dent, its waves.
-    const std::vector<double>& contact_pressure() const { return contact_pressure_; }
     const std::vector<double>& potentials() const { return phi_; }  // n * n, m^2/s
     std::vector<double>& heights() { return eta_; }                 // for tests and initial states
     std::vector<double>& potentials() { return phi_; }
@@ -139,20 +100,14 @@ private:
     std::size_t index(int i, int j) const { return std::size_t(j) * std::size_t(settings_.n) + std::size_t(i); }
     void turn(double dt, const Forcing& forcing);  // every mode turned, the layer not applied
     void absorb(double dt);
-    // What a unit p / rho held on one cell over dt adds: the height and potential's spectra, and
-    // the height by offset from the cell (n x n, periodic); kernels_for_ holds the dt they are for.
-    void make_kernels(double dt);
 
     WaveFieldSettings settings_;
     Fft2d fft_;
-    std::vector<double> eta_, phi_, contact_pressure_;
+    std::vector<double> eta_, phi_;
     std::vector<double> absorbing_rate_;  // 1/s, a cell
     std::vector<double> speed_factor_;    // K = |k| tanh(|k| h) of each mode, by transform index
     std::int64_t origin_i_ = 0, origin_j_ = 0;  // the grid's centre, in whole cells from the world origin
     mutable std::vector<Complex> work_, forcing_work_;
-    std::vector<double> height_kernel_;
-    std::vector<Complex> kernel_spectrum_;  // the kernels' transforms, height + i potential
-    double kernels_for_ = 0;
 };
 
 }  // namespace step08

@@ -1,4 +1,4 @@
-#include "step08_wakes/hull_contact.hpp"
+#include "step09_radiation/hull_contact.hpp"
 
 #include "step07_buoyancy/hull_forces.hpp"
 #include "step07_buoyancy/sea_query.hpp"
@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace step08 {
+namespace step09 {
 
 namespace {
 
@@ -156,8 +156,9 @@ void lift_out(WaveField& field, const step07::FloatingBody& body, const step07::
     for (std::size_t k = 0; k < dent.depth.size(); ++k) field.heights()[k] -= dent.depth[k];
 }
 
-void step_with_bodies(WaveField& field, const std::vector<step07::FloatingBody*>& bodies, const step07::Surface& from,
-                      const step07::Surface& to, double h, double sea_interval, const Forcing& forcing) {
+void step_with_bodies(WaveField& field, ContactStep& contact, const std::vector<step07::FloatingBody*>& bodies,
+                      const step07::Surface& from, const step07::Surface& to, double h, double sea_interval,
+                      const Forcing& forcing) {
     std::vector<HullInContact> hulls;
     Contact all;
     all.push_only = true;
@@ -179,7 +180,7 @@ void step_with_bodies(WaveField& field, const std::vector<step07::FloatingBody*>
             for (std::size_t b = 0; b < k; ++b) all.compliance[(first + a) * m + first + b] = hull.contact.compliance[a * k + b];
         first += k;
     }
-    const std::vector<double> pushes = field.step(h, all, forcing);
+    const std::vector<double> pushes = contact.step(field, h, all, forcing);
     first = 0;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         const std::size_t k = hulls[b].arms.size();
@@ -199,4 +200,4 @@ glm::dvec3 SeaBetween::displacement_below(glm::dvec2 rest, double depth) const {
     return a + share_ * (b - a);
 }
 
-}  // namespace step08
+}  // namespace step09

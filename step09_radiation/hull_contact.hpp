@@ -1,23 +1,23 @@
-// Chapter 8.4 in the program: a body of step07's in contact with the wave field. Each step the body
+// Chapter 9, the contact in the program: a body of step07's in contact with the wave field. Each step the body
 // moves without the water's buoyancy (its drag stays); the field then finds the push under its hull
-// that leaves the water there where the hull ends the step (WaveField::step with a Contact), and
+// that leaves the water there where the hull ends the step (contact_step.hpp), and
 // that push moves the body. At rest it is the hydrostatic pressure, g times the hull's depth under
 // the sea (Archimedes again); heaving, it is more or less than that by the waves the hull makes,
 // which carry its energy away. The sea's own waves stay step07's: the contact's target is the hull
 // less the sea's height, so the field holds only what the bodies add.
 //
 // For a flat-bottomed hull (step07's raft), whose pressure acts close to the surface as the
-// field's does. The boat presses with its weight's patch instead (wake_scene.hpp), and the buoy,
-// 1.2 m across, spans two or three of the field's cells: it rides the field (wake_sea.hpp).
+// field's does. The boat presses with its weight's patch instead (step08's wake_scene.hpp), and the
+// buoy, a sphere, radiates through sources on its hull (radiating_buoy.hpp).
 #pragma once
 
 #include "step07_buoyancy/floating_body.hpp"
 #include "step07_buoyancy/sea_surface.hpp"
-#include "step08_wakes/wave_field.hpp"
+#include "step09_radiation/contact_step.hpp"
 
 #include <vector>
 
-namespace step08 {
+namespace step09 {
 
 // Whether every point of a body lies in the field's inner part, clear of the absorbing layer:
 // there the waves it makes are the field's to carry (in the layer they would be damped under it).
@@ -77,8 +77,10 @@ void lift_out(WaveField& field, const step07::FloatingBody& body, const step07::
 // water's velocity), the field steps with their contacts (one system: the bodies move apart, so
 // their compliances are blocks) and `forcing`, and each body is pushed. The bodies are given
 // such as the contact takes (can_touch).
-void step_with_bodies(WaveField& field, const std::vector<step07::FloatingBody*>& bodies, const step07::Surface& from,
-                      const step07::Surface& to, double h, double sea_interval, const Forcing& forcing = {});
+// `contact` keeps the field's kernel from step to step, and the pressure it held (for drawing).
+void step_with_bodies(WaveField& field, ContactStep& contact, const std::vector<step07::FloatingBody*>& bodies,
+                      const step07::Surface& from, const step07::Surface& to, double h, double sea_interval,
+                      const Forcing& forcing = {});
 
 // Two surfaces' blend, `share` of the way from `from` to `to`: the sea at a moment within a frame,
 // for a body stepped in parts of it.
@@ -93,4 +95,4 @@ private:
     double share_;
 };
 
-}  // namespace step08
+}  // namespace step09

@@ -1,10 +1,10 @@
-#include "step08_wakes/image_source.hpp"
+#include "step09_radiation/image_source.hpp"
 
 #include "common/constants.hpp"
 
 #include <cmath>
 
-namespace step08 {
+namespace step09 {
 
 SourceAt source_with_image(glm::dvec3 x, glm::dvec3 xi, glm::dvec3 n) {
     SourceAt at;
@@ -20,4 +20,11 @@ SourceAt source_with_image(glm::dvec3 x, glm::dvec3 xi, glm::dvec3 n) {
     return at;
 }
 
-}  // namespace step08
+double flow_through_surface(double across, double depth) {
+    // Both are depth metres from the surface, so the same r away: the source pushes the water up
+    // through it, an image sink above draws it up as much; a rigid lid's image (+1) cancels it.
+    const double r = std::sqrt(across * across + depth * depth);
+    return (1 - kImageStrength) * depth / (4 * ocean::kPi * r * r * r);
+}
+
+}  // namespace step09

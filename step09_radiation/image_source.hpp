@@ -1,12 +1,13 @@
-// Chapter 8.4's unit source and its image, on their own so that exercise 3 (./ocean exercise
-// step08_wakes 3) can empty them: source_hull.cpp sums them over the hull's panels.
+// Chapter 9's unit source and its image (the primer's G), on their own so that the exercises
+// (./ocean exercise step09_radiation 1 and 2) can empty them: source_hull.cpp sums G over the hull's
+// panels.
 #pragma once
 
 #include <glm/vec3.hpp>
 
-namespace step08 {
+namespace step09 {
 
-// The image's strength against its source's: -1, a sink, keeps phi = 0 on the surface (section 4:
+// The image's strength against its source's: -1, a sink, keeps phi = 0 on the surface (the primer:
 // at the instant of a sudden motion the surface stays at the air's pressure). +1 would be a rigid
 // lid: a surface that cannot rise.
 constexpr double kImageStrength = -1;
@@ -20,4 +21,8 @@ struct SourceAt {
 };
 SourceAt source_with_image(glm::dvec3 x, glm::dvec3 xi, glm::dvec3 n);
 
-}  // namespace step08
+// The water the same source and its image put up through the surface y = 0 (m/s per m^3/s, up
+// positive), `across` metres from the point above the source, which is `depth` metres down.
+double flow_through_surface(double across, double depth);
+
+}  // namespace step09

@@ -1,14 +1,14 @@
-#include "step08_wakes/radiating_buoy.hpp"
+#include "step09_radiation/radiating_buoy.hpp"
 
 #include "step07_buoyancy/sea_query.hpp"
-#include "step08_wakes/hull_contact.hpp"
+#include "step09_radiation/hull_contact.hpp"
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
 
 #include <cmath>
 
-namespace step08 {
+namespace step09 {
 
 SourceHullSettings floating_sphere(const step07::BodySettings& sphere) {
     if (sphere.shape.kind != step07::ShapeKind::Sphere) throw ocean::Error("radiating buoy: only a sphere has a source hull");
@@ -67,4 +67,4 @@ void RadiatingBuoy::let_go(step07::FloatingBody& buoy) {
     stepped_ = false;
 }
 
-}  // namespace step08
+}  // namespace step09

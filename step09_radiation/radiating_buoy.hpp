@@ -1,4 +1,4 @@
-// Chapter 8.4 in the program: step07's buoy, a sphere, as sources on its wetted surface
+// Chapter 9, the radiating buoy in the program: step07's buoy, a sphere, as sources on its wetted surface
 // (source_hull.hpp) while it floats within the field. Each step it reads the field where it is,
 // moves (step07's Archimedes on the sea without the wake, the wake's force from the reading, and the
 // sources' added mass on its heave), and puts the sources that give the water its heave through
@@ -12,10 +12,9 @@
 
 #include "step07_buoyancy/floating_body.hpp"
 #include "step07_buoyancy/sea_surface.hpp"
-#include "step08_wakes/source_hull.hpp"
-#include "step08_wakes/wave_field.hpp"
+#include "step09_radiation/source_hull.hpp"
 
-namespace step08 {
+namespace step09 {
 
 // The source hull of one of step07's spheres floating still: its centre as far above the water as
 // its density puts it (the cap under the water weighs what the sphere does); 8 bands of 24 panels,
@@ -48,4 +47,4 @@ private:
     bool stepped_ = false;
 };
 
-}  // namespace step08
+}  // namespace step09

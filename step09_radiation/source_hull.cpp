@@ -1,6 +1,6 @@
-#include "step08_wakes/source_hull.hpp"
+#include "step09_radiation/source_hull.hpp"
 
-#include "step08_wakes/image_source.hpp"
+#include "step09_radiation/image_source.hpp"
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
@@ -11,7 +11,7 @@
 #include <cmath>
 #include <utility>
 
-namespace step08 {
+namespace step09 {
 namespace {
 
 constexpr double g = ocean::kGravity;
@@ -268,4 +268,4 @@ std::vector<double> SourceHull::surface_source(const Reading& reading, double he
     return source;
 }
 
-}  // namespace step08
+}  // namespace step09

@@ -1,7 +1,7 @@
-// Chapter 8.4, a hull under the surface: a floating hemisphere in heave, as sources spread on its
+// Chapter 9, the panel method: a hull under the surface, a floating hemisphere in heave, as sources spread on its
 // wetted surface (a panel method), coupled to the wave field.
 //
-// The contact (wave_field.hpp) holds the surface under a hull where the hull is: a body with no
+// The contact (contact_step.hpp) holds the surface under a hull where the hull is: a body with no
 // draft, a disk on the water. A hemisphere's bottom is a radius deep, where its waves are weaker by
 // e^(-k d), and the water flows round it, not only up and down. Linear theory splits the flow it
 // makes in two (the same split as the transient Green function's, Cummins 1962):
@@ -27,13 +27,13 @@
 // and the grid follow a boat (a mode's phase at the centre is applied each step).
 #pragma once
 
-#include "step08_wakes/wave_field.hpp"
+#include "step09_radiation/contact_step.hpp"
 
 #include <glm/vec2.hpp>
 
 #include <vector>
 
-namespace step08 {
+namespace step09 {
 
 struct SourceHullSettings {
     double radius = 1;         // m
@@ -103,4 +103,4 @@ private:
     void phases(const WaveField& field, glm::dvec2 centre, std::vector<Complex>& along_x, std::vector<Complex>& along_z) const;
 };
 
-}  // namespace step08
+}  // namespace step09

@@ -8,9 +8,9 @@
 //     draft, whose waves are not weakened by depth as a real hull's are (e^(-k d) for a hull d
 //     deep): it radiates more and drags more water than the hemisphere; held to Hulme within a
 //     factor of two (measured: damping 1.7 times Hulme's, added mass 2.0 times).
-#include "step08_wakes/radiating_buoy.hpp"
-#include "step08_wakes/source_hull.hpp"
-#include "step08_wakes/wake_experiments.hpp"
+#include "step09_radiation/radiating_buoy.hpp"
+#include "step09_radiation/source_hull.hpp"
+#include "step09_radiation/radiation_experiments.hpp"
 
 #include "step07_buoyancy/bodies.hpp"
 #include "step07_buoyancy/body_params.hpp"
@@ -55,7 +55,7 @@ HulmeRow hulme_at(double nu) {
 struct Coefficients {
     double nu, added_mass, damping;
 };
-Coefficients from_decay(const step08::Decay& decay, double waterplane, double a) {
+Coefficients from_decay(const step09::Decay& decay, double waterplane, double a) {
     const double w = decay.natural_frequency, m = 2.0 / 3.0 * ocean::kPi * a * a * a;
     const double added = ocean::kGravity * waterplane / (w * w * m) - 1;
     return {w * w * a / ocean::kGravity, added, 2 * decay.damping_ratio * (1 + added)};
@@ -63,8 +63,8 @@ Coefficients from_decay(const step08::Decay& decay, double waterplane, double a)
 
 // A released hemisphere's decay (its first four crests) read as an added mass and a damping at its
 // own nu, printed after `what`, and held to Hulme's within 30 % (the test).
-void expect_decay_as_hulme_predicts(const step08::HeaveRecord& record, double radius, const char* what) {
-    const step08::Decay decay = step08::measure_decay(record, 4);
+void expect_decay_as_hulme_predicts(const step09::HeaveRecord& record, double radius, const char* what) {
+    const step09::Decay decay = step09::measure_decay(record, 4);
     ASSERT_EQ(decay.crests, 4);
     const Coefficients model = from_decay(decay, record.waterplane, radius);
     const HulmeRow hulme = hulme_at(model.nu);
@@ -79,33 +79,33 @@ void expect_decay_as_hulme_predicts(const step08::HeaveRecord& record, double ra
 // instant of a sudden motion the surface keeps phi = 0, so the hemisphere's image mirrored above it
 // moves with it as the other half of that sphere: the sources' added mass is half the hemisphere's
 // volume. The panels' error, within 2.5 %; finer panels nearer.
-TEST(Step08Radiation, TheSourcesCarryASpheresAddedMass) {
-    step08::WaveFieldSettings small;  // the added mass does not depend on the field
+TEST(Step09Radiation, TheSourcesCarryASpheresAddedMass) {
+    step09::WaveFieldSettings small;  // the added mass does not depend on the field
     small.n = 16, small.absorbing_width = 0;
-    const step08::WaveField field(small);
-    const step08::SourceHull hull(field, {});
+    const step09::WaveField field(small);
+    const step09::SourceHull hull(field, {});
     std::cout << "added mass at the instant: " << hull.added_mass() / hull.volume() << " of the volume" << std::endl;
     EXPECT_NEAR(hull.added_mass() / hull.volume(), 0.5, 0.0125);
-    step08::SourceHullSettings finer;
+    step09::SourceHullSettings finer;
     finer.bands = 24, finer.around = 72, finer.split = 4;
-    const step08::SourceHull fine(field, finer);
+    const step09::SourceHull fine(field, finer);
     EXPECT_LT(std::abs(fine.added_mass() / fine.volume() - 0.5), std::abs(hull.added_mass() / hull.volume() - 0.5))
         << "finer panels come nearer";
-    step08::SourceHullSettings odd;
+    step09::SourceHullSettings odd;
     odd.split = 3;
-    EXPECT_THROW(step08::SourceHull(field, odd), ocean::Error) << "a part's middle on a band's point: 1/r there";
+    EXPECT_THROW(step09::SourceHull(field, odd), ocean::Error) << "a part's middle on a band's point: 1/r there";
 }
 
 // A sphere lighter than half its water floats with its centre above the surface, and wets a cap:
 // its panels cover the cap's area 2 pi R d (d = R - c its depth), and it holds the sphere's volume
 // less the cap above the water (a second closed form for what volume() computes).
-TEST(Step08Radiation, ASphereFloatingHighWetsACap) {
-    step08::WaveFieldSettings small;
+TEST(Step09Radiation, ASphereFloatingHighWetsACap) {
+    step09::WaveFieldSettings small;
     small.n = 16, small.absorbing_width = 0;
-    const step08::WaveField field(small);
-    step08::SourceHullSettings buoy;  // step07's buoy: 1.2 m across, 350 kg/m^3
+    const step09::WaveField field(small);
+    step09::SourceHullSettings buoy;  // step07's buoy: 1.2 m across, 350 kg/m^3
     buoy.radius = 0.6, buoy.centre_height = 0.1288;
-    const step08::SourceHull cap(field, buoy);
+    const step09::SourceHull cap(field, buoy);
     const double R = buoy.radius, c = buoy.centre_height, pi = ocean::kPi;
     EXPECT_NEAR(cap.wetted_area() / (2 * pi * R * (R - c)), 1.0, 1e-12);
     const double above = pi * (R + c) * (R + c) * (3 * R - (R + c)) / 3;
@@ -114,16 +114,16 @@ TEST(Step08Radiation, ASphereFloatingHighWetsACap) {
     std::cout << "cap: added mass at the instant " << cap.added_mass() / cap.volume() << " of its volume" << std::endl;
     EXPECT_GT(cap.added_mass(), 0.0);
     buoy.centre_height = R;
-    EXPECT_THROW(step08::SourceHull(field, buoy), ocean::Error) << "a sphere that only touches the water wets nothing";
+    EXPECT_THROW(step09::SourceHull(field, buoy), ocean::Error) << "a sphere that only touches the water wets nothing";
 }
 
 // The hull's readings are made once, about its own centre, for any place on the grid (the buoy
 // drifts; the grid follows the boat). Waves and hull moved together by whole cells (the waves rolled
 // round the periodic grid) read the same flow and force, and the sources land moved as well.
-TEST(Step08Radiation, TheHullReadsTheSameWhereverItIsOnTheGrid) {
-    step08::WaveFieldSettings settings;
+TEST(Step09Radiation, TheHullReadsTheSameWhereverItIsOnTheGrid) {
+    step09::WaveFieldSettings settings;
     settings.n = 64, settings.cell = 0.25, settings.absorbing_width = 0;
-    step08::WaveField field(settings), moved(settings);
+    step09::WaveField field(settings), moved(settings);
     field.add_impulse({0.6, -0.4}, 0.05, 0.4);
     for (int s = 0; s < 10; ++s) field.step(1.0 / 30);
     const int n = settings.n, di = 3, dj = -2;  // three cells along x, two back along z
@@ -133,9 +133,9 @@ TEST(Step08Radiation, TheHullReadsTheSameWhereverItIsOnTheGrid) {
             moved.heights()[cell(i + di, j + dj)] = field.heights()[cell(i, j)];
             moved.potentials()[cell(i + di, j + dj)] = field.potentials()[cell(i, j)];
         }
-    const step08::SourceHull hull(field, {0.5});
+    const step09::SourceHull hull(field, {0.5});
     const glm::dvec2 at(-0.37, 0.21), shift(di * settings.cell, dj * settings.cell);  // not a cell's centre
-    const step08::SourceHull::Reading here = hull.read(field, at), there = hull.read(moved, at + shift);
+    const step09::SourceHull::Reading here = hull.read(field, at), there = hull.read(moved, at + shift);
     EXPECT_NEAR(there.wave_force, here.wave_force, 1e-9 * std::abs(here.wave_force));
     for (std::size_t b = 0; b < here.normal_speed.size(); ++b)
         EXPECT_NEAR(there.normal_speed[b], here.normal_speed[b], 1e-9 * std::abs(here.normal_speed[b]) + 1e-15);
@@ -152,9 +152,9 @@ TEST(Step08Radiation, TheHullReadsTheSameWhereverItIsOnTheGrid) {
     EXPECT_GT(std::abs(hull.read(field, at + glm::dvec2(0.5 * settings.cell, 0)).wave_force - here.wave_force), 1e-6 * std::abs(here.wave_force));
 }
 
-TEST(Step08Radiation, AHemisphereOfSourcesDecaysAsHulmePredicts) {
-    step08::HeaveRelease release;
-    expect_decay_as_hulme_predicts(step08::release_hemisphere_of_sources(release), release.radius, "sources");
+TEST(Step09Radiation, AHemisphereOfSourcesDecaysAsHulmePredicts) {
+    step09::HeaveRelease release;
+    expect_decay_as_hulme_predicts(step09::release_hemisphere_of_sources(release), release.radius, "sources");
 }
 
 // Hulme's own experiment, forced heave at three frequencies: the force in phase with the
@@ -162,11 +162,11 @@ TEST(Step08Radiation, AHemisphereOfSourcesDecaysAsHulmePredicts) {
 // grid (25 cm cells, four across the radius) the coupling reads 6-9 % low at nu = 1.4 and within
 // 6 % below; on 12.5 cm cells within 7 % (how_we_know.md). A coupling that fed the water plane
 // inside the hull read within 2.2 % here, but grew without end (the two tests after this one).
-TEST(Step08Radiation, AHemisphereOfSourcesForcedToHeaveFeelsHulmesForces) {
-    step08::HeaveRelease release;
+TEST(Step09Radiation, AHemisphereOfSourcesForcedToHeaveFeelsHulmesForces) {
+    step09::HeaveRelease release;
     release.dt = 1.0 / 30;
     for (double nu : {0.6, 1.0, 1.4}) {
-        const step08::HeaveCoefficients model = step08::force_hemisphere_of_sources(release, nu, 8);
+        const step09::HeaveCoefficients model = step09::force_hemisphere_of_sources(release, nu, 8);
         const HulmeRow hulme = hulme_at(nu);
         std::cout << "forced, nu " << nu << ": added mass " << model.added_mass << " (Hulme " << hulme.added_mass << "), damping "
                   << model.damping << " (Hulme " << hulme.damping << ")" << std::endl;
@@ -180,17 +180,17 @@ TEST(Step08Radiation, AHemisphereOfSourcesForcedToHeaveFeelsHulmesForces) {
 // field's mean energy over the last 10 s is its start's, within 1 %. (The field's energy alone
 // rises by 5 % while the ring's first crests cross the hull, 2 m from the stone: the sources' near
 // flow holds some of it for a while; it is back within 0.1 % after 10 s.)
-TEST(Step08Radiation, AHullHeldStillTakesNoEnergyFromTheWaves) {
-    step08::WaveFieldSettings settings;
+TEST(Step09Radiation, AHullHeldStillTakesNoEnergyFromTheWaves) {
+    step09::WaveFieldSettings settings;
     settings.n = 64, settings.cell = 0.5, settings.absorbing_width = 0;
-    step08::WaveField field(settings);
-    const step08::SourceHull hull(field, {0.6});
+    step09::WaveField field(settings);
+    const step09::SourceHull hull(field, {0.6});
     const glm::dvec2 middle = field.cell_centre(32, 32);
     field.add_impulse(middle + glm::dvec2(2.0, 0.5), 0.05, 0.4);
     const double dt = 1.0 / 30;
     const double start = field.energy();
     double last = 0;
-    step08::Forcing forcing;
+    step09::Forcing forcing;
     for (int s = 1; s <= 1800; ++s) {
         forcing.source = hull.surface_source(hull.read(field, middle), 0.0, 0.5 * dt, field, middle);
         field.step(dt, forcing);
@@ -202,10 +202,10 @@ TEST(Step08Radiation, AHullHeldStillTakesNoEnergyFromTheWaves) {
 
 // Released, a hull comes to rest and stays at rest: after a minute its swing is below a
 // thousandth of its lift. The worst case, a small hull on coarse cells (1.2 m across, 50 cm).
-TEST(Step08Radiation, AReleasedHullComesToRestAndStays) {
-    step08::HeaveRelease release;
+TEST(Step09Radiation, AReleasedHullComesToRestAndStays) {
+    step09::HeaveRelease release;
     release.radius = 0.6, release.cell = 0.5, release.n = 64, release.dt = 1.0 / 30, release.seconds = 60;
-    const step08::HeaveRecord record = step08::release_hemisphere_of_sources(release);
+    const step09::HeaveRecord record = step09::release_hemisphere_of_sources(release);
     double last = 0;
     for (std::size_t i = 0; i < record.time.size(); ++i)
         if (record.time[i] >= 50) last = std::max(last, std::abs(record.height[i]));
@@ -213,11 +213,11 @@ TEST(Step08Radiation, AReleasedHullComesToRestAndStays) {
     EXPECT_LT(last, 1e-3 * release.lift);
 }
 
-TEST(Step08Radiation, WithoutItsWavesTheHemisphereOfSourcesRingsForEver) {
-    step08::HeaveRelease release;
+TEST(Step09Radiation, WithoutItsWavesTheHemisphereOfSourcesRingsForEver) {
+    step09::HeaveRelease release;
     release.with_waves = false;
-    const step08::HeaveRecord record = step08::release_hemisphere_of_sources(release);
-    const step08::Decay decay = step08::measure_decay(record, 4);
+    const step09::HeaveRecord record = step09::release_hemisphere_of_sources(release);
+    const step09::Decay decay = step09::measure_decay(record, 4);
     ASSERT_EQ(decay.crests, 4);
     EXPECT_LT(std::abs(decay.damping_ratio), 0.003);
     // The spring and the instant's added mass alone: omega_n^2 = g pi a^2 / (1.5 V) for A = V / 2.
@@ -225,13 +225,13 @@ TEST(Step08Radiation, WithoutItsWavesTheHemisphereOfSourcesRingsForEver) {
     EXPECT_NEAR(decay.natural_frequency, std::sqrt(ocean::kGravity * ocean::kPi / (1.5 * volume)), 0.02 * decay.natural_frequency);
 }
 
-TEST(Step08Radiation, AHeavingHemisphereDecaysAsHulmePredicts) {
-    step08::HeaveRelease release;
-    const step08::Decay decay = step08::measure_decay(step08::release_hemisphere(release), 4);
+TEST(Step09Radiation, AHeavingHemisphereDecaysAsHulmePredicts) {
+    step09::HeaveRelease release;
+    const step09::Decay decay = step09::measure_decay(step09::release_hemisphere(release), 4);
     ASSERT_EQ(decay.crests, 4);
     // From the motion: (m + A) omega_n^2 = rho g S (S the waterplane's area) and m = rho 2/3 pi a^3,
     // so the added mass share is g S / (omega_n^2 2/3 pi a^3) - 1; the damping B = 2 zeta (m + A) omega_n.
-    const step08::HeaveRecord record = step08::release_hemisphere(release);
+    const step09::HeaveRecord record = step09::release_hemisphere(release);
     const double a = release.radius, w = decay.natural_frequency, m = 2.0 / 3.0 * ocean::kPi * a * a * a;
     const double added = ocean::kGravity * record.waterplane / (w * w * m) - 1;
     const double damping = 2 * decay.damping_ratio * (1 + added);
@@ -246,15 +246,15 @@ TEST(Step08Radiation, AHeavingHemisphereDecaysAsHulmePredicts) {
     EXPECT_LT(added / hulme.added_mass, 2.5);
 }
 
-TEST(Step08Radiation, WithoutItsWavesItRingsForEver) {
-    step08::HeaveRelease release;
+TEST(Step09Radiation, WithoutItsWavesItRingsForEver) {
+    step09::HeaveRelease release;
     release.with_waves = false;
-    const step08::Decay decay = step08::measure_decay(step08::release_hemisphere(release), 4);
+    const step09::Decay decay = step09::measure_decay(step09::release_hemisphere(release), 4);
     ASSERT_EQ(decay.crests, 4);
     std::cout << "without waves: period " << decay.period << " s, damping ratio " << decay.damping_ratio << std::endl;
     EXPECT_LT(std::abs(decay.damping_ratio), 0.003);
     // No added mass either: omega_n^2 = g S / V, the bare hydrostatic spring of the cells' waterplane.
-    const step08::HeaveRecord record = step08::release_hemisphere(release);
+    const step09::HeaveRecord record = step09::release_hemisphere(release);
     const double volume = 2.0 / 3.0 * ocean::kPi * std::pow(release.radius, 3);
     EXPECT_NEAR(decay.natural_frequency, std::sqrt(ocean::kGravity * record.waterplane / volume), 0.01 * decay.natural_frequency);
 }
@@ -265,25 +265,25 @@ TEST(Step08Radiation, WithoutItsWavesItRingsForEver) {
 // the sea, the sources' added mass on its heave and the waves' force added to it): a sphere of half
 // the water's density floats as a hemisphere, so the test holds it to Hulme as well, within
 // 30 %, on the tests' grid (25 cm cells), without drag.
-TEST(Step08RadiatingBuoy, AFloatingSphereOfHalfTheWatersDensityDecaysAsHulmePredicts) {
-    step08::BuoyRun run;
+TEST(Step09RadiatingBuoy, AFloatingSphereOfHalfTheWatersDensityDecaysAsHulmePredicts) {
+    step09::BuoyRun run;
     run.buoy.shape = {step07::ShapeKind::Sphere, glm::dvec3(2.0)};
     run.buoy.density = 0.5 * step07::kWaterDensity;
     run.buoy.linear_drag = run.buoy.angular_drag = 0;
     run.cell = 0.25;
-    const step08::HeaveRecord record = step08::run_buoy(run);
+    const step09::HeaveRecord record = step09::run_buoy(run);
     EXPECT_NEAR(record.rest, 0.0, 1e-9) << "afloat as a hemisphere";
     expect_decay_as_hulme_predicts(record, 1.0, "the program's buoy as a hemisphere");
 }
 
 // What a user sees: the default buoy, let go 5 cm above its rest on calm water on the program's
 // grid (50 cm cells), settles faster with the waves it makes than on step07's drag alone.
-TEST(Step08RadiatingBuoy, TheBuoyLosesItsSwingToTheWavesItMakes) {
-    step08::BuoyRun run;
+TEST(Step09RadiatingBuoy, TheBuoyLosesItsSwingToTheWavesItMakes) {
+    step09::BuoyRun run;
     run.buoy = step07::body_settings(step07::BodyParams{})[step07::kBuoy];
-    const step08::Decay radiating = step08::measure_decay(step08::run_buoy(run), 4);
+    const step09::Decay radiating = step09::measure_decay(step09::run_buoy(run), 4);
     run.with_waves = false;
-    const step08::Decay alone = step08::measure_decay(step08::run_buoy(run), 4);
+    const step09::Decay alone = step09::measure_decay(step09::run_buoy(run), 4);
     ASSERT_EQ(radiating.crests, 4);
     ASSERT_EQ(alone.crests, 4);
     std::cout << "the default buoy: damping ratio " << radiating.damping_ratio << " with its waves, " << alone.damping_ratio
@@ -295,21 +295,21 @@ TEST(Step08RadiatingBuoy, TheBuoyLosesItsSwingToTheWavesItMakes) {
 // The symptom: on a swell near its own period (12 m waves, 2.8 s, 0.5 m high), step07's
 // buoy swings so far about the sea's surface that it leaves the water (its centre more than a
 // radius from the surface); with the waves it makes, it stays in it. Over 10 to 40 s.
-TEST(Step08RadiatingBuoy, OnASwellTheBuoyStaysInTheWater) {
-    step08::BuoyRun run;
+TEST(Step09RadiatingBuoy, OnASwellTheBuoyStaysInTheWater) {
+    step09::BuoyRun run;
     run.buoy = step07::body_settings(step07::BodyParams{})[step07::kBuoy];
     run.swell.amplitude = 0.5, run.swell.wavelength = 12;
     run.lift = 0, run.seconds = 40;
-    const auto widest = [](const step08::HeaveRecord& record) {
+    const auto widest = [](const step09::HeaveRecord& record) {
         double most = 0;
         for (std::size_t i = 0; i < record.time.size(); ++i)
             if (record.time[i] >= 10) most = std::max(most, std::abs(record.height[i]));
         return most;
     };
     const double radius = 0.5 * run.buoy.shape.size.x;
-    const double radiating = widest(step08::run_buoy(run));
+    const double radiating = widest(step09::run_buoy(run));
     run.with_waves = false;
-    const double alone = widest(step08::run_buoy(run));
+    const double alone = widest(step09::run_buoy(run));
     std::cout << "on the swell: farthest from its rest on the sea " << radiating << " m with its waves, " << alone
               << " m alone (radius " << radius << " m)" << std::endl;
     EXPECT_GT(alone, radius) << "step07's buoy leaves the water";
