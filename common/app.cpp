@@ -123,7 +123,10 @@ int App::run_loop(const Options& options) {
     const bool headless = options.headless || !display_available();
     if (!options.headless && headless) std::cout << "no display: rendering headless\n";
     const std::string shader_dir = options.shader_dir.empty() ? where_.dir + "/shaders" : options.shader_dir;
-    if (!fs::is_directory(shader_dir)) throw Error("shader directory '" + shader_dir + "' does not exist");
+    // A chapter may have no shaders of its own (it draws with earlier chapters'): only a folder given
+    // with --shader-dir must exist.
+    if (!options.shader_dir.empty() && !fs::is_directory(shader_dir))
+        throw Error("shader directory '" + shader_dir + "' does not exist");
     programs_.set_shader_dir(where_.dir + "/shaders", shader_dir);
 
     context_ = Context::create({headless, options.width, options.height, step_name(), info_.window_samples});
