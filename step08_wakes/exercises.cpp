@@ -101,6 +101,7 @@ std::vector<Exercise> chapter() {
          "phi' = rest_phi + f cos(omega dt) - (g / omega) e sin(omega dt)",
          {},
          [](const fs::path& work) { return check_cpp(work, "mode_step.cpp", kModeDriver, 300, mode_reference, 1e-9); }},
+        // derived: the README does not give this answer
         {"step08_wakes", 2, "Kelvin's angle from the group velocity", "kelvin.cpp",
          "double kelvin_edge_angle(double group_to_phase) {",
          "    // TODO (exercise 2): the wake's half-angle when energy travels at n times the phase speed.\n"

@@ -10,7 +10,8 @@ die() { printf 'readme_images: error: %s\n' "$*" >&2; exit 1; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
 for program in step01_sine2d/step01_sine2d step02_sine3d/step02_sine3d step03_lighting/step03_lighting \
-               step04_fbm/step04_fbm step05_fft/step05_fft step06_foam_sky/step06_foam_sky step07_buoyancy/step07_buoyancy step08_wakes/step08_wakes tools/image_panel; do
+               step04_fbm/step04_fbm step05_fft/step05_fft step06_foam_sky/step06_foam_sky step07_buoyancy/step07_buoyancy step08_wakes/step08_wakes \
+               step09_radiation/step09_radiation tools/image_panel; do
   [ -x "$build/$program" ] || die "$build/$program is not built"
 done
 # The intermediate pictures, removed however the script ends.
@@ -154,6 +155,10 @@ panel "$root/step08_wakes/wake_speeds.png" 480x270 2 \
   "4 m/s, Fr 0.52: the edge at 19.47 degrees|$scratch/wake_slow.png|0.1,0,0.9,1" \
   "9 m/s, Fr 1.17: the largest waves inside it|$scratch/wake_fast.png|0.1,0,0.9,1"
 echo step08_wakes/wake_speeds.png
+
+# step09's bodies in step08's scene: the raft in contact, the buoy radiating (as step08's shot).
+shot step09_radiation "$root/step09_radiation/screenshot.png" --size 640x360 --frames 2 --time 0 --dt 0.1
+echo step09_radiation/screenshot.png
 
 # step05's one Gerstner wave at three steepnesses Q k A (sea=gerstner), crests across the view.
 gerstner() {  # gerstner STEEPNESS

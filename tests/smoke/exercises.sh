@@ -47,7 +47,9 @@ refuses mode-without-sources step08_wakes 1 mode_step.cpp '    return mode;' '  
 # Kelvin's angle with the energy at the phase speed (n taken as 1 everywhere): every wake 90 degrees.
 refuses kelvin-phase-speed step08_wakes 2 kelvin.cpp '    return 0;' '    return std::asin(1.0);' 'value 0'
 # The image a source instead of a sink (a rigid lid): phi is no longer 0 on the surface.
-refuses rigid-lid-image step08_wakes 3 image_source.cpp '    return {};' '    SourceAt at; for (int m = 0; m < 2; ++m) { const glm::dvec3 d = x - (m ? glm::dvec3(xi.x, -xi.y, xi.z) : xi); const double r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z); at.potential += -1 / (4 * ocean::kPi * r); at.along += (d.x * n.x + d.y * n.y + d.z * n.z) / (4 * ocean::kPi * r * r * r); } return at;' 'value 0'
+refuses rigid-lid-image step09_radiation 1 image_source.cpp '    return {};' '    SourceAt at; for (int m = 0; m < 2; ++m) { const glm::dvec3 d = x - (m ? glm::dvec3(xi.x, -xi.y, xi.z) : xi); const double r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z); at.potential += -1 / (4 * ocean::kPi * r); at.along += (d.x * n.x + d.y * n.y + d.z * n.z) / (4 * ocean::kPi * r * r * r); } return at;' 'value 0'
+# The water through the surface from the source alone, its image forgotten: half of it.
+refuses surface-flow-without-image step09_radiation 2 image_source.cpp '    return 0;' '    const double r = std::sqrt(across * across + depth * depth); return depth / (4 * ocean::kPi * r * r * r);' 'value 0'
 # The notes' Fresnel, F = (1 - cos theta)^5, forgets F0.
 refuses notes-fresnel step06_foam_sky 1 shading.glsl '    return 0.0;' '    return pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);'
 # The notes' 2.2 slope, cos(x w + phase) without w a.
