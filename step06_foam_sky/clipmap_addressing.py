@@ -2,7 +2,7 @@
 """clipmap_addressing.py: draws clipmap_addressing.svg, the foam clipmap's toroidal addressing (foam.md).
 
 One level of the clipmap seen along x, with N = 8 texels instead of 256: the world's cells, the window of
-N cells that follows the camera, and the texture, in which world cell c is texel c mod N. Then the
+N cells that follows the camera, and the texture, in which world cell i is texel i mod N. Then the
 camera moves three cells on: five texels keep their cell and their foam, and the three texels whose
 cells left the window are rewritten with the cells that entered, started afresh. The same holds along
 z. Standard library only: `python3 step06_foam_sky/clipmap_addressing.py` rewrites the SVG beside it.
@@ -33,7 +33,7 @@ def frame(top, origin, previous, title):
     """One frame: the world's cells with the window [origin, origin + N), then the texture."""
     text(LEFT, top, title, 14, "start", "bold")
     y = top + 32
-    text(LEFT + CELLS * W + 8, y + 20, "world cells c", 12, "start")
+    text(LEFT + CELLS * W + 8, y + 20, "world cells i", 12, "start")
     for c in range(CELLS):
         inside = origin <= c < origin + N
         entered = inside and not (previous <= c < previous + N)
@@ -49,14 +49,15 @@ def frame(top, origin, previous, title):
     text(camera + 10, y - 7, "camera", 11, "start")
     # the texture, one copy, each texel under the world cell it holds for the first window drawn
     ty = y + H + 62
-    text(LEFT + CELLS * W + 8, ty + 20, "texels c mod N", 12, "start")
+    text(LEFT + CELLS * W + 8, ty + 13, "texels", 12, "start")
+    text(LEFT + CELLS * W + 8, ty + 27, "(their cells)", 12, "start")
     tx = LEFT + 6 * W
     for t in range(N):
         cell = origin + ((t - origin) % N)  # foam.frag: the one cell of the window congruent to t
         before = previous + ((t - previous) % N)
         entered = cell != before
         box(tx + t * W, ty, W, H, ORANGE if entered else BLUE)
-        text(tx + t * W + W / 2, ty + 13, f"t{t}", 10)
+        text(tx + t * W + W / 2, ty + 13, t, 10, fill="#666")
         text(tx + t * W + W / 2, ty + 26, cell, 12, weight="bold")
         arrow(LEFT + cell * W + W / 2, y + H + 2, tx + t * W + W / 2, ty - 2, "#555")
     return ty + H
@@ -65,7 +66,7 @@ def frame(top, origin, previous, title):
 out.append(f'<defs><marker id="head" markerWidth="8" markerHeight="8" refX="7" refY="4" orient="auto">'
            f'<path d="M0,0 L8,4 L0,8 z" fill="#555"/></marker></defs>')
 text(LEFT, 22, "The foam clipmap's addressing, along x (N = 8 texels here; 256 in the chapter)", 15, "start", "bold")
-bottom = frame(56, 4, 4, "Frame 1: the window holds cells 4 to 11 (u_origin = 4); cell c is stored in texel c mod 8")
+bottom = frame(56, 4, 4, "Frame 1: the window holds cells 4 to 11 (u_origin = 4); cell i is stored in texel i mod 8")
 bottom = frame(bottom + 50, 7, 4, "Frame 2: the camera moved 3 cells on; the window holds cells 7 to 14 (u_origin = 7)")
 legend = bottom + 30
 box(LEFT, legend - 13, 16, 16, BLUE)
@@ -73,9 +74,9 @@ text(LEFT + 22, legend, "a cell in the window both frames: same texel, its foam 
 box(LEFT, legend + 9, 16, 16, ORANGE)
 text(LEFT + 22, legend + 22, "a cell that entered: it takes the texel of the cell that left (4→12, 5→13, 6→14), "
      "started afresh", 12, "start")
-text(LEFT, legend + 46, "The renderer reads cell c at texture coordinate c / N, and GL_REPEAT takes the mod; "
-     "foam.frag, run once a texel t,", 12, "start")
-text(LEFT, legend + 64, "finds the cell it holds the other way round: c = origin + ((t − origin) mod N).", 12, "start")
+text(LEFT, legend + 46, "The renderer reads cell i at texture coordinate i / N, and GL_REPEAT takes the mod; "
+     "foam.frag, run once a texel,", 12, "start")
+text(LEFT, legend + 64, "finds the cell it holds the other way round: i = origin + ((texel − origin) mod N).", 12, "start")
 width, height = LEFT + CELLS * W + 110, legend + 80
 svg = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" viewBox="0 0 {width} {height}" '
        f'font-family="DejaVu Sans, Arial, sans-serif">\n<rect width="100%" height="100%" fill="white"/>\n'

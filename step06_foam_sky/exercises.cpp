@@ -124,6 +124,7 @@ std::vector<Exercise> chapter() {
                                },
                                1e-4);
          }},
+        // derived: the lesson gives the method, not this answer
         {"step06_foam_sky", 3, "Foam, exact at any frame rate", "foam_step.glsl",
          "float foam_step(float foam, float injection_rate, float decay_rate, float dt) {",
          "    // TODO (exercise 3): the foam after dt seconds. The starter is the explicit step.\n"
