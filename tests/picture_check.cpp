@@ -84,7 +84,7 @@
 //       The detail across the view in a band of the picture (rows FROM to TO, fractions of its
 //       height): the mean step in luma (display values, 0 to 255) from each pixel to its right-hand
 //       neighbour. Broken ripples make it large; the horizontal smears of a sea filtered too coarsely
-//       across the view make it small (step06's README, "Filtering at grazing angles"). Only prints
+//       across the view make it small (step06's sea.md, "Filtering at grazing angles"). Only prints
 //       it: what it must be is the calling test's (step06_foam_sky/tests/combined_levels.sh).
 //   picture_check wake WITHOUT WITH
 //       step08's wake as a camera following the boat records it (the boat at the picture's centre):

@@ -945,7 +945,7 @@ TEST(Step06Bloom, EveryLevelKeepsTheLightAndAGlowIsSymmetric) {
 // bilinear taps average pixel pairs, so the glow moves in steps of 2 pixels; the 4 x 4 box that a
 // plain downsample would take moves it in steps of 4, up to 1.6 pixels off, and fails. (The
 // threshold comes after the filter, so the glow's strength changes with where the glint falls, by
-// a quarter from step to step: README, "How the bloom is made".)
+// a quarter from step to step: air.md, "How the bloom is made".)
 TEST(Step06Bloom, AMovingGlintsGlowStaysUnderIt) {
     const std::vector<glm::ivec2> sizes = step06::bloom_level_sizes({256, 256}, 5);
     const auto glow_centre = [&](int x, bool box) {
