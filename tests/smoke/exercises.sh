@@ -52,6 +52,9 @@ refuses rigid-lid-image step08_wakes 3 image_source.cpp '    return {};' '    So
 refuses notes-fresnel step06_foam_sky 1 shading.glsl '    return 0.0;' '    return pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);'
 # The notes' 2.2 slope, cos(x w + phase) without w a.
 refuses notes-slope step01_sine2d 2 sine_sum.glsl '    return 0.0;' '    return cos(x * u_waves[i].x + u_waves[i].z);'
+# The curvature with the sign of the height (the derivative of cos taken as +sin): crests bend up.
+refuses curvature-sign step01_sine2d 3 sine_sum.glsl '    return 0.0;' '    return u_waves[i].y * u_waves[i].x * u_waves[i].x * sin(x * u_waves[i].x + u_waves[i].z);' \
+  'sum_of_sines_curvature(a.x)'
 # The notes' 2.2 gradient in 2D, cos(angle) d without w a: it must fail on the slope.
 refuses notes-gradient step03_lighting 2 wave_gradient.glsl '    return vec3(wave_height(xz), 0.0, 0.0);' \
   '    vec3 r = vec3(0.0);\n    for (int i = 0; i < u_wave_count; ++i) {\n        float angle = dot(u_waves[i].xy, xz) * u_waves[i].z + u_wave_phases[i];\n        r += vec3(u_waves[i].w * sin(angle), cos(angle) * u_waves[i].xy);\n    }\n    return r;' \
