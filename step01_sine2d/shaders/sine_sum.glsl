@@ -19,8 +19,8 @@ float wave_slope(int i, float x) {
 // d2/dx2 of wave i's height: how fast its slope turns, the curvature where slopes are gentle
 // (the plot's show_curvature draws the sum's).
 float wave_curvature(int i, float x) {
-    vec4 wave = u_waves[i];
-    return -wave.y * wave.x * wave.x * sin(x * wave.x + wave.z);
+    float w = u_waves[i].x;
+    return -u_waves[i].y * w * w * sin(x * w + u_waves[i].z);
 }
 
 float sum_of_sines(float x) {

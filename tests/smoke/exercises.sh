@@ -59,6 +59,10 @@ refuses curvature-sign step01_sine2d 3 sine_sum.glsl '    return 0.0;' '    retu
 refuses notes-gradient step03_lighting 2 wave_gradient.glsl '    return vec3(wave_height(xz), 0.0, 0.0);' \
   '    vec3 r = vec3(0.0);\n    for (int i = 0; i < u_wave_count; ++i) {\n        float angle = dot(u_waves[i].xy, xz) * u_waves[i].z + u_wave_phases[i];\n        r += vec3(u_waves[i].w * sin(angle), cos(angle) * u_waves[i].xy);\n    }\n    return r;' \
   'wave_height_gradient(a.xy).y'
+# A ripple whose amplitude falls as 1 / r (the amplitude spread round the circle, not the energy).
+refuses ripple-amplitude-spread step02_sine3d 3 ripple.glsl '    return 0.0;' \
+  '    float r = distance(xz, u_ripple.xy), l = 6.2831853 / u_ripple.z;\n    return u_ripple.w * (l / max(r, l)) * sin(r * u_ripple.z + u_ripple_phase);' \
+  'ripple_height(a.xy)'
 # A facet normal not turned up: half the facets face down.
 refuses unturned-facet step02_sine3d 2 facet.glsl '    return vec3(0.0, 1.0, 0.0);' '    return normalize(cross(along_x, along_y));'
 # T x B, the normal pointing into the water.
