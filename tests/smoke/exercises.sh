@@ -63,6 +63,10 @@ refuses notes-gradient step03_lighting 2 wave_gradient.glsl '    return vec3(wav
 refuses ripple-amplitude-spread step02_sine3d 3 ripple.glsl '    return 0.0;' \
   '    float r = distance(xz, u_ripple.xy), l = 6.2831853 / u_ripple.z;\n    return u_ripple.w * (l / max(r, l)) * sin(r * u_ripple.z + u_ripple_phase);' \
   'ripple_height(a.xy)'
+# Phong's mirrored sun with Blinn-Phong's exponent unchanged: a glint half as wide as Blinn-Phong's.
+refuses phong-blinn-exponent step03_lighting 3 lighting.glsl '    return 0.0;' \
+  '    float f = dot(normal, u_to_sun);\n    return f > 0.0 ? pow(max(dot(reflect(-u_to_sun, normal), to_eye), 0.0), u_shininess) : 0.0;' \
+  'phong_specular(n, v)'
 # A facet normal not turned up: half the facets face down.
 refuses unturned-facet step02_sine3d 2 facet.glsl '    return vec3(0.0, 1.0, 0.0);' '    return normalize(cross(along_x, along_y));'
 # T x B, the normal pointing into the water.
