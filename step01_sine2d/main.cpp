@@ -49,6 +49,8 @@ public:
         p.add_float("x_span", &x_span_, 1, 1000, "metres across the plot").in_group("view").logarithmic();
         p.add_bool("show_waves", &show_waves_, "draw each wave in its own colour").in_group("view");
         p.add_bool("show_sum", &show_sum_, "draw the sum of the waves in white").in_group("view");
+        p.add_bool("show_curvature", &show_curvature_, "draw the sum's curvature d2f/dx2 (1/m on the same axis), in pink")
+            .in_group("view");
         p.add_float("line_width", &line_width_, 0.5f, 10, "width of a wave's line, pixels").in_group("view");
         offer_split_view([] {
             return SplitVariants{"each wave", "their sum", {"show_sum=false"}, {"show_waves=false"}};
@@ -109,6 +111,7 @@ private:
         plot_->set("u_y_extent", float(std::max(1.25 * total_amplitude, 0.1)));
         plot_->set("u_show_waves", int(show_waves_));
         plot_->set("u_show_sum", int(show_sum_));
+        plot_->set("u_show_curvature", int(show_curvature_));
         plot_->set("u_line_width", line_width_);
         plot_->set("u_wave_colors", std::vector<glm::vec3>(kWaveColors.begin(), kWaveColors.end()));
 
@@ -138,7 +141,7 @@ private:
     float amplitude_ = 1;
     std::array<step01::WaveSliders, kMaxWaves> waves_{};
     float x_min_ = -4, x_span_ = 32, line_width_ = 2;
-    bool show_waves_ = true, show_sum_ = true;
+    bool show_waves_ = true, show_sum_ = true, show_curvature_ = false;
 };
 
 }  // namespace

@@ -58,4 +58,15 @@ inline double sum_of_sines_slope(const std::vector<Wave>& waves, double x, doubl
     return slope;
 }
 
+// d2f/dx2, how fast the slope turns (the curvature where slopes are gentle): the plot draws it with
+// show_curvature.
+inline double sum_of_sines_curvature(const std::vector<Wave>& waves, double x, double time) {
+    double curvature = 0;
+    for (const Wave& wave : waves) {
+        const double w = angular_wavenumber(wave);
+        curvature -= wave.amplitude * w * w * std::sin(x * w - time * phase_rate(wave));
+    }
+    return curvature;
+}
+
 }  // namespace step01

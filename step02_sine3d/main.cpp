@@ -10,6 +10,8 @@
 
 #include <imgui.h>
 
+#include <cmath>
+
 namespace {
 
 class Sine3D : public ocean::App {
@@ -26,6 +28,14 @@ public:
         params().add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         params().add_bool("facet_shading", &facet_shading_, "darken faces turned from a fixed direction")
             .in_group("view");
+        // A ring of waves from a point, on top of the sum (ripple.glsl); none at amplitude 0.
+        params().add_float("ripple_amplitude", &ripple_amplitude_, 0, 2,
+                           "a ripple's amplitude one wavelength from its centre, metres (0: no ripple)")
+            .in_group("ripple");
+        params().add_float("ripple_wavelength", &ripple_wavelength_, 0.5f, 40, "the ripple's wavelength, metres")
+            .in_group("ripple");
+        params().add_float("ripple_x", &ripple_x_, -40, 40, "the ripple's centre, x, metres").in_group("ripple");
+        params().add_float("ripple_z", &ripple_z_, -40, 40, "the ripple's centre, z, metres").in_group("ripple");
         use_camera(ocean::camera_view("overview"));
         offer_split_view([] {
             return SplitVariants{"solid", "wireframe", {"wireframe=false"}, {"wireframe=true"}};
@@ -40,7 +50,11 @@ private:
         clear_target({0.06f, 0.07f, 0.09f});
         ocean::ShaderProgram* ocean_program = program("ocean", {"ocean.vert", "ocean.frag"});
         step02::upload_waves(*ocean_program, waves_.waves(), time());
-        ocean_program->set("u_height_extent", float(waves_.height_extent()));
+        // Deep-water speed, as the waves': sqrt(g wavelength / 2 pi), outwards.
+        const double ripple_speed = std::sqrt(9.81 * double(ripple_wavelength_) / step02::kTwoPi);
+        step02::upload_ripple(*ocean_program,
+                              {ripple_x_, ripple_z_, ripple_wavelength_, ripple_amplitude_, ripple_speed}, time());
+        ocean_program->set("u_height_extent", float(waves_.height_extent() + double(ripple_amplitude_)));
         ocean_program->set("u_facet_shading", int(facet_shading_));
         ocean_program->set("u_wireframe", int(wireframe_));
         ocean::draw_grid(grid_, *ocean_program, camera(), aspect(), timers(), wireframe_);
@@ -55,6 +69,7 @@ private:
     step02::WaveParams waves_;
     ocean::GridParams grid_params_;
     bool wireframe_ = false, facet_shading_ = true;
+    float ripple_amplitude_ = 0, ripple_wavelength_ = 5, ripple_x_ = 0, ripple_z_ = 0;
 };
 
 }  // namespace

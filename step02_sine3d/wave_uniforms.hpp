@@ -29,4 +29,11 @@ inline void upload_waves(const ocean::ShaderProgram& program, const std::vector<
     program.set("u_wave_phases", phases);
 }
 
+// Hands a ripple to ripple.glsl: (c.x, c.z, w, a) and its reduced phase.
+inline void upload_ripple(const ocean::ShaderProgram& program, const Ripple& ripple, double time) {
+    const double w = kTwoPi / ripple.wavelength;
+    program.set("u_ripple", glm::vec4(float(ripple.x), float(ripple.z), float(w), float(ripple.amplitude)));
+    program.set("u_ripple_phase", float(step01::phase_at(ripple.speed * w, time)));
+}
+
 }  // namespace step02

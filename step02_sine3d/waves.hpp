@@ -9,6 +9,7 @@
 
 #include "step01_sine2d/sine_sum.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -41,6 +42,24 @@ inline double height(const std::vector<DirectionalWave>& waves, double x, double
                                        time * phase_rate(wave));
     }
     return h;
+}
+
+// A ring of waves spreading from the point (x, z) (ripple.glsl): its crests are circles about it, and
+// they travel outwards at `speed`. Its energy per unit area, proportional to its amplitude squared,
+// spreads round a circle 2 pi r long, so beyond one wavelength the amplitude falls as 1 / sqrt(r);
+// `amplitude` is its value one wavelength out, which it keeps nearer in (the splash itself).
+struct Ripple {
+    double x = 0, z = 0;     // its centre, metres
+    double wavelength = 5;   // metres
+    double amplitude = 0;    // metres, one wavelength from the centre
+    double speed = 0;        // metres per second, outwards
+};
+
+inline double ripple_height(const Ripple& ripple, double x, double z, double time) {
+    const double r = std::hypot(x - ripple.x, z - ripple.z);
+    const double w = kTwoPi / ripple.wavelength;
+    const double spread = std::sqrt(ripple.wavelength / std::max(r, ripple.wavelength));
+    return ripple.amplitude * spread * std::sin(r * w - time * ripple.speed * w);
 }
 
 // The flat facet shading's normal (facet.glsl): two edges of a triangle crossed, normalised and

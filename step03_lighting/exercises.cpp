@@ -7,6 +7,7 @@
 #include "step02_sine3d/exercise_inputs.hpp"
 #include "step02_sine3d/wave_uniforms.hpp"
 #include "step03_lighting/exercise_vectors.hpp"
+#include "step03_lighting/light_uniforms.hpp"
 #include "step03_lighting/lighting.hpp"
 
 #include <glm/vec3.hpp>
@@ -93,6 +94,37 @@ std::vector<Exercise> chapter() {
                      return glm::dvec3(g.height, g.dh_dx, g.dh_dz);
                  },
                  1e-4, -60, 60, [](const ocean::ShaderProgram& p) { step02::upload_waves(p, kStep02Waves, kCheckTime); });
+         }},
+        // derived: the README builds Blinn-Phong's halfway vector; Phong's mirrored sun, and the exponent that gives it the same glint, no page gives
+        {"step03_lighting", 3, "Phong's glint, as wide as Blinn-Phong's", "lighting.glsl",
+         "float phong_specular(vec3 normal, vec3 to_eye) {",
+         "    // TODO (exercise 3): Phong's glint: the sun mirrored about the normal, against the eye.\n"
+         "    return 0.0;\n",
+         "Write phong_specular, Phong's glint, older than Blinn-Phong's: a mirror sends the sun's light (towards\n"
+         "u_to_sun, L) off along one direction R, and the glint is the eye's direction (to_eye, V) against R,\n"
+         "raised to an exponent. First find R from L and the unit normal: split L into its part along the\n"
+         "normal and its part across it; a mirror keeps one and turns the other round. Then the exponent: at\n"
+         "the same u_shininess s Phong's lobe is much wider than Blinn-Phong's. For an eye in the plane of\n"
+         "N and L, compare the angle between R and V with the angle between N and H, and choose the exponent\n"
+         "so that both glints fall off alike near their top (expand the cosines for small angles). No glint\n"
+         "from a sun behind the surface. The step runs with specular=phong and view=specular: a black sea\n"
+         "until you write it, then glints close to Blinn-Phong's (specular=blinn_phong) in size, but rounder.",
+         "L's part along the normal is (N.L) N; R keeps it and turns the rest round. When the eye moves by "
+         "an angle x from R, the halfway vector moves by only x / 2 from N; and ln cos x is about -x^2 / 2.",
+         "R = 2 (N.L) N - L; phong_specular = N.L > 0 ? max(R.V, 0)^(s / 4) : 0, i.e. "
+         "pow(max(dot(2.0 * dot(normal, u_to_sun) * normal - u_to_sun, to_eye), 0.0), 0.25 * u_shininess): "
+         "cos(2x)^(s/4) and cos(x)^s are both about exp(-s x^2 / 2)",
+         {"--set", "specular=phong", "--set", "view=specular"},
+         [](const fs::path& work) {
+             static const step03::Vec3 sun = step03::normalize({0.4, 0.5, -0.3});
+             static const glm::dvec3 fixed_sun(sun.x, sun.y, sun.z);
+             const step03::Light light = step03_light(sun);
+             return check_glsl(
+                 work, "lighting.glsl", "phong_specular(n, v)",
+                 [&](const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3&, double) {
+                     return step03::phong_specular(step03::to_vec3(n), step03::to_vec3(v), light);
+                 },
+                 1e-4, [&](const ocean::ShaderProgram& p) { step03::upload_light(p, light); }, &fixed_sun);
          }},
     };
 }

@@ -49,6 +49,17 @@ inline LightTerms light_terms(const Vec3& normal, const Vec3& to_eye, const Ligh
     return t;
 }
 
+// Phong's glint (lighting.glsl's phong_specular, the step's specular=phong): the sun mirrored about
+// the normal, R = 2 (N.L) N - L, against the eye, (max(R.V, 0))^(shininess / 4). In the plane of N
+// and L the angle from R to V is twice the angle from N to H, and cos(2x)^(s/4) ~ cos(x)^s ~
+// exp(-s x^2 / 2) near the top: the same glint as Blinn-Phong's there. Zero where N.L <= 0.
+inline double phong_specular(const Vec3& normal, const Vec3& to_eye, const Light& light) {
+    const double n_dot_l = dot(normal, light.to_sun);
+    const Vec3 mirrored{2 * n_dot_l * normal.x - light.to_sun.x, 2 * n_dot_l * normal.y - light.to_sun.y,
+                        2 * n_dot_l * normal.z - light.to_sun.z};
+    return n_dot_l > 0 ? std::pow(std::max(dot(mirrored, to_eye), 0.0), light.shininess / 4) : 0.0;
+}
+
 inline Colour lit_colour(const LightTerms& t) {
     return {t.ambient.r + t.diffuse.r + t.specular.r, t.ambient.g + t.diffuse.g + t.specular.g,
             t.ambient.b + t.diffuse.b + t.specular.b};

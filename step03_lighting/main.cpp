@@ -42,6 +42,10 @@ public:
         p.add_choice("view", &view_, {"lit", "ambient", "diffuse", "specular", "normals", "normal_difference"},
                      "the whole light, one term alone, the normals as colours, or the analytic/finite-difference angle")
             .in_group("light");
+        p.add_choice("specular", &specular_, {"blinn_phong", "phong"},
+                     "the glint: Blinn-Phong's (N against the halfway vector) or Phong's (the eye against the "
+                     "sun mirrored about N), as wide in the plane of N and the sun at the same shininess")
+            .in_group("light");
         light_.declare(p);
         p.add_bool("wireframe", &wireframe_, "draw the triangles' edges only").in_group("view");
         use_camera(ocean::camera_view("overview"));
@@ -56,7 +60,7 @@ private:
     ocean::ShaderProgram* ocean_variant() {
         return program("ocean", {"ocean.vert", "ocean.frag"},
                        {"NORMAL_METHOD " + std::to_string(normal_method_), "VIEW " + std::to_string(view_),
-                        "PER_PIXEL " + std::to_string(int(lighting_ == 0))});
+                        "PER_PIXEL " + std::to_string(int(lighting_ == 0)), "SPECULAR " + std::to_string(specular_)});
     }
 
     void init() override { ocean_variant(); }  // the default variant must build before the first frame
@@ -86,7 +90,7 @@ private:
     ocean::GridMesh grid_;
     step02::WaveParams waves_;
     ocean::GridParams grid_params_;
-    int normal_method_ = 0, lighting_ = 0, view_ = 0;
+    int normal_method_ = 0, lighting_ = 0, view_ = 0, specular_ = 0;
     float fd_step_ = 1, angle_scale_ = 10;
     step03::LightParams light_;
     bool wireframe_ = false;

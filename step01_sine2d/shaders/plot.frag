@@ -12,6 +12,7 @@ uniform vec2 u_x_range;        // metres at the left and right edges
 uniform float u_y_extent;      // metres from the axis to the top edge
 uniform bool u_show_waves;
 uniform bool u_show_sum;
+uniform bool u_show_curvature;
 uniform float u_line_width;    // pixels
 uniform vec3 u_wave_colors[MAX_WAVES];
 
@@ -64,6 +65,15 @@ void main() {
     if (u_show_sum) {
         float c = line(y, sum_of_sines(x), sum_of_sines_slope(x), metres_per_pixel, 2.0 * u_line_width);
         color = mix(color, vec3(0.95, 0.97, 1.0), c);
+    }
+    if (u_show_curvature) {
+        // The sum's curvature (1/m, on the same axis), in pink; its own slope, by a difference one
+        // pixel wide, keeps the line's width.
+        float h = metres_per_pixel.x;
+        float curvature = sum_of_sines_curvature(x);
+        float turn = (sum_of_sines_curvature(x + h) - sum_of_sines_curvature(x - h)) / (2.0 * h);
+        float c = line(y, curvature, turn, metres_per_pixel, u_line_width);
+        color = mix(color, vec3(1.0, 0.3, 0.45), c);
     }
     out_color = vec4(color, 1.0);
 }

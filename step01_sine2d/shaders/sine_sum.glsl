@@ -16,6 +16,13 @@ float wave_slope(int i, float x) {
     return wave.y * wave.x * cos(x * wave.x + wave.z);
 }
 
+// d2/dx2 of wave i's height: how fast its slope turns, the curvature where slopes are gentle
+// (the plot's show_curvature draws the sum's).
+float wave_curvature(int i, float x) {
+    float w = u_waves[i].x;
+    return -u_waves[i].y * w * w * sin(x * w + u_waves[i].z);
+}
+
 float sum_of_sines(float x) {
     float height = 0.0;
     for (int i = 0; i < u_wave_count; ++i) height += wave_height(i, x);
@@ -26,4 +33,10 @@ float sum_of_sines_slope(float x) {
     float slope = 0.0;
     for (int i = 0; i < u_wave_count; ++i) slope += wave_slope(i, x);
     return slope;
+}
+
+float sum_of_sines_curvature(float x) {
+    float curvature = 0.0;
+    for (int i = 0; i < u_wave_count; ++i) curvature += wave_curvature(i, x);
+    return curvature;
 }

@@ -62,6 +62,18 @@ TEST(Step01Waves, SlopeMatchesCentralDifferences) {
         }
 }
 
+// The curvature the plot draws (show_curvature) is the slope's own rate of change.
+TEST(Step01Waves, CurvatureMatchesCentralDifferencesOfTheSlope) {
+    const std::vector<step01::Wave> waves{{7.0, 1.1, 3.0}, {2.3, 0.4, -1.0}, {0.9, 0.1, 1.2}};
+    const double h = 1e-5;
+    for (double x : {-5.0, 0.0, 0.37, 8.8})
+        for (double t : {0.0, 1.5}) {
+            const double numeric =
+                (step01::sum_of_sines_slope(waves, x + h, t) - step01::sum_of_sines_slope(waves, x - h, t)) / (2 * h);
+            EXPECT_NEAR(step01::sum_of_sines_curvature(waves, x, t), numeric, 1e-6);
+        }
+}
+
 TEST(Step01Waves, ReducedPhaseKeepsLongRunsExact) {
     const step01::Wave wave{4.0, 1.0, 1.0};  // phi = pi/2: t = 4 s is one whole period
     const double ten_days = 864000.0;         // a multiple of 4 s

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -49,6 +50,45 @@ TEST(Step02Waves, CrestsTravelAlongTheirDirection) {
         }
         EXPECT_NEAR(best_s, 1.25 + 3.0 * t, 2e-4) << "t = " << t;
     }
+}
+
+// The ripple (ripple.glsl, the step's ripple_* parameters) held to what a ring of waves must do.
+TEST(Step02Ripple, CrestsAreCirclesThatSpreadAtTheirSpeed) {
+    const step02::Ripple ripple{3.0, -2.0, 4.0, 0.5, 2.5};
+    // The same height in every direction from the centre.
+    for (double r : {0.7, 6.0, 23.0})
+        for (double angle : {0.3, 2.0, 4.4})
+            EXPECT_NEAR(step02::ripple_height(ripple, 3.0 + r * std::cos(angle), -2.0 + r * std::sin(angle), 1.3),
+                        step02::ripple_height(ripple, 3.0 + r, -2.0, 1.3), 1e-12);
+    // Along a ray, the crest near r = 9 m at t = 0 is 2.5 t further out at t (beyond one wavelength
+    // the 1 / sqrt(r) moves the highest point a little: compare t with t + 0.4 s, both measured).
+    auto crest_near = [&](double from, double t) {
+        double best_r = 0, best_h = -1;
+        for (double r = from; r < from + 4.0; r += 1e-4) {
+            const double h = step02::ripple_height(ripple, 3.0 + r, -2.0, t);
+            if (h > best_h) best_h = h, best_r = r;
+        }
+        return best_r;
+    };
+    const double first = crest_near(8.0, 0.0);
+    EXPECT_NEAR(crest_near(first - 0.5, 0.4), first + 2.5 * 0.4, 5e-3);
+}
+
+TEST(Step02Ripple, CarriesItsEnergyOutwards) {
+    // Over a period the height at r swings between +-A(r); the energy crossing a circle of radius r,
+    // A(r)^2 2 pi r a second times the speed, is the same for every circle beyond the splash: A^2 r
+    // is constant, and A is the ripple's amplitude one wavelength out.
+    const step02::Ripple ripple{0.0, 0.0, 4.0, 0.5, 2.5};
+    const double period = ripple.wavelength / ripple.speed;
+    for (double r : {4.0, 9.0, 30.0, 55.0}) {
+        double swing = 0;
+        for (double t = 0; t < period; t += period / 4000) swing = std::max(swing, step02::ripple_height(ripple, r, 0.0, t));
+        EXPECT_NEAR(swing * swing * r, 0.5 * 0.5 * 4.0, 1e-5) << "r = " << r;
+    }
+    // Inside one wavelength, the splash: the amplitude itself.
+    double swing = 0;
+    for (double t = 0; t < period; t += period / 4000) swing = std::max(swing, step02::ripple_height(ripple, 1.5, 0.0, t));
+    EXPECT_NEAR(swing, 0.5, 1e-5);
 }
 
 TEST(Step02Waves, ReducesToStep01AlongX) {

@@ -14,6 +14,9 @@
 #ifndef VIEW
 #define VIEW 0           // VIEW_* below
 #endif
+#ifndef SPECULAR
+#define SPECULAR 0       // 0: Blinn-Phong (light_terms), 1: Phong (phong_specular)
+#endif
 
 uniform float u_fd_step;      // metres
 uniform float u_angle_scale;  // degrees shown as full red in VIEW_NORMAL_DIFFERENCE
@@ -52,6 +55,9 @@ vec3 surface_colour(vec2 xz, vec3 normal, vec3 world_position, vec3 eye) {
     return heat(degrees_apart / u_angle_scale);
 #else
     LightTerms t = light_terms(normal, normalize(eye - world_position));
+#if SPECULAR == 1
+    t.specular = u_sun_color * phong_specular(normal, normalize(eye - world_position));
+#endif
 #if VIEW == VIEW_AMBIENT
     return t.ambient;
 #elif VIEW == VIEW_DIFFUSE

@@ -77,4 +77,38 @@ TEST(Step03Lighting, NoLightFromBelowTheSurface) {
     EXPECT_EQ(t.specular.r, 0) << "no glint where the sun is behind the surface";
 }
 
+// Phong's glint (the step's specular=phong), held to the mirror it is made of and to Blinn-Phong's size.
+TEST(Step03Lighting, PhongGlintsWhereTheEyeSeesTheSunMirrored) {
+    step03::Light light;
+    light.to_sun = step03::normalize({0.3, 0.8, -0.5});
+    light.shininess = 160;
+    const step03::Vec3 n = step03::normalize({-0.2, 1.0, 0.1});
+    // The sun turned half a turn about the normal: where a mirror sends its light.
+    const double c = step03::dot(n, light.to_sun);
+    const step03::Vec3 across{light.to_sun.x - c * n.x, light.to_sun.y - c * n.y, light.to_sun.z - c * n.z};
+    const step03::Vec3 mirror{c * n.x - across.x, c * n.y - across.y, c * n.z - across.z};
+    EXPECT_NEAR(step03::phong_specular(n, mirror, light), 1.0, 1e-12);
+    // No glint from a sun behind the surface, even seen from its mirror direction.
+    const step03::Vec3 down{-n.x, -n.y, -n.z};
+    EXPECT_EQ(step03::phong_specular(down, {-mirror.x, -mirror.y, -mirror.z}, light), 0.0);
+}
+
+TEST(Step03Lighting, PhongGlintIsAsWideAsBlinnPhongs) {
+    // An eye turned away from the mirror direction, in the plane of N and L, to where Blinn-Phong's
+    // glint falls to half: Phong's falls to half there too (within 1 %), at every shininess.
+    for (double shininess : {64.0, 160.0, 2000.0}) {
+        step03::Light light;
+        light.sun = {1, 1, 1};
+        light.shininess = shininess;
+        const double incidence = 0.7;  // radians from the normal (0, 1, 0), in the x-y plane
+        light.to_sun = {std::sin(incidence), std::cos(incidence), 0};
+        const double half_angle = std::acos(std::pow(0.5, 1 / shininess));  // N from H where Blinn-Phong is 1/2
+        const double eye_angle = -incidence + 2 * half_angle;  // the eye 2 x from the mirror direction
+        const step03::Vec3 eye{std::sin(eye_angle), std::cos(eye_angle), 0};
+        const step03::Vec3 up{0, 1, 0};
+        EXPECT_NEAR(step03::light_terms(up, eye, light).specular.r, 0.5, 1e-9);
+        EXPECT_NEAR(step03::phong_specular(up, eye, light), 0.5, 0.01) << "shininess " << shininess;
+    }
+}
+
 }  // namespace

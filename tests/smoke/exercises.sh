@@ -54,10 +54,21 @@ refuses surface-flow-without-image step09_radiation 2 image_source.cpp '    retu
 refuses notes-fresnel step06_foam_sky 1 shading.glsl '    return 0.0;' '    return pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);'
 # The notes' 2.2 slope, cos(x w + phase) without w a.
 refuses notes-slope step01_sine2d 2 sine_sum.glsl '    return 0.0;' '    return cos(x * u_waves[i].x + u_waves[i].z);'
+# The curvature with the sign of the height (the derivative of cos taken as +sin): crests bend up.
+refuses curvature-sign step01_sine2d 3 sine_sum.glsl '    return 0.0;' '    return u_waves[i].y * u_waves[i].x * u_waves[i].x * sin(x * u_waves[i].x + u_waves[i].z);' \
+  'sum_of_sines_curvature(a.x)'
 # The notes' 2.2 gradient in 2D, cos(angle) d without w a: it must fail on the slope.
 refuses notes-gradient step03_lighting 2 wave_gradient.glsl '    return vec3(wave_height(xz), 0.0, 0.0);' \
   '    vec3 r = vec3(0.0);\n    for (int i = 0; i < u_wave_count; ++i) {\n        float angle = dot(u_waves[i].xy, xz) * u_waves[i].z + u_wave_phases[i];\n        r += vec3(u_waves[i].w * sin(angle), cos(angle) * u_waves[i].xy);\n    }\n    return r;' \
   'wave_height_gradient(a.xy).y'
+# A ripple whose amplitude falls as 1 / r (the amplitude spread round the circle, not the energy).
+refuses ripple-amplitude-spread step02_sine3d 3 ripple.glsl '    return 0.0;' \
+  '    float r = distance(xz, u_ripple.xy), l = 6.2831853 / u_ripple.z;\n    return u_ripple.w * (l / max(r, l)) * sin(r * u_ripple.z + u_ripple_phase);' \
+  'ripple_height(a.xy)'
+# Phong's mirrored sun with Blinn-Phong's exponent unchanged: a glint half as wide as Blinn-Phong's.
+refuses phong-blinn-exponent step03_lighting 3 lighting.glsl '    return 0.0;' \
+  '    float f = dot(normal, u_to_sun);\n    return f > 0.0 ? pow(max(dot(reflect(-u_to_sun, normal), to_eye), 0.0), u_shininess) : 0.0;' \
+  'phong_specular(n, v)'
 # A facet normal not turned up: half the facets face down.
 refuses unturned-facet step02_sine3d 2 facet.glsl '    return vec3(0.0, 1.0, 0.0);' '    return normalize(cross(along_x, along_y));'
 # T x B, the normal pointing into the water.
