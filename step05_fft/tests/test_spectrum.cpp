@@ -84,8 +84,8 @@ TEST(Step05Spreading, TheSech2LobeIsNormalisedOnTheCircle) {
 TEST(Step05Spreading, DonelanBannerIsNarrowestAtThePeak) {
     // Donelan et al. (1985): beta = 2.61 r^1.3 below the peak (r = omega / omega_p), 2.28 r^-1.3
     // above it, continuous at r = 0.95; Banner (1990) beyond r = 1.6, falling towards 10^-0.4.
-    EXPECT_NEAR(donelan_banner_beta(0.95, 1.0), 2.61 * std::pow(0.95, 1.3), 1e-12);
-    EXPECT_NEAR(2.61 * std::pow(0.95, 1.3), 2.28 * std::pow(0.95, -1.3), 0.01);
+    EXPECT_NEAR(donelan_banner_beta(0.9, 1.0), 2.61 * std::pow(0.9, 1.3), 1e-12);
+    EXPECT_NEAR(donelan_banner_beta(0.95 - 1e-9, 1.0), donelan_banner_beta(0.95, 1.0), 0.01);
     EXPECT_NEAR(donelan_banner_beta(1.0, 1.0), 2.28, 1e-12);
     EXPECT_GT(donelan_banner_beta(1.0, 1.0), donelan_banner_beta(1.3, 1.0));
     EXPECT_GT(donelan_banner_beta(1.3, 1.0), donelan_banner_beta(3.0, 1.0));

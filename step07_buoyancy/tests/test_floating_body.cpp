@@ -208,7 +208,8 @@ TEST(FloatingBody, ASphereHeavesWithThePeriodOfItsWaterplane) {
     // The program's buoy (1.2 m) raised 2 cm above its rest and let go heaves with
     // sphere_heave_period (exercise 3): the period the simulation shows, from its zero crossings,
     // holds the closed form to the program's own integration of the exact cap, at three densities
-    // (a shallow cap, a hemisphere, a deep one) and two drags, within 2 %.
+    // (a shallow cap, a hemisphere, a deep one) and two drags, within 1 % (the box's g / d, which
+    // forgets that the sphere's waterplane shrinks, is 24 % off for the hemisphere).
     const double diameter = 1.2, radius = 0.6;
     for (double density : {250.0, 500.0, 800.0})
         for (double drag : {0.1, 0.5}) {
@@ -228,7 +229,7 @@ TEST(FloatingBody, ASphereHeavesWithThePeriodOfItsWaterplane) {
             const double expected = step07::sphere_heave_period(radius, draft, drag);
             std::cout << "buoy, density " << density << ", drag " << drag << ": heave period " << measured
                       << " s, predicted " << expected << " s\n";
-            EXPECT_NEAR(measured, expected, 0.02 * expected) << "density " << density << ", drag " << drag;
+            EXPECT_NEAR(measured, expected, 0.01 * expected) << "density " << density << ", drag " << drag;
         }
     // Too much drag for the spring: no oscillation, no period.
     EXPECT_TRUE(std::isinf(step07::sphere_heave_period(radius, 1.1, 20.0)));
