@@ -1,5 +1,5 @@
-// Chapter 3 on the GPU (fbm.hpp is the CPU reference): cascades of fBm waves, each wave a sine
-// or exp(sin - 1), with domain warping and the exact gradient of the warped sum.
+// Chapter 3 on the GPU (fbm.hpp is the CPU reference): cascades of fBm waves, each wave a sine,
+// exp(sin - 1) or ((1 + sin) / 2)^3, with domain warping and the exact gradient of the warped sum.
 #ifndef SHAPE
 #define SHAPE 1  // 0: sin, 1: exp(sin - 1), 2: ((1 + sin) / 2)^3. A compile-time choice, like step03's variants.
 #endif
