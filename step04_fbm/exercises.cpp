@@ -102,6 +102,34 @@ std::vector<Exercise> chapter() {
          "(mat2(1.0) - u_warp * a * a * w * w * shape.z * outerProduct(d, d)) * jacobian",
          {"--set", "warp=8", "--set", "camera_distance=30"},
          check_warped_gradient},
+        // derived: the lesson differentiates and centres exp(sin - 1) only; this shape is the learner's
+        {"step04_fbm", 4, "Another sharp wave: GPU Gems' sine cubed", "fbm.glsl", "vec3 power_sine_shape(float theta) {",
+         "    // TODO (exercise 4): (W, W', W'') of ((1 + sin theta) / 2)^3, scaled and centred. For now, a sine.\n"
+         "    return vec3(sin(theta), cos(theta), -sin(theta));\n",
+         "Write power_sine_shape, the shape of --set shape=power_sine: GPU Gems 1 (Finch, chapter 1)\n"
+         "sharpens a sine by lifting it to [0, 1] and raising it to a power k, ((1 + sin theta) / 2)^k;\n"
+         "here k = 3. Like the exp-sine (\"A sharper wave shape\" and \"The sea's level\"), it must be\n"
+         "scaled to the same crest-to-trough height, 1 - e^-2 (so that the shapes compare like with like),\n"
+         "and have its mean over a period taken out (so that the sea rests at y = 0); then return\n"
+         "(W, W', W''), W' for the normals and W'' for the warp's Jacobian. Find the mean as the lesson finds\n"
+         "e^-1 I0(1): expand the power, and average each power of sin over a period. The derivatives are the\n"
+         "chain rule (a power of a function) and then the product rule. The step runs with\n"
+         "shape=power_sine: the starter is a sine twice as high, round crests as wide as the troughs.",
+         "Expanded, the cube is a polynomial in sin theta: the odd powers average 0 over a period, sin^2 "
+         "averages 1/2. The scale multiplies all three of W, W', W'', the mean comes off W only; d/dtheta of "
+         "(1 + sin theta) / 2 is cos theta / 2.",
+         "u = (1 + sin theta) / 2, A = 1 - e^-2 = 0.86466472: W = A (u^3 - 5/16), W' = A (3/2) u^2 cos theta, "
+         "W'' = A (3/2) (u cos^2 theta - u^2 sin theta)",
+         {"--set", "shape=power_sine"},
+         [](const fs::path& work) {
+             return check_vector(
+                 work, "fbm.glsl", "power_sine_shape(a.x)",
+                 [](const glm::dvec4& a, const glm::dvec4&) {
+                     const step04::ShapeValue w = step04::power_sine_shape(a.x);
+                     return glm::dvec3(w.value, w.first, w.second);
+                 },
+                 1e-4, -10, 10);
+         }},
     };
 }
 

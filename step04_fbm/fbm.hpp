@@ -4,7 +4,8 @@
 // One cascade is a sum of N waves. Wave i has
 //   amplitude a_i = a_0 gain^i,  angular wavenumber w_i = w_0 lacunarity^i   (fBm: 0.82, 1.18)
 //   a direction d_i drawn from a seeded generator, and phase rate phi_i = speed_scale sqrt(g w_i)
-//   (deep water: short waves are slower), and a shape W: sin, or exp(sin - 1) (sharp crests).
+//   (deep water: short waves are slower), and a shape W: sin, exp(sin - 1) (sharp crests), or GPU
+//   Gems' ((1 + sin) / 2)^3 (sharp crests, troughs flatter still).
 // Wave i is a_i W(w_i d_i.q - t phi_i): its crests travel along +d_i (the notes' + t phi would send
 // them along -d_i). exp(sin - 1) is not centred: its mean over a period is e^-1 I0(1) = 0.4658, so
 // the step subtracts it and the water's mean level stays at y = 0 (without it, 24 waves of the
@@ -30,7 +31,7 @@ namespace step04 {
 using ocean::kGravity;
 using ocean::kTwoPi;
 
-enum class Shape { Sine = 0, ExpSine = 1 };
+enum class Shape { Sine = 0, ExpSine = 1, PowerSine = 2 };
 
 // W(theta) and its first two derivatives.
 struct ShapeValue {
@@ -44,9 +45,20 @@ constexpr double kExpSineMean = 0.46575960759364043;
 // `shape` compares two seas of the same height, not a sine sea 2.3 times higher.
 constexpr double kSineScale = 0.43233235838169365;  // (1 - e^-2) / 2
 
+// GPU Gems 1's sharpened sine (Finch 2004, chapter 1), ((1 + sin theta) / 2)^k with k = 3: 1 at the
+// crest, 0 in the trough, scaled to the exp-sine's crest-to-trough height 1 - e^-2 and its mean
+// removed; (W, W', W''). Exercise 4 (./ocean exercise step04_fbm 4) derives it: fbm.glsl's
+// power_sine_shape.
+inline ShapeValue power_sine_shape(double theta) {
+    const double s = std::sin(theta), c = std::cos(theta), u = 0.5 * (1 + s), scale = 1 - std::exp(-2.0);
+    // u^3 = (1 + 3 s + 3 s^2 + s^3) / 8, whose odd powers of sin average 0 and sin^2 1/2: mean 5/16.
+    return {scale * (u * u * u - 5.0 / 16), scale * 1.5 * u * u * c, scale * 1.5 * (u * c * c - u * u * s)};
+}
+
 inline ShapeValue wave_shape(Shape shape, double theta) {
     const double s = std::sin(theta), c = std::cos(theta);
     if (shape == Shape::Sine) return {kSineScale * s, kSineScale * c, -kSineScale * s};
+    if (shape == Shape::PowerSine) return power_sine_shape(theta);
     const double e = std::exp(s - 1.0);  // in [e^-2, 1]: a crest of 1, flat troughs
     return {e - kExpSineMean, e * c, e * (c * c - s)};
 }

@@ -23,8 +23,9 @@ public:
     // the shaders, `#define SHAPE`; the warp is a uniform).
     void declare(ocean::ParamRegistry& p) {
         const auto fbm_group = p.group("fbm");
-        p.add_choice("shape", &shape, {"sine", "exp_sine"},
-                     "wave shape: sin(x), or exp(sin(x) - 1) with sharp crests and flat troughs");
+        p.add_choice("shape", &shape, {"sine", "exp_sine", "power_sine"},
+                     "wave shape: sin(x), exp(sin(x) - 1) with sharp crests and flat troughs, or "
+                     "((1 + sin(x)) / 2)^3 (GPU Gems 1's sharpened sine)");
         {
             const auto waves_group = p.group("fbm", &waves_changed);
             p.add_int("wave_count", &wave_count, 1, kMaxWavesPerCascade, "waves in each cascade");

@@ -4,6 +4,7 @@
 // EXERCISES).
 #include "exercises/exercise.hpp"
 
+#include "step05_fft/donelan_banner.hpp"
 #include "step05_fft/exercise_fft.hpp"
 #include "step05_fft/gerstner.hpp"
 #include "step05_fft/ocean_maps.hpp"
@@ -12,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include <cmath>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -121,6 +123,37 @@ Verdict check_gerstner(const fs::path& work) {
         return glm::dvec3(m.slopes[2], m.slopes[3], 0.0);
     }, 1e-4, -1, 1, {}, 2);
 }
+
+// Exercise 10's cases: an angle from the wind in [-pi, pi] and a beta from 0.02 (a lobe round the
+// whole circle) to 50 (3 degrees wide), even in log beta, from one seed per case.
+double sech2_case(int index, double* beta) {
+    std::mt19937 random(std::uint32_t(5000 + index));
+    std::uniform_real_distribution<double> unit(-1, 1), zero_one(0, 1);
+    const double theta = step05::kPi * unit(random);
+    *beta = std::exp(std::log(0.02) + zero_one(random) * std::log(2500.0));
+    return theta;
+}
+std::vector<double> sech2_reference(int index) {
+    double beta = 0;
+    const double theta = sech2_case(index, &beta);
+    return {step05::sech2_spreading(theta, beta)};
+}
+const char* kSech2Driver = R"(#include "step05_fft/donelan_banner.hpp"
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+int main(int argc, char** argv) {
+    const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
+    for (int index = 0; index < cases; ++index) {
+        std::mt19937 random(std::uint32_t(5000 + index));
+        std::uniform_real_distribution<double> unit(-1, 1), zero_one(0, 1);
+        const double theta = 3.14159265358979323846 * unit(random);
+        const double beta = std::exp(std::log(0.02) + zero_one(random) * std::log(2500.0));
+        std::printf("%.17g\n", step05::sech2_spreading(theta, beta));
+    }
+}
+)";
 
 std::vector<Exercise> chapter() {
     return {
@@ -295,6 +328,30 @@ std::vector<Exercise> chapter() {
          "so the crest folds when Q k A > 1",
          {"--set", "sea=gerstner", "--set", "wind_direction=120"},
          [](const fs::path& work) { return check_gerstner(work); }},
+        // derived: the lesson normalises Hasselmann's cos^2s lobe only; sech^2's constant is the learner's
+        {"step05_fft", 10, "Another spreading: sech^2, normalised", "donelan_banner.cpp",
+         "double sech2_spreading(double theta, double beta) {",
+         "    // TODO (exercise 10): sech^2(beta theta), scaled to integrate to 1 over [-pi, pi].\n"
+         "    (void)theta, (void)beta;\n"
+         "    return 0;\n",
+         "Write sech2_spreading (C++, in donelan_banner.cpp; \"Making the sea right\", Directions): the\n"
+         "spectrum gives each frequency its energy, and the spreading shares it among directions theta\n"
+         "from the wind. For that, D(theta) must integrate to 1 over the circle, theta from -pi to pi:\n"
+         "then no energy is made or lost. Hasselmann's lobe is cos^2s(theta / 2) times N(s); Donelan and\n"
+         "Banner measured another, sech^2(beta theta) (sech = 1 / cosh), narrow at the peak (beta 2.28)\n"
+         "and wide for the short waves (beta down to 0.4). Find the factor that normalises it for every\n"
+         "beta > 0, and return D. The program draws it with --set spreading=donelan_banner.\n"
+         "./ocean check compiles your file with a small program and compares 200 angles and betas from\n"
+         "0.02 to 50; tests/test_spectrum.cpp holds it to the midpoint rule.",
+         "sech^2 has an antiderivative you know from tanh's derivative. The integral runs over the circle, "
+         "not the whole line: sech^2 never reaches 0, and where beta is small the lobe reaches round to "
+         "theta = +-pi, so the whole line's factor is too small there.",
+         "the integral of sech^2(beta theta) over [-pi, pi] is 2 tanh(beta pi) / beta, so "
+         "D = beta / (2 tanh(beta pi)) sech^2(beta theta) (beta / 2 on the whole line)",
+         {"--set", "spreading=donelan_banner"},
+         [](const fs::path& work) {
+             return check_cpp(work, "donelan_banner.cpp", kSech2Driver, 200, sech2_reference, 1e-9);
+         }},
     };
 }
 

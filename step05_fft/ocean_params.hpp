@@ -32,6 +32,8 @@ public:
                     "growth law E g^2/U^4 = 1.6e-7 g F/U^2");
             p.add_float("spread", &spectrum.spread, 0, 1, "fraction of the energy spread evenly over all directions");
             p.add_float("swell", &spectrum.swell, 0, 1, "narrows the spreading around the wind: long-crested swell");
+            p.add_choice("spreading", &spectrum.spreading, {"hasselmann", "donelan_banner"},
+                    "the wind sea's directions: Hasselmann's cos^2s(theta/2) or Donelan-Banner's sech^2(beta theta)");
             p.add_float("swell_height", &spectrum.swell_height, 0, 15,
                     "significant height of a swell added to the wind sea, metres (0: none)");
             p.add_float("swell_period", &spectrum.swell_period, 4, 25, "the swell's peak period, seconds");

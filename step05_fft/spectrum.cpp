@@ -1,5 +1,6 @@
 #include "step05_fft/spectrum.hpp"
 
+#include "step05_fft/donelan_banner.hpp"
 #include "step05_fft/mode_amplitude.hpp"
 
 #include <algorithm>
@@ -166,7 +167,9 @@ double cos2s_spreading(double theta, double s) {
 }
 
 double directional_spreading(double omega, double theta, double peak_omega, double wind_speed, double spread,
-                             double swell) {
+                             double swell, Spreading spreading) {
+    if (spreading == Spreading::DonelanBanner && omega > 0 && peak_omega > 0)
+        return spread / (2 * kPi) + (1 - spread) * sech2_spreading(theta, donelan_banner_beta(omega, peak_omega));
     const double s = spreading_exponent(omega, peak_omega, wind_speed, swell);
     return spread / (2 * kPi) + (1 - spread) * cos2s_spreading(theta, s);
 }
@@ -226,7 +229,8 @@ double spectrum_2d(const SpectrumParams& p, double kx, double kz) {
         const double wind = p.wind_direction * kPi / 180.0;
         const double theta = std::remainder(std::atan2(kz, kx) - wind, 2 * kPi);  // into [-pi, pi]
         const double omega = dispersion(k, p.depth);
-        const double d = directional_spreading(omega, theta, peak_omega_of(p), p.wind_speed, p.spread, p.swell);
+        const double d =
+            directional_spreading(omega, theta, peak_omega_of(p), p.wind_speed, p.spread, p.swell, p.spreading);
         wind_sea = omnidirectional_k(p, k) * d / k;
     }
     return p.amplitude_scale * p.amplitude_scale * (wind_sea + swell_2d(p, kx, kz));

@@ -27,6 +27,9 @@ enum class SpectrumModel { Jonswap = 0, Phillips = 1 };
 // GrowthLaw keeps the shape and scales alpha so that the variance follows JONSWAP's own growth
 // law E g^2 / U^4 = 1.6e-7 g F / U^2.
 enum class JonswapEnergy { Fitted = 0, GrowthLaw = 1 };
+// The wind sea's directional lobe: Hasselmann's cos^2s(theta / 2) (below), or Donelan and Banner's
+// sech^2(beta theta) (donelan_banner.hpp).
+enum class Spreading { Hasselmann = 0, DonelanBanner = 1 };
 
 struct SpectrumParams {
     SpectrumModel model = SpectrumModel::Jonswap;
@@ -37,6 +40,7 @@ struct SpectrumParams {
     JonswapEnergy energy = JonswapEnergy::Fitted;
     double spread = 0.2;           // fraction of the energy spread evenly over all directions
     double swell = 0;              // 0..1: narrows the spreading around the wind (long-crested swell)
+    Spreading spreading = Spreading::Hasselmann;  // the wind sea's lobe (swell narrows Hasselmann's only)
     // A swell from a distant storm, added to the wind sea (swell_spectrum below): its own height,
     // peak period, direction and spreading. swell_height = 0: no swell.
     double swell_height = 0;       // Hs of the swell alone, metres
@@ -125,9 +129,10 @@ double spreading_exponent(double omega, double peak_omega, double wind_speed, do
 // N(s) cos^2s(theta / 2), normalised to integrate to 1 over [-pi, pi] (the wind sea's lobe and
 // the swell's).
 double cos2s_spreading(double theta, double s);
-// D(omega, theta) with theta measured from the wind: integrates to 1 over [-pi, pi].
+// D(omega, theta) with theta measured from the wind: integrates to 1 over [-pi, pi]. `spread` of it
+// even over all directions, the rest in the lobe of `spreading`.
 double directional_spreading(double omega, double theta, double peak_omega, double wind_speed, double spread,
-                             double swell);
+                             double swell, Spreading spreading = Spreading::Hasselmann);
 
 // The swell's S(omega): JONSWAP's shape around omega_s = 2 pi / swell_period with gamma =
 // kSwellGamma (swell that has travelled far is narrow), scaled so that its integral is

@@ -1,13 +1,15 @@
 // step07_buoyancy's exercises (./ocean exercise step07_buoyancy N): the Newton step that finds the
-// water drawn above a point (GLSL, held to sea_query.cpp's newton_step), and Archimedes over a
-// hull's cells (C++, held to hull_forces.cpp's buoyancy). The exercise tool (exercises/) gathers every
-// chapter's (add_step's EXERCISES).
+// water drawn above a point (GLSL, held to sea_query.cpp's newton_step), Archimedes over a hull's
+// cells (C++, held to hull_forces.cpp's buoyancy), and a sphere's heave period (C++, held to
+// hull_forces.cpp's sphere_heave_period). The exercise tool (exercises/) gathers every chapter's
+// (add_step's EXERCISES).
 #include "exercises/exercise.hpp"
 
 #include "step07_buoyancy/exercise_cases.hpp"
 #include "step07_buoyancy/hull_forces.hpp"
 #include "step07_buoyancy/sea_query.hpp"
 
+#include <random>
 #include <string>
 
 namespace exercises {
@@ -46,6 +48,42 @@ std::vector<double> buoyancy_reference(int index) {
     const step07::Wrench w = step07::buoyancy(c.cells, c.rotation, c.centre, c.water_lines);
     return {w.force.x, w.force.y, w.force.z, w.torque.x, w.torque.y, w.torque.z};
 }
+
+// Exercise 3's cases: a sphere of radius 0.2 to 3 m floating at a draft of 0.05 to 1.9 radii, with a
+// drag from 0 to 0.6/s (underdamped everywhere: the weakest spring, at 1.9 radii on a 3 m sphere,
+// is 0.47/s^2 against at most 0.09), all from one seed per case.
+struct HeaveCase {
+    double radius = 0, draft = 0, drag = 0;
+};
+HeaveCase heave_case(int index) {
+    std::mt19937 random(std::uint32_t(7000 + index));
+    std::uniform_real_distribution<double> zero_one(0, 1);
+    HeaveCase c;
+    c.radius = 0.2 + 2.8 * zero_one(random);
+    c.draft = c.radius * (0.05 + 1.85 * zero_one(random));
+    c.drag = 0.6 * zero_one(random);
+    return c;
+}
+std::vector<double> heave_reference(int index) {
+    const HeaveCase c = heave_case(index);
+    return {step07::sphere_heave_period(c.radius, c.draft, c.drag)};
+}
+const char* kHeaveDriver = R"(#include "step07_buoyancy/hull_forces.hpp"
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+int main(int argc, char** argv) {
+    const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
+    for (int index = 0; index < cases; ++index) {
+        std::mt19937 random(std::uint32_t(7000 + index));
+        std::uniform_real_distribution<double> zero_one(0, 1);
+        const double radius = 0.2 + 2.8 * zero_one(random);
+        const double draft = radius * (0.05 + 1.85 * zero_one(random));
+        const double drag = 0.6 * zero_one(random);
+        std::printf("%.17g\n", step07::sphere_heave_period(radius, draft, drag));
+    }
+}
+)";
 
 std::vector<Exercise> chapter() {
     return {
@@ -102,6 +140,33 @@ std::vector<Exercise> chapter() {
          {},
          [](const fs::path& work) {
              return check_cpp(work, "hull_forces.cpp", kBuoyancyDriver, 200, buoyancy_reference, 1e-9);
+         }},
+        // derived: the lesson linearises Archimedes for a box only; the sphere's spring comes from its cap
+        {"step07_buoyancy", 3, "A sphere's heave period", "hull_forces.cpp",
+         "double sphere_heave_period(double radius, double draft, double linear_drag) {",
+         "    // TODO (exercise 3): the period of the sphere's small heave about its rest.\n"
+         "    (void)radius, (void)draft, (void)linear_drag;\n"
+         "    return 0;\n",
+         "Write sphere_heave_period (C++, in hull_forces.cpp; section 3): the program's buoy is a sphere\n"
+         "of this radius, floating at rest with the water `draft` above its lowest point. Raised a little\n"
+         "and let go on still water, it heaves up and down. Section 3 finds a box's heave period: it\n"
+         "writes Newton's law for the height above the rest, with Archimedes' push, the weight and the\n"
+         "drag (per kilogram of water displaced, linear_drag, which at rest is the body's mass), and\n"
+         "keeps the terms of first order in the height. Do the same for the sphere, with its spherical\n"
+         "cap (spherical_cap_volume): how much more water does it displace when it sinks a little\n"
+         "further? Return the period in seconds of the damped oscillation (infinity if the drag leaves\n"
+         "none). ./ocean check compiles your file with a small program and compares 200 spheres, radius\n"
+         "0.2 to 3 m, drafts from 0.05 to 1.9 radii; tests/test_floating_body.cpp holds the program's\n"
+         "own buoy, raised 2 cm, to your formula.",
+         "g / d is the box's: its water line cuts the same area at every draft, so its volume is that area "
+         "times d. A sphere's spring is rho_w g times the area its water line cuts at this draft, its mass "
+         "rho_w times its cap's volume, and the drag still takes c^2 / 4 off omega^2.",
+         "S = pi d (2 r - d) (the disc at the water line, dV/dd), V = pi d^2 (3 r - d) / 3; "
+         "omega^2 = g S / V - c^2 / 4 = 3 g (2 r - d) / (d (3 r - d)) - c^2 / 4; "
+         "period = 2 pi / sqrt(omega^2), infinity if omega^2 <= 0",
+         {},
+         [](const fs::path& work) {
+             return check_cpp(work, "hull_forces.cpp", kHeaveDriver, 200, heave_reference, 1e-9);
          }},
     };
 }

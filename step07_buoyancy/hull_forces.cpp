@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace step07 {
 
@@ -38,6 +39,16 @@ double spherical_cap_volume(double radius, double draft) {
 glm::dvec3 sphere_buoyancy(double radius, double centre_y, double water_line) {
     const double volume = spherical_cap_volume(radius, water_line - (centre_y - radius));
     return {0.0, kWaterDensity * ocean::kGravity * volume, 0.0};
+}
+
+double sphere_heave_period(double radius, double draft, double linear_drag) {
+    // Raised y above its rest, the cap gains the waterplane's disc times y: the spring rho_w g S
+    // against the mass rho_w V(draft) that the rest displaces, S = dV/d(draft).
+    const double waterplane = ocean::kPi * draft * (2 * radius - draft);
+    const double omega_squared = ocean::kGravity * waterplane / spherical_cap_volume(radius, draft) -
+                                 0.25 * linear_drag * linear_drag;
+    if (omega_squared <= 0) return std::numeric_limits<double>::infinity();
+    return 2 * ocean::kPi / std::sqrt(omega_squared);
 }
 
 }  // namespace step07

@@ -1,7 +1,7 @@
-// Chapter 3 on the GPU (fbm.hpp is the CPU reference): cascades of fBm waves, each wave a sine
-// or exp(sin - 1), with domain warping and the exact gradient of the warped sum.
+// Chapter 3 on the GPU (fbm.hpp is the CPU reference): cascades of fBm waves, each wave a sine,
+// exp(sin - 1) or ((1 + sin) / 2)^3, with domain warping and the exact gradient of the warped sum.
 #ifndef SHAPE
-#define SHAPE 1  // 0: sin, 1: exp(sin - 1). A compile-time choice, like step03's variants.
+#define SHAPE 1  // 0: sin, 1: exp(sin - 1), 2: ((1 + sin) / 2)^3. A compile-time choice, like step03's variants.
 #endif
 
 const int MAX_CASCADES = 4;
@@ -21,12 +21,23 @@ uniform int u_cascade_count;
 uniform int u_waves_per_cascade;
 uniform float u_warp;  // beta: the point moves by beta a grad f of each wave before (dimensionless)
 
+// (W, W', W'') of GPU Gems 1's sharpened sine, ((1 + sin theta) / 2)^3, scaled to the exp-sine's
+// crest-to-trough height 1 - e^-2 and less its mean over a period (fbm.hpp's power_sine_shape is
+// the CPU reference).
+vec3 power_sine_shape(float theta) {
+    float s = sin(theta), c = cos(theta), u = 0.5 * (1.0 + s);
+    const float SCALE = 0.86466472;  // 1 - e^-2
+    return SCALE * vec3(u * u * u - 0.3125, 1.5 * u * u * c, 1.5 * (u * c * c - u * u * s));
+}
+
 // (W, W', W'') at theta.
 vec3 wave_shape(float theta) {
     float s = sin(theta), c = cos(theta);
 #if SHAPE == 0
     const float SINE_SCALE = 0.43233236;  // (1 - e^-2) / 2: the exp-sine's crest-to-trough height
     return SINE_SCALE * vec3(s, c, -s);
+#elif SHAPE == 2
+    return power_sine_shape(theta);
 #else
     float e = exp(s - 1.0);
     const float MEAN = 0.46575961;  // e^-1 I0(1): subtracted so the sea's mean level is y = 0

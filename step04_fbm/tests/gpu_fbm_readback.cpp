@@ -1,5 +1,5 @@
 // step04 on the GPU against its CPU reference: positions and exact normals of the warped fBm
-// cascades, captured from the real ocean.vert, for both wave shapes.
+// cascades, captured from the real ocean.vert, for the three wave shapes.
 // Tolerances: heights 1e-4 m (a sum of 2 x 48 single-precision terms, amplitudes <= 1.2 m),
 // normals 2e-3 (wave 47 is 1.7 cm long: single-precision angles reach 15000 rad at 40 m).
 #include "common/grid.hpp"
@@ -22,7 +22,7 @@ TEST_F(FbmReadback, WarpedCascadesMatchTheCpu) {
     const auto rest = ocean::grid_positions({80.0f, 80.0f}, quads, quads);
     step04::FbmUniforms uniforms;
 
-    for (int shape : {0, 1}) {
+    for (int shape : {0, 1, 2}) {
         ocean::ShaderProgram program("ocean", {OCEAN_SOURCE_DIR "/step04_fbm/shaders/ocean.vert"},
                                      {"v_world_position", "v_normal"}, {"SHAPE " + std::to_string(shape)});
         ASSERT_FALSE(program.build()) << program.last_error();

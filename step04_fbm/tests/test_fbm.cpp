@@ -14,7 +14,7 @@ using step04::Shape;
 
 TEST(Step04Shape, ExpSineDerivativesMatchCentralDifferences) {
     const double h = 1e-5;
-    for (Shape shape : {Shape::Sine, Shape::ExpSine})
+    for (Shape shape : {Shape::Sine, Shape::ExpSine, Shape::PowerSine})
         for (double theta : {-3.0, -1.2, 0.0, 0.4, 1.5707963, 2.9, 6.0}) {
             const auto v = step04::wave_shape(shape, theta);
             const auto plus = step04::wave_shape(shape, theta + h), minus = step04::wave_shape(shape, theta - h);
@@ -35,7 +35,8 @@ TEST(Step04Shape, EveryShapeHasZeroMeanSoTheSeaRestsAtZero) {
     double i0 = 0, term = 1;
     for (int k = 0; k < 30; ++k) i0 += term, term *= 0.25 / double((k + 1) * (k + 1));
     EXPECT_NEAR(step04::kExpSineMean, i0 / std::exp(1.0), 1e-15);
-    for (Shape shape : {Shape::Sine, Shape::ExpSine}) {
+    // ((1 + sin) / 2)^3 (exercise 4) has its mean taken out too: the rule holds power_sine_shape's.
+    for (Shape shape : {Shape::Sine, Shape::ExpSine, Shape::PowerSine}) {
         const int samples = 4096;  // the trapezoid rule is spectrally exact for periodic functions
         double mean = 0;
         for (int i = 0; i < samples; ++i) mean += step04::wave_shape(shape, step04::kTwoPi * i / samples).value;
@@ -132,7 +133,7 @@ TEST(Step04Fbm, WarpedGradientIsExact) {
     s.wave_count = 32;
     const auto cascades = step04::make_cascades(s, 2, 0.37);
     const double h = 1e-5;
-    for (Shape shape : {Shape::Sine, Shape::ExpSine})
+    for (Shape shape : {Shape::Sine, Shape::ExpSine, Shape::PowerSine})
         for (double warp : {0.0, 2.0, 6.0})
             for (double x : {-20.0, 0.0, 13.3})
                 for (double z : {-9.0, 4.4}) {
@@ -177,17 +178,17 @@ TEST(Step04Cascades, EachHasItsOwnScaleAndSeed) {
 
 }  // namespace
 
-// The two shapes compare seas of the same height: found by search over a period, each spans
+// The shapes compare seas of the same height: found by search over a period, each spans
 // 1 - e^-2 = 0.8647 from crest to trough (an unscaled sine would span 2, 2.3 times more).
 TEST(Step04Shape, BothShapesSpanTheSameCrestToTroughHeight) {
-    for (Shape shape : {Shape::Sine, Shape::ExpSine}) {
+    for (Shape shape : {Shape::Sine, Shape::ExpSine, Shape::PowerSine}) {
         double low = 1e9, high = -1e9;
         for (int i = 0; i < 100000; ++i) {
             const double v = step04::wave_shape(shape, 2 * M_PI * i / 100000).value;
             low = std::min(low, v);
             high = std::max(high, v);
         }
-        EXPECT_NEAR(high - low, 1 - std::exp(-2.0), 1e-9) << (shape == Shape::Sine ? "sine" : "exp-sine");
+        EXPECT_NEAR(high - low, 1 - std::exp(-2.0), 1e-9) << int(shape);
     }
 }
 

@@ -1,4 +1,5 @@
 // Chapter 4's spectrum and its CPU transforms, in double precision.
+#include "step05_fft/donelan_banner.hpp"
 #include "step05_fft/ocean_maps.hpp"
 #include "step05_fft/spectrum.hpp"
 #include "step03_lighting/normals.hpp"
@@ -48,19 +49,48 @@ TEST(Step05Jonswap, PeakIsAtOmegaP) {
 
 TEST(Step05Spreading, IntegratesToOne) {
     const double peak = 0.8;
-    for (double ratio : {0.3, 1.0, 2.5})
-        for (double spread : {0.0, 0.2, 1.0})
-            for (double swell : {0.0, 0.5, 1.0}) {
-                const int steps = 20000;
-                double sum = 0;
-                for (int i = 0; i < steps; ++i) {
-                    const double theta = -kPi + 2 * kPi * (i + 0.5) / steps;
-                    sum += directional_spreading(ratio * peak, theta, peak, 10.0, spread, swell) * 2 * kPi / steps;
+    for (Spreading spreading : {Spreading::Hasselmann, Spreading::DonelanBanner})
+        for (double ratio : {0.3, 0.7, 1.0, 2.5, 8.0})
+            for (double spread : {0.0, 0.2, 1.0})
+                for (double swell : {0.0, 0.5, 1.0}) {
+                    const int steps = 20000;
+                    double sum = 0;
+                    for (int i = 0; i < steps; ++i) {
+                        const double theta = -kPi + 2 * kPi * (i + 0.5) / steps;
+                        sum += directional_spreading(ratio * peak, theta, peak, 10.0, spread, swell, spreading) * 2 *
+                               kPi / steps;
+                    }
+                    // 1e-5, not machine precision: for omega << omega_p the exponent s is ~0.05 and
+                    // |cos(theta/2)|^2s has a cusp at theta = pi that slows the midpoint rule down.
+                    EXPECT_NEAR(sum, 1.0, 1e-5) << int(spreading) << " " << ratio << " " << spread << " " << swell;
                 }
-                // 1e-5, not machine precision: for omega << omega_p the exponent s is ~0.05 and
-                // |cos(theta/2)|^2s has a cusp at theta = pi that slows the midpoint rule down.
-                EXPECT_NEAR(sum, 1.0, 1e-5) << ratio << " " << spread << " " << swell;
-            }
+}
+
+TEST(Step05Spreading, TheSech2LobeIsNormalisedOnTheCircle) {
+    // Exercise 10's function against the midpoint rule over [-pi, pi], from a lobe that reaches
+    // round the circle (beta 0.05: nearly even; 0.40, Banner's short waves) to a narrow one (20).
+    // Normalised over the whole line instead (beta / 2) the short waves' lobe would hold 0.85 of
+    // their energy, and beta 0.05's a sixth.
+    for (double beta : {0.05, 0.4, 1.0, 2.28, 20.0}) {
+        const int steps = 200000;
+        double sum = 0;
+        for (int i = 0; i < steps; ++i) sum += sech2_spreading(-kPi + 2 * kPi * (i + 0.5) / steps, beta) * 2 * kPi / steps;
+        EXPECT_NEAR(sum, 1.0, 1e-9) << "beta " << beta;
+        EXPECT_GT(sech2_spreading(0.0, beta), sech2_spreading(1.0, beta)) << "peaked along the wind";
+        EXPECT_NEAR(sech2_spreading(0.7, beta), sech2_spreading(-0.7, beta), 1e-15) << "symmetric";
+    }
+}
+
+TEST(Step05Spreading, DonelanBannerIsNarrowestAtThePeak) {
+    // Donelan et al. (1985): beta = 2.61 r^1.3 below the peak (r = omega / omega_p), 2.28 r^-1.3
+    // above it, continuous at r = 0.95; Banner (1990) beyond r = 1.6, falling towards 10^-0.4.
+    EXPECT_NEAR(donelan_banner_beta(0.9, 1.0), 2.61 * std::pow(0.9, 1.3), 1e-12);
+    EXPECT_NEAR(donelan_banner_beta(0.95 - 1e-9, 1.0), donelan_banner_beta(0.95, 1.0), 0.01);
+    EXPECT_NEAR(donelan_banner_beta(1.0, 1.0), 2.28, 1e-12);
+    EXPECT_GT(donelan_banner_beta(1.0, 1.0), donelan_banner_beta(1.3, 1.0));
+    EXPECT_GT(donelan_banner_beta(1.3, 1.0), donelan_banner_beta(3.0, 1.0));
+    EXPECT_NEAR(donelan_banner_beta(1e4, 1.0), std::pow(10.0, -0.4), 0.01);
+    EXPECT_LE(donelan_banner_beta(1e-3, 1.0), 100.0) << "capped far below the peak";
 }
 
 TEST(Step05Spreading, DownwindMoreThanUpwindAndSwellNarrows) {

@@ -102,5 +102,18 @@ refuses warp-jacobian-untransposed step04_fbm 3 fbm.glsl '    total.yz += slope;
 refuses overlapping-bands step06_foam_sky 7 cascade_bands.cpp \
   '    for (int c = 0; c < kCascades; ++c) bands\[std::size_t(c)\] = {0.0, ocean::kPi \* resolution / patch_sizes\[std::size_t(c)\]};' \
   '    for (int c = 0; c < kCascades; ++c) bands[std::size_t(c)] = {c == 0 ? 0.0 : 2 * ocean::kPi * kWavesPerTileAtBoundary / patch_sizes[std::size_t(c)], ocean::kPi * resolution / patch_sizes[std::size_t(c)]};'
+# GPU Gems' cubed sine centred on the middle of its range, 1/2, not on its mean over a period, 5/16:
+# the sea floats down (step04 4).
+refuses power-sine-middle step04_fbm 4 fbm.glsl '    return vec3(sin(theta), cos(theta), -sin(theta));' \
+  '    float s = sin(theta), c = cos(theta), u = 0.5 * (1.0 + s);\n    return 0.86466472 * vec3(u * u * u - 0.5, 1.5 * u * u * c, 1.5 * (u * c * c - u * u * s));' \
+  'power_sine_shape(a.x).x'
+# sech^2 normalised over the whole line (beta / 2), as if the lobe ended before +-pi: the short
+# waves' wide lobes lose energy (step05 10).
+refuses sech2-whole-line step05_fft 10 donelan_banner.cpp '    return 0;' \
+  '    const double sech = 1 / std::cosh(beta * theta); return beta / 2 * sech * sech;' 'value 0'
+# A sphere heaving with the box's period, 2 pi / sqrt(g / d - c^2 / 4), as if its waterplane were
+# the same at every draft (step07 3).
+refuses box-heave-sphere step07_buoyancy 3 hull_forces.cpp '    return 0;' \
+  '    return 2 * ocean::kPi / std::sqrt(ocean::kGravity / draft - 0.25 * linear_drag * linear_drag);' 'value 0'
 [ "$count" -gt 0 ] || { echo "FAIL: no exercises listed"; status=1; }
 exit $status
