@@ -62,12 +62,12 @@ std::vector<Exercise> chapter() {
                  },
                  1e-4, -20, 20, set_step01_waves);
          }},
-        // derived: the README derives the slope once; the bend is the same chain rule taken again, whose result no page gives
+        // derived: exercise 2 takes the slope by the chain rule; the bend is the same chain rule taken again, whose result no page gives
         {"step01_sine2d", 3, "The curvature of a sine", "sine_sum.glsl", "float wave_curvature(int i, float x) {",
          "    // TODO (exercise 3): d2/dx2 of wave i's height at x.\n    return 0.0;\n",
          "Write wave_curvature: how fast wave i's slope (exercise 2) itself changes along x, the second\n"
          "derivative of a sin(x w + phase); where the slopes are gentle, as on the sea, it is the curvature,\n"
-         "how sharply the surface bends. Derive it with the lesson's method: the chain rule, once more, on\n"
+         "how sharply the surface bends. Derive it with exercise 2's method: the chain rule, once more, on\n"
          "your slope. What does the inside bring out this time, and which way does the result point at a\n"
          "crest? Then compare the waves: which of them makes most of the sum's bend? The step runs with\n"
          "show_curvature, which draws the sum's curvature in pink on the same axis (1/m): a flat line on\n"
