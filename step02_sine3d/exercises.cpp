@@ -57,15 +57,16 @@ std::vector<Exercise> chapter() {
                  1e-4, -1, 1);
          }},
         // derived: the README measures a wave's phase along a direction; a ring's, and how its height falls as it spreads, no page gives
-        {"step02_sine3d", 3, "A ripple from a stone", "ripple.glsl", "float ripple_height(vec2 xz) {",
+        {"step02_sine3d", 3, "A ring from a bobbing source", "ripple.glsl", "float ripple_height(vec2 xz) {",
          "    // TODO (exercise 3): the height of the ring of waves at xz.\n    return 0.0;\n",
-         "Write ripple_height: a stone dropped at c sends out a ring of waves. Exercise 1's wave measures how\n"
-         "far along its direction d a point lies; a ring's crests are circles about c instead, travelling\n"
-         "outwards: what distance takes the place of dot(d, xz)? Then its height: a crest's energy, which\n"
+         "Write ripple_height: a source bobbing up and down at c sends out a steady ring of waves of one\n"
+         "wavelength. Exercise 1's wave measures how far along its direction d a point lies; a ring's crests\n"
+         "are circles about c instead, travelling outwards: what distance takes the place of dot(d, xz)?\n"
+         "Then its height: a crest's energy, which\n"
          "grows as the square of the amplitude, is spread round a circle that grows as the ring spreads,\n"
          "and none is lost. Derive how the amplitude must fall with the distance r so that the energy\n"
          "crossing every circle is the same, given that it is u_ripple.w one wavelength from c; nearer\n"
-         "than that (the splash itself) keep it u_ripple.w. u_ripple = (c.x, c.z, w, a), the phase -t phi\n"
+         "than that (the source itself) keep it u_ripple.w. u_ripple = (c.x, c.z, w, a), the phase -t phi\n"
          "in u_ripple_phase. The step runs with a ripple (ripple_amplitude): without it, none.",
          "The crest's circle is 2 pi r long: the energy per metre of crest falls as 1 / r, and the "
          "energy goes as the amplitude squared. The wavelength is 2 pi / w.",
