@@ -101,17 +101,18 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 3): Phong's glint: the sun mirrored about the normal, against the eye.\n"
          "    return 0.0;\n",
          "Write phong_specular, Phong's glint, older than Blinn-Phong's: a mirror sends the sun's light (towards\n"
-         "u_to_sun, L) off along one direction R, and the glint is the eye's direction (to_eye, V) against R,\n"
-         "raised to an exponent. First find R from L and the unit normal: split L into its part along the\n"
-         "normal and its part across it; a mirror keeps one and turns the other round. Then the exponent: at\n"
-         "the same u_shininess s Phong's lobe is much wider than Blinn-Phong's. For an eye in the plane of\n"
-         "N and L, compare the angle between R and V with the angle between N and H, and choose the exponent\n"
+         "u_to_sun, L) off along one direction M, the sun mirrored about the normal (the README's figure draws\n"
+         "R, the eye mirrored, instead), and the glint is the eye's direction (to_eye, V) against M, raised to\n"
+         "an exponent. First find M from L and the unit normal: split L into its part along the normal and its\n"
+         "part across it; a mirror keeps one and turns the other round. Then the exponent: at the same\n"
+         "u_shininess s Phong's lobe is much narrower than Blinn-Phong's. For an eye in the plane of\n"
+         "N and L, compare the angle between M and V with the angle between N and H, and choose the exponent\n"
          "so that both glints fall off alike near their top (expand the cosines for small angles). No glint\n"
          "from a sun behind the surface. The step runs with specular=phong and view=specular: a black sea\n"
          "until you write it, then glints close to Blinn-Phong's (specular=blinn_phong) in size, but rounder.",
-         "L's part along the normal is (N.L) N; R keeps it and turns the rest round. When the eye moves by "
-         "an angle x from R, the halfway vector moves by only x / 2 from N; and ln cos x is about -x^2 / 2.",
-         "R = 2 (N.L) N - L; phong_specular = N.L > 0 ? max(R.V, 0)^(s / 4) : 0, i.e. "
+         "L's part along the normal is (N.L) N; M keeps it and turns the rest round. When the eye moves by "
+         "an angle x from M, the halfway vector moves by only x / 2 from N; and ln cos x is about -x^2 / 2.",
+         "M = 2 (N.L) N - L; phong_specular = N.L > 0 ? max(M.V, 0)^(s / 4) : 0, i.e. "
          "pow(max(dot(2.0 * dot(normal, u_to_sun) * normal - u_to_sun, to_eye), 0.0), 0.25 * u_shininess): "
          "cos(2x)^(s/4) and cos(x)^s are both about exp(-s x^2 / 2)",
          {"--set", "specular=phong", "--set", "view=specular"},

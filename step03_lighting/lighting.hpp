@@ -50,8 +50,8 @@ inline LightTerms light_terms(const Vec3& normal, const Vec3& to_eye, const Ligh
 }
 
 // Phong's glint (lighting.glsl's phong_specular, the step's specular=phong): the sun mirrored about
-// the normal, R = 2 (N.L) N - L, against the eye, (max(R.V, 0))^(shininess / 4). In the plane of N
-// and L the angle from R to V is twice the angle from N to H, and cos(2x)^(s/4) ~ cos(x)^s ~
+// the normal, M = 2 (N.L) N - L, against the eye, (max(M.V, 0))^(shininess / 4). In the plane of N
+// and L the angle from M to V is twice the angle from N to H, and cos(2x)^(s/4) ~ cos(x)^s ~
 // exp(-s x^2 / 2) near the top: the same glint as Blinn-Phong's there. Zero where N.L <= 0.
 inline double phong_specular(const Vec3& normal, const Vec3& to_eye, const Light& light) {
     const double n_dot_l = dot(normal, light.to_sun);

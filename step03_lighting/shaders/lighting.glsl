@@ -27,7 +27,7 @@ LightTerms light_terms(vec3 normal, vec3 to_eye) {
 float phong_specular(vec3 normal, vec3 to_eye) {
     float facing = dot(normal, u_to_sun);
     vec3 mirrored_sun = 2.0 * facing * normal - u_to_sun;
-    // Seen in the plane of N and L, R is as far from V as twice H is from N: cos(2x)^(s/4) and
-    // cos(x)^s fall alike near the top, both close to exp(-s x^2 / 2).
+    // Seen in the plane of N and L, M (mirrored_sun) is as far from V as twice H is from N:
+    // cos(2x)^(s/4) and cos(x)^s fall alike near the top, both close to exp(-s x^2 / 2).
     return facing > 0.0 ? pow(max(dot(mirrored_sun, to_eye), 0.0), 0.25 * u_shininess) : 0.0;
 }
