@@ -17,7 +17,7 @@ bool outside_frustum(vec2 lo, vec2 hi) {
     vec3 box_min = vec3(lo.x - r, -r, lo.y - r), box_max = vec3(hi.x + r, r, hi.y + r);
     for (int i = 0; i < 6; ++i) {
         vec4 plane = u_frustum[i];
-        vec3 farthest = mix(box_min, box_max, greaterThan(plane.xyz, vec3(0.0)));  // most inside corner
+        vec3 farthest = mix(box_min, box_max, greaterThan(plane.xyz, vec3(0.0)));  // farthest along the inward normal
         if (dot(plane.xyz, farthest) + plane.w < 0.0) return true;
     }
     return false;
