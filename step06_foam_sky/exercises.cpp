@@ -78,7 +78,7 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 1): how much light the water reflects, seen at cos_theta from the normal.\n"
          "    return 0.0;\n",
          "Write fresnel_schlick: the share of light the water reflects, seen at cos_theta from the normal\n"
-         "(section 5). Schlick's approximation blends two ends: looking straight down (cos theta = 1) water\n"
+         "(light.md, section 3). Schlick's approximation blends two ends: looking straight down (cos theta = 1) water\n"
          "reflects f0 (0.02), at grazing (cos theta = 0) it reflects everything; between them the weight of\n"
          "'everything' grows as the fifth power of how far the view is from head-on, 1 - cos theta. Write the\n"
          "blend so that both ends come out right, and keep cos theta in [0, 1] (a normal bent past 90 degrees\n"
@@ -98,7 +98,7 @@ std::vector<Exercise> chapter() {
          "vec3 specular_term(vec3 n, vec3 v, vec3 l, Roughness r, float f0, vec3 sun) {",
          "    // TODO (exercise 2): the sun's light that the microfacets reflect towards v.\n"
          "    return vec3(0.0);\n",
-         "Write specular_term from the parts above it in shading.glsl (section 5): the sun's light that the\n"
+         "Write specular_term from the parts above it in shading.glsl (light.md, section 3): the sun's light that the\n"
          "water's microfacets mirror towards the eye. Only the facets whose normal is the halfway vector H\n"
          "between v and l send the sun into the eye: D counts how many face H (anisotropic_distribution), G\n"
          "how many of those are neither shadowed from l nor hidden from v (Smith's height-correlated masking,\n"
@@ -129,17 +129,17 @@ std::vector<Exercise> chapter() {
          "float foam_step(float foam, float injection_rate, float decay_rate, float dt) {",
          "    // TODO (exercise 3): the foam after dt seconds. The starter is the explicit step.\n"
          "    return clamp(foam * exp(-decay_rate * dt) + injection_rate * dt, 0.0, 1.0);\n",
-         "Write foam_step: the foam after a frame of dt seconds (section 2). The foam f obeys df/dt = q - r f:\n"
+         "Write foam_step: the foam after a frame of dt seconds (foam.md, section 3). The foam u obeys du/dt = q - r u:\n"
          "made at the rate q = injection_rate, fading at the rate r = decay_rate, both held through the frame.\n"
          "The starter takes one explicit step, whose result depends on dt. Solve the equation exactly over the\n"
-         "frame from f(0) = foam instead (a linear equation of the first order: f relaxes exponentially towards\n"
+         "frame from u(0) = foam instead (a linear equation of the first order: u relaxes exponentially towards\n"
          "the level where making and fading balance), then clamp to [0, 1]. The step runs on a fixed 0.2 s a\n"
          "frame (--dt 0.2: five frames a second of sea time, whatever your screen's rate) with foam that fades\n"
          "fast (foam_decay=10) and forms easily (foam_threshold=1): there the starter makes about twice the\n"
          "foam. Try --dt 0.02 as well: the exact step's foam does not change.",
          "For r dt -> 0 your step must tend to foam + q dt, and for r dt -> infinity to q / r. Mind r = 0 and "
          "float's cancellation in 1 - e^{-x} for small x: exp_mean.glsl's mean_of_exp handles both.",
-         "f(dt) = foam e^{-r dt} + q (1 - e^{-r dt}) / r = foam * exp(-x) + injection_rate * dt * mean_of_exp(x), "
+         "u(dt) = foam e^{-r dt} + q (1 - e^{-r dt}) / r = foam * exp(-x) + injection_rate * dt * mean_of_exp(x), "
          "x = decay_rate * dt (mean_of_exp(x) = (1 - e^{-x}) / x, in exp_mean.glsl); clamped to [0, 1]",
          {"--dt", "0.2", "--set", "foam_decay=10", "--set", "foam_threshold=1"},
          [](const fs::path& work) {
@@ -157,7 +157,7 @@ std::vector<Exercise> chapter() {
         {"step06_foam_sky", 4, "The tessellation level", "tessellation.glsl", "float edge_level(vec2 a, vec2 b) {",
          "    // TODO (exercise 4): how many segments the edge from a to b (x, z, at y = 0) is cut into.\n"
          "    return 16.0;\n",
-         "Write edge_level: how many segments the edge from a to b (x, z, at y = 0) is cut into (section 4). A\n"
+         "Write edge_level: how many segments the edge from a to b (x, z, at y = 0) is cut into (sea.md, section 2). A\n"
          "segment should cover about the same part of the screen wherever the edge lies. How does an edge's\n"
          "size on screen fall with its distance from the eye (u_eye)? Make the level follow that, scaled by\n"
          "u_tess_scale * u_tess_patch_size, and clamp it to [1, 64] (GL's guaranteed maximum). Two patches share\n"
@@ -188,7 +188,7 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 5): GGX's D(h). The starter is step03's Blinn-Phong lobe, not normalised.\n"
          "    return pow(max(n_dot_h, 0.0), 2.0 / (alpha * alpha) - 2.0);\n",
          "Write ggx_distribution: D(h), the density of microfacet normals around h for slopes of spread alpha\n"
-         "(section 5). GGX's shape in N.H is 1 / ((N.H)^2 (alpha^2 - 1) + 1)^2: flat for a rough sea, a tall\n"
+         "(light.md, section 3). GGX's shape in N.H is 1 / ((N.H)^2 (alpha^2 - 1) + 1)^2: flat for a rough sea, a tall\n"
          "narrow peak at N.H = 1 for a smooth one. D must also be normalised: the integral of D (N.H) over the\n"
          "hemisphere is 1 (the facets' projected area is the surface's), so a rougher sea spreads the sun's\n"
          "glint wider and dimmer without making light. Derive the factor that normalises the shape (integrate\n"
@@ -209,16 +209,16 @@ std::vector<Exercise> chapter() {
         {"step06_foam_sky", 6, "Height fog", "fog.glsl", "vec3 apply_fog(vec3 colour, vec3 eye, vec3 p, vec3 fog_colour) {",
          "    // TODO (exercise 6): fog between the eye and p. The starter's fog is as thick at any height.\n"
          "    return mix(fog_colour, colour, exp(-u_fog_density * length(p - eye)));\n",
-         "Write apply_fog: the fog between the eye and the point p (section 6). Its density falls with\n"
-         "height, rho(y) = u_fog_density e^{-u_fog_falloff y}. Light from p reaches the eye dimmed by e^{-tau},\n"
+         "Write apply_fog: the fog between the eye and the point p (air.md, section 1). Its density falls with\n"
+         "height, rho(y) = u_fog_density e^{-beta y}, beta = u_fog_falloff. Light from p reaches the eye dimmed by e^{-tau},\n"
          "tau the density summed along the segment from the eye to p (the optical depth), and fog_colour makes\n"
          "up the rest. Parametrise the segment, integrate the exponential in closed form, and mind the level\n"
          "ray (p.y = eye.y), whose limit is finite. The step looks straight down from 150 m (--camera top):\n"
          "the starter's fog, as thick up there as on the water, greys the whole sea.",
-         "A level ray must give tau = density e^{-f y} |p - eye|, not a division by zero; exp_mean.glsl's "
+         "A level ray must give tau = u_fog_density e^{-beta eye.y} |p - eye|, not a division by zero; exp_mean.glsl's "
          "mean_of_exp(x) = (1 - e^{-x}) / x takes that limit for you.",
-         "tau = u_fog_density e^{-f eye.y} |p - eye| (1 - e^{-f dy}) / (f dy), f = u_fog_falloff, dy = p.y - eye.y "
-         "(= u_fog_density * exp(-f * eye.y) * length(p - eye) * mean_of_exp(f * dy)); "
+         "tau = u_fog_density e^{-beta eye.y} |p - eye| (1 - e^{-beta dy}) / (beta dy), beta = u_fog_falloff, dy = p.y - eye.y "
+         "(= u_fog_density * exp(-beta * eye.y) * length(p - eye) * mean_of_exp(beta * dy)); "
          "return mix(fog_colour, colour, exp(-tau))",
          {"--camera", "top"},
          [](const fs::path& work) {
@@ -240,8 +240,8 @@ std::vector<Exercise> chapter() {
          "    std::array<Band, kCascades> bands{};\n"
          "    for (int c = 0; c < kCascades; ++c) bands[std::size_t(c)] = {0.0, ocean::kPi * resolution / patch_sizes[std::size_t(c)]};\n"
          "    return bands;\n",
-         "Write cascade_bands (C++, in cascade_bands.cpp; section 1): which wavenumbers |k| each\n"
-         "cascade keeps. Four tiles of sides L_0 > L_1 > L_2 > L_3 (patch_sizes), each an N x N grid (N =\n"
+         "Write cascade_bands (C++, in cascade_bands.cpp; sea.md, section 1): which wavenumbers |k| each\n"
+         "cascade keeps. Four tiles of sides l_0 > l_1 > l_2 > l_3 (patch_sizes; the chapter writes l_c), each an N x N grid (N =\n"
          "resolution), each resolve the waves from their tile's longest up to the shortest their grid can\n"
          "hold. Stacked as they are (the notes' 5.4, and the starter), every wavelength two tiles share is\n"
          "counted twice or more, and the sea comes out up to four times too energetic. Give each cascade a\n"
@@ -250,8 +250,8 @@ std::vector<Exercise> chapter() {
          "kWavesPerTileAtBoundary wavelengths (well resolved by the cascade before); the last band ends at\n"
          "the shortest wave the last grid resolves. Derive each boundary's wavenumber. ./ocean check compiles\n"
          "your file with a small program and compares 200 sets of tiles and grids with the chapter's split.",
-         "A boundary is one number that ends band c - 1 and starts band c. A wave of wavelength lambda has "
-         "k = 2 pi / lambda; a grid of N points over L resolves waves down to two points long.",
+         "A boundary is one number that ends band c - 1 and starts band c. A wave's wavenumber is "
+         "k = 2 pi / its wavelength; a grid of N points over a tile l_c resolves waves down to two points long.",
          "low_0 = 0; low_c = 2 pi kWavesPerTileAtBoundary / patch_sizes[c] (c > 0) and high_{c-1} = low_c; "
          "high_3 = pi resolution / patch_sizes[3] (ocean::kPi)",
          {},
