@@ -202,9 +202,10 @@ std::vector<Exercise> chapter() {
          "    return (6.2831853 / patch_size) * vec2(texel);\n",
          "Write wave_vector: which wave vector k does texel (i, j) of the N x N spectrum hold? On a tile of side\n"
          "L only whole numbers of wavelengths fit, so k = 2 pi (n, m) / L. An FFT of N points cannot tell\n"
-         "frequency n from n - N (e^{2 pi i n x / N} is the same at every sample x): decide which of the two each\n"
-         "texel must mean so that the spectrum holds as many waves running one way as the other. The step runs\n"
-         "the GPU FFT (backend=gpu_fft) so that your shader is used.",
+         "frequency n from n - N (e^{2 pi i n x / N} is the same at every sample x); the README's primer lays\n"
+         "out the FFT's order (its table for N = 8): translate it to GLSL for any N. Texel N/2, the Nyquist\n"
+         "frequency, means -N/2 (the check expects k = -(N/2) 2 pi / L there). The step runs the GPU FFT\n"
+         "(backend=gpu_fft) so that your shader is used.",
          "The texels are in the FFT's order, not centred: texel 0 is k = 0, texel 1 is +2 pi / L, and texel N - 1 "
          "is the wave next to k = 0 on the other side.",
          "n = i for i < N/2, n = i - N for i >= N/2 (the same for m); k = (2 pi / L) (n, m)",
@@ -220,8 +221,8 @@ std::vector<Exercise> chapter() {
          }},
         {"step05_fft", 4, "The phase: a mode in time", "mode.glsl", "vec2 evolve_mode(vec2 h0_k, vec2 h0_minus_k, float phase) {",
          "    // TODO (exercise 4): h~(k, t) from h0(k), h0(-k) and phase = omega t.\n    return h0_k;\n",
-         "Write evolve_mode: the mode at time t, from h0(k), h0(-k) and phase = omega t. Two requirements fix it:\n"
-         "each wave travels along +k (a crest at k.x - omega t = const moves forward as t grows), and the\n"
+         "Write evolve_mode, README section 2's mode at time t, in GLSL: from h0(k), h0(-k) and phase = omega t.\n"
+         "Check what you write against the two requirements section 2 builds it from: each wave travels along +k (a crest at k.x - omega t = const moves forward as t grows), and the\n"
          "spectrum stays Hermitian, h~(-k) = conj(h~(k)), so that the height the FFT makes is real. Build the\n"
          "term that moves h0(k) forward, then add the partner that makes the pair Hermitian. Complex numbers\n"
          "are vec2 (real, imaginary); complex_multiply is in ocean_layout.glsl. The starter is a frozen sea.",
@@ -243,8 +244,8 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 5): butterfly b of stage s, source -> target. For now, a copy.\n"
          "    target[element(layer, line, 2 * b)] = line_value(layer, line, 2 * b);\n"
          "    target[element(layer, line, 2 * b + 1)] = line_value(layer, line, 2 * b + 1);\n",
-         "Write radix2_butterfly, the heart of the plain FFT (README section 3 derives it). A transform of 2h\n"
-         "points is two transforms of h points, E of the even samples and O of the odd ones, joined by one\n"
+         "Write radix2_butterfly, the heart of the plain FFT (fft.md derives it). A transform of 2M\n"
+         "points is two transforms of M points, E of the even samples and O of the odd ones, joined by one\n"
          "complex multiplication per pair. After the bit-reversed read of stage 0 (line_value does it), stage s\n"
          "(M = 2^s) finds E and O side by side in every block of 2M elements. Butterfly b (0 <= b < N/2) is\n"
          "one frequency r of one block: work out from s and b which two elements it joins, which power of the\n"
@@ -253,17 +254,18 @@ std::vector<Exercise> chapter() {
          "r = b mod M; the block starts at 2M (b div M) = 2 (b - r). X[r] and X[r + M] share the same E[r] and "
          "O[r]: they differ only by the sign of the twiddled O. zeta = e^{2 pi i / (2M)} is twiddle entry N / (2M).",
          "M = 2^s, r = b & (M - 1), even = 2 (b - r) + r, odd = even + M, zeta^r = twiddle[r N / (2M)];\n"
-         "e = line_value(even), o = zeta^k line_value(odd); target[even] = e + o, target[odd] = e - o",
+         "e = line_value(even), o = zeta^r line_value(odd); target[even] = e + o, target[odd] = e - o",
          {"--set", "backend=gpu_fft", "--set", "fft=radix2"},
          [](const fs::path& work) { return check_fft(work, step05::GpuFftForm::Radix2); }},
         {"step05_fft", 6, "One radix-4 stage of the FFT", "fft.comp", "void radix4_stage(int t, int p, int from) {",
          "    // TODO (exercise 6): thread t's four butterflies of the stage of stride p, lines[from] -> lines[1 - from].\n"
          "    for (int j = 0; j < 4; ++j) lines[1 - from][t + j * QUARTER] = lines[from][t + j * QUARTER];\n",
-         "Write radix4_stage, the optimisation of exercise 5 (README section 3): split a transform four ways\n"
+         "Write radix4_stage, the optimisation of exercise 5 (fft.md section 3): split a transform four ways\n"
          "instead of two, so a 4-point DFT (factors 1, i, -1, -i: no multiplications) joins four quarter-size\n"
          "transforms, and half as many stages run, all in shared memory. In Stockham's order a stage of\n"
          "stride p reads its four inputs a quarter of the line apart and writes its outputs where the next\n"
-         "stage will read them, so no bit reversal is needed. Derive the index rule from the radix-2 one.",
+         "stage will read them, so no bit reversal is needed. Derive the index rule from fft.md's Stockham\n"
+         "radix-2 rule (item 1 of its section 3, not exercise 5's bit-reversed one), with four blocks for two.",
          "r = t mod p picks the twiddle, as in exercise 5. Twiddle the inputs before the 4-point DFT, not after; "
          "output q is a sum of the four inputs turned by q quarter turns per j.",
          "r = t & (p - 1); a_j = x[t + j N/4] zeta^(j r), zeta^(j r) = twiddle[j r N / (4 p)];\n"
@@ -277,7 +279,8 @@ std::vector<Exercise> chapter() {
          "Write packed_pairs: the spectra of the choppy displacement and of the slopes, packed two per transform.\n"
          "Every map is h~ times a factor: a derivative d/dx of e^{i k.x} is a factor i kx. The horizontal\n"
          "displacement is the height's phase turned by a quarter along u = k/|k|, towards the crest (README\n"
-         "section 4: derive its sign from one Gerstner wave). Pack two real maps a, b as a + i b (README 4.5):\n"
+         "section 4: derive its sign from one Gerstner wave). Pack two real maps a, b as a + i b (README\n"
+         "section 4, 'Two real maps per transform'):\n"
          "h + i Dx, Dz + i dh/dx, dh/dz + i dDx/dx, dDz/dz + i dDx/dz; zeros at k = 0. The starter is the height\n"
          "alone: round waves lit as if flat.",
          "i times a complex (x, y) is (-y, x). The notes' 4.5 writes D~ = -i u h~: round crests and folds in the "
@@ -291,16 +294,16 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 8): h0(k) from two standard normal numbers and the mode's energy Phi(k) dk^2.\n"
          "    return {0.0, 0.0};\n",
          "Write initial_amplitude (C++). The spectrum says how much energy each mode holds on average,\n"
-         "E = Phi(k) dk^2 (m^2 of height variance); a real sea is one random draw of it: each mode gets a\n"
+         "energy = Phi(k) dk^2 (m^2 of height variance); a real sea is one random draw of it: each mode gets a\n"
          "complex amplitude with a random phase and a random, Gaussian size. Scale a complex Gaussian\n"
          "(xi_real + i xi_imaginary, each of mean 0 and variance 1) so that the sea's height variance is the\n"
-         "spectrum's integral, sum E. Mind that the time evolution (exercise 4) adds conj(h0(-k)) to every\n"
+         "spectrum's integral, the sum of energy. Mind that the time evolution (exercise 4) adds conj(h0(-k)) to every\n"
          "mode: count how many copies of each mode's energy the height then holds. ./ocean check averages\n"
          "the height variance of 200 draws of the default sea (N = 64) and compares it with the integral.",
-         "E|xi_real + i xi_imaginary|^2 = 2. At t = 0, h~(k) = h0(k) + conj(h0(-k)): two independent draws. The notes' "
-         "sqrt(E / 2) makes the sea's variance twice the spectrum's.",
-         "h0(k) = (xi_real + i xi_imaginary) sqrt(E / 4): E|h0|^2 = E / 2, and with its partner E|h~(k)|^2 = "
-         "(E(k) + E(-k)) / 2, so sum |h~|^2 = sum E",
+         "E|xi_real + i xi_imaginary|^2 = 2 (E: the mean over many draws). At t = 0, h~(k) = h0(k) + conj(h0(-k)): two "
+         "independent draws. The notes' sqrt(energy / 2) makes the sea's variance twice the spectrum's.",
+         "h0(k) = (xi_real + i xi_imaginary) sqrt(energy / 4): E|h0|^2 = energy / 2, and with its partner E|h~(k)|^2 = "
+         "(energy(k) + energy(-k)) / 2, so sum E|h~|^2 = sum energy",
          {},
          [](const fs::path& work) {
              return check_cpp(work, "mode_amplitude.cpp", variance_driver(), 1,
@@ -313,7 +316,8 @@ std::vector<Exercise> chapter() {
          "    m.displacement = vec4(0.0, wave.w * cos(theta), 0.0, 0.0);\n"
          "    m.slopes = vec4(-wave.w * wave.z * wave.xy * sin(theta), 0.0, 0.0);\n"
          "    return m;\n",
-         "Write gerstner_wave (README section 4; GPU Gems 1, chapter 1). In a real wave the water moves in\n"
+         "Write gerstner_wave: README section 4's Gerstner wave, with Q, in the maps' form (GPU Gems 1, chapter 1;\n"
+         "steepness is Q: the step passes gerstner_steepness / (k A)). In a real wave the water moves in\n"
          "circles: each point rises at the crest and moves forward there, sinks in the trough and moves\n"
          "back. So a Gerstner wave moves the point of rest position p up by A cos(theta) and also sideways,\n"
          "along the wave's direction d, by Q A times a quarter-turned copy of the same oscillation. Find\n"
