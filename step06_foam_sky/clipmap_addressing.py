@@ -10,6 +10,8 @@ z. Standard library only: `python3 step06_foam_sky/clipmap_addressing.py` rewrit
 import pathlib
 
 N, CELLS, W, H = 8, 20, 34, 30  # texels, world cells drawn, a cell's width and height (pixels)
+TW = 48  # a texel's width: not a cell's, so that no texel lines up with a world cell
+AHEAD = 0.3  # the window's centre lies 30 % of its side ahead of the camera (foam.hpp)
 LEFT = 40
 BLUE, ORANGE, GREY, INK = "#9ecae1", "#fdae6b", "#f0f0f0", "#222"
 out = []
@@ -44,22 +46,24 @@ def frame(top, origin, previous, title):
             text(LEFT + c * W + W / 2, y + H + 14, "left", 10, fill="#999")
     out.append(f'<rect x="{LEFT + origin * W}" y="{y - 3}" width="{N * W}" height="{H + 6}" fill="none" '
                f'stroke="{INK}" stroke-width="2.5"/>')
-    camera = LEFT + (origin + N / 2 - 2) * W  # the window is centred ahead of the camera
+    camera = LEFT + (origin + N / 2 - AHEAD * N) * W  # the window is centred ahead of the camera
     out.append(f'<polygon points="{camera},{y - 4} {camera - 7},{y - 16} {camera + 7},{y - 16}" fill="{INK}"/>')
     text(camera + 10, y - 7, "camera", 11, "start")
-    # the texture, one copy, each texel under the world cell it holds for the first window drawn
+    # the texture: a separate image, drawn with its own texel width, so that its place on the page
+    # says nothing about the sea; only the arrows link a texel to its cell
     ty = y + H + 62
-    text(LEFT + CELLS * W + 8, ty + 13, "texels", 12, "start")
-    text(LEFT + CELLS * W + 8, ty + 27, "(their cells)", 12, "start")
-    tx = LEFT + 6 * W
+    text(LEFT + CELLS * W + 8, ty + 13, "the texture:", 12, "start")
+    text(LEFT + CELLS * W + 8, ty + 27, "texel t / cell i", 12, "start")
+    tx = LEFT + (CELLS * W - N * TW) / 2
+    box(tx - 4, ty - 4, N * TW + 8, H + 8, "white", "#888", 1)
     for t in range(N):
         cell = origin + ((t - origin) % N)  # foam.frag: the one cell of the window congruent to t
         before = previous + ((t - previous) % N)
         entered = cell != before
-        box(tx + t * W, ty, W, H, ORANGE if entered else BLUE)
-        text(tx + t * W + W / 2, ty + 13, t, 10, fill="#666")
-        text(tx + t * W + W / 2, ty + 26, cell, 12, weight="bold")
-        arrow(LEFT + cell * W + W / 2, y + H + 2, tx + t * W + W / 2, ty - 2, "#555")
+        box(tx + t * TW, ty, TW, H, ORANGE if entered else BLUE)
+        text(tx + t * TW + TW / 2, ty + 12, f"t={t}", 10, fill="#555")
+        text(tx + t * TW + TW / 2, ty + 26, cell, 12, weight="bold")
+        arrow(LEFT + cell * W + W / 2, y + H + 2, tx + t * TW + TW / 2, ty - 6, "#555")
     return ty + H
 
 
@@ -74,6 +78,11 @@ text(LEFT + 22, legend, "a cell in the window both frames: same texel, its foam 
 box(LEFT, legend + 9, 16, 16, ORANGE)
 text(LEFT + 22, legend + 22, "a cell that entered: it takes the texel of the cell that left (4→12, 5→13, 6→14), "
      "started afresh", 12, "start")
+text(LEFT, legend + 44, "In a texel: the small t= is the texel's index, the bold number the world cell i it holds "
+     "(i mod 8 = t).", 12, "start")
+text(LEFT, legend + 62, "The texture is drawn apart from the cells: its place on the page means nothing, only the "
+     "arrows link a cell to its texel.", 12, "start")
+legend += 40
 text(LEFT, legend + 46, "The renderer reads cell i at texture coordinate i / N, and GL_REPEAT takes the mod; "
      "foam.frag, run once a texel,", 12, "start")
 text(LEFT, legend + 64, "finds the cell it holds the other way round: i = origin + ((texel − origin) mod N).", 12, "start")
