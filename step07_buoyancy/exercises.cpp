@@ -23,7 +23,7 @@ const char* kSurface = "vec4(b.x, 0.0, b.y, b.z), vec4(0.0, 0.0, b.w, 0.3 * b.z)
 step07::SurfaceAt surface_of(const glm::dvec4& b) {
     step07::SurfaceAt s;
     s.displacement = {b.x, 0.0, b.y};
-    s.d_dx = {b.w, 0.0, b.z};        // d/dx of (l Dx, h, l Dz)
+    s.d_dx = {b.w, 0.0, b.z};        // d/dx of (lambda chi_x, eta, lambda chi_z)
     s.d_dz = {b.z, 0.0, 0.3 * b.z};  // d/dz
     return s;
 }
@@ -91,17 +91,17 @@ std::vector<Exercise> chapter() {
          "vec2 newton_step(vec2 x, vec2 p, vec4 displacement, vec4 slopes) {",
          "    // TODO (exercise 1): move x towards the rest position drawn above p.\n"
          "    return x;\n",
-         "Write newton_step (section 2): the water resting at x is drawn at x + displacement.xz (x + l D(x)).\n"
-         "The water drawn above the world point p rests at a root of F(x) = x + l D(x) - p. Newton's method\n"
+         "Write newton_step (section 2): the water resting at x is drawn at x + displacement.xz (x + lambda chi(x)).\n"
+         "The water drawn above the world point p rests at a root of F(x) = x + lambda chi(x) - p. Newton's method\n"
          "replaces F near x by its tangent, F(x + dx) ~ F(x) + J dx, with J the 2 x 2 matrix of F's\n"
-         "derivatives, and takes the dx that zeroes it. Build J from what the maps hold (slopes.z = l dDx/dx,\n"
-         "slopes.w = l dDz/dz, displacement.w = l dDx/dz = l dDz/dx), solve the 2 x 2 system, and return the\n"
+         "derivatives, and takes the dx that zeroes it. Build J from what the maps hold (slopes.z = lambda dchi_x/dx,\n"
+         "slopes.w = lambda dchi_z/dz, displacement.w = lambda dchi_x/dz = lambda dchi_z/dx), solve the 2 x 2 system, and return the\n"
          "new x. Where det J <= 0.05 the surface folds and the step means nothing: return the fixed point\n"
          "p - displacement.xz instead. The step runs with 2000 queries on the GPU (queries=2000,\n"
-         "query_device=gpu): with the starter the yellow dots are the heights at p, not above p, and float\n"
-         "above the troughs and sink into the crests.",
+         "query_device=gpu): with the starter the yellow dots are the heights at p, not above p: they float\n"
+         "above the wave flanks, by up to 2/3 A on a steep wave, and touch the water at crests and troughs.",
          "The step must shrink the miss x + displacement.xz - p: subtract J^-1 miss, do not add it. J's diagonal "
-         "starts at 1 (the x of x + l D), and displacement.w is the off-diagonal term on both sides.",
+         "starts at 1 (the x of x + lambda chi), and displacement.w is the off-diagonal term on both sides.",
          "miss = x + displacement.xz - p; J = [a b; b d], a = 1 + slopes.z, b = displacement.w, d = 1 + slopes.w; "
          "det = a d - b^2; if det <= 0.05 return p - displacement.xz; "
          "else return x - vec2(d miss.x - b miss.y, -b miss.x + a miss.y) / det",
@@ -121,16 +121,17 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 2): the water's push on every cell, and its torque about the centre of mass.\n"
          "    (void)cells, (void)rotation, (void)centre_of_mass, (void)water_lines;\n"
          "    return {};\n",
-         "Write buoyancy (C++, in hull_forces.cpp; section 3): the water's push on a hull made of cells, and\n"
+         "Write buoyancy (C++, in hull_forces.cpp; section 7): the water's push on a hull made of cells, and\n"
          "its torque about the centre of mass. Archimedes: a cell is pushed up by the weight of the water it\n"
          "displaces, the share of it under water (wet_share, from its centre's height, water_lines[i] and\n"
          "vertical_half_extent) times its volume. The push acts at the middle of the displaced water: find\n"
          "where each cell's wet part lies (the cell's centre is centre_of_mass + rotation * offset, and the\n"
          "wet part starts at its bottom), then sum the forces and their torques about the centre of mass.\n"
-         "Without it nothing floats: every body sinks. ./ocean check compiles your file with a small program\n"
-         "and compares 200 hulls.",
-         "The torque's arm runs from the centre of mass to the middle of the wet part, not to the cell's centre: "
-         "on a heeled hull that difference is what rights it. A dry cell gives nothing, a drowned one "
+         "Without it the raft and the boat sink (the buoy floats on its cap). ./ocean check compiles your file\n"
+         "with a small program and compares 200 hulls.",
+         "The torque's arm runs from the centre of mass to the middle of the wet part, or to the cell's centre: "
+         "either point gives the same torque under a vertical force; the low side's wetter cells right a "
+         "heeled hull. A dry cell gives nothing, a drowned one "
          "rho_w g V; the force is vertical, so its torque has no y component.",
          "for each cell i: arm = rotation * offset, half = vertical_half_extent(rotation, cell), "
          "wet = wet_share(water_lines[i], centre_of_mass.y + arm.y, half); "
@@ -147,9 +148,9 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 3): the period of the sphere's small heave about its rest.\n"
          "    (void)radius, (void)draft, (void)linear_drag;\n"
          "    return 0;\n",
-         "Write sphere_heave_period (C++, in hull_forces.cpp; section 3): the program's buoy is a sphere\n"
+         "Write sphere_heave_period (C++, in hull_forces.cpp; section 10): the program's buoy is a sphere\n"
          "of this radius, floating at rest with the water `draft` above its lowest point. Raised a little\n"
-         "and let go on still water, it heaves up and down. Section 3 finds a box's heave period: it\n"
+         "and let go on still water, it heaves up and down. Section 10 finds a box's heave period: it\n"
          "writes Newton's law for the height above the rest, with Archimedes' push, the weight and the\n"
          "drag (per kilogram of water displaced, linear_drag, which at rest is the body's mass), and\n"
          "keeps the terms of first order in the height. Do the same for the sphere, with its spherical\n"

@@ -1,4 +1,4 @@
-// Chapter 7.3-7.4: a rigid body on the sea. Its hull is cut into small cells; each frame the sea
+// Chapter 7.7-7.12: a rigid body on the sea. Its hull is cut into small cells; each frame the sea
 // is queried under every cell (sea_query.hpp), and each substep adds up, cell by cell,
 //   buoyancy   rho_w g V_submerged, up, on the cell's vertical            (Archimedes)
 //   drag       -rho_w V_submerged c (v_cell - v_water)                    (linear, against the water's own
@@ -12,7 +12,7 @@
 // The water's velocity for the drag shrinks with depth (sea_query.hpp's water_velocity).
 // There is no added mass (the water a body must accelerate with it when it heaves): a box's heave
 // period is 2 pi sqrt(d / g) for draft d. For the tested box that water is of the order of the box's
-// own mass, and a real box heaves about a third more slowly (README, section 3).
+// own mass, and a real box heaves about a third more slowly (README, section 10).
 #pragma once
 
 #include "step07_buoyancy/hull_forces.hpp"
@@ -77,7 +77,7 @@ public:
     // Steering: a force (N) at a point of the body's frame, for the next step only.
     void add_force(glm::dvec3 force_world, glm::dvec3 at_body);
     // Whether the water holds the body up by Archimedes on the sea's surface (step07; the
-    // default) or by a push found after each step elsewhere (add_water_push: step08, where the
+    // default) or by a push found after each step elsewhere (add_water_push: step09, where the
     // body's hull is in contact with a field of waves it makes). The drag stays either way.
     void set_archimedes(bool on) { archimedes_ = on; }
     bool archimedes() const { return archimedes_; }
@@ -86,8 +86,8 @@ public:
     // the step's substeps would have moved them (travel_per_acceleration).
     void add_water_push(glm::dvec3 force, glm::dvec3 torque, double dt);
     // Water that moves with the body when it heaves (kg): its vertical motion answers to the
-    // vertical force over its mass plus this. None in step07 (see the header's last lines); step08
-    // gives its buoy the added mass of the sources on its hull (radiating_buoy.hpp).
+    // vertical force over its mass plus this. None in step07 (see the header's last lines); step09
+    // gives its buoy the added mass of the sources on its hull (step09_radiation/radiating_buoy.hpp).
     void set_heave_added_mass(double kg) { heave_added_mass_ = kg; }
     double heave_added_mass() const { return heave_added_mass_; }
     // How far a step of dt seconds moves a body per unit of a constant acceleration held over it:

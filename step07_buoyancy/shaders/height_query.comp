@@ -13,9 +13,9 @@ uniform int u_count;
 uniform int u_steps;
 
 // Level 0 of a map, bilinear with GL's rule (texel centres at (i + 1/2) / N, repeating), the
-// weights in float. GL's filter may weigh the four texels with as few as 8 bits (an H100 does):
-// a picture never shows it, but on a steep wave it moved a query by 3 mm and kept Newton's steps
-// from settling within 1 mm. The maps' sides are powers of two, so & wraps (-1 included).
+// weights in float. GL leaves the precision of its filter's weights to the GPU, and some use 8 bits
+// (an H100 does): a picture never shows it, but on a steep wave it moved a query by 3 mm and kept
+// Newton's steps from settling within 1 mm. The maps' sides are powers of two, so & wraps (-1 included).
 vec4 bilinear(sampler2DArray maps, vec3 uv) {
     ivec2 size = textureSize(maps, 0).xy;
     vec2 t = fract(uv.xy) * vec2(size) - 0.5;
