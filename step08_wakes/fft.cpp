@@ -38,8 +38,8 @@ void Fft2d::transform_line(Complex* line, const Complex* w) const {
         const int step = n_ / span;  // w_span^j = w_N^(j step)
         for (int start = 0; start < n_; start += span)
             for (int j = 0; j < span / 2; ++j) {
-                Complex& low = line[start + j];              // E[j], then X[j]
-                Complex& high = line[start + j + span / 2];  // O[j], then X[j + span/2]
+                Complex& low = line[start + j];              // Xe[j], then X[j]
+                Complex& high = line[start + j + span / 2];  // Xo[j], then X[j + span/2]
                 const Complex turned = times(w[j * step], high);
                 high = low - turned;
                 low += turned;

@@ -1,12 +1,12 @@
-// Chapter 8.2: the fast Fourier transform the wave field runs on, in double precision on the CPU.
+// Chapter 8's FFT page (fft.md): the fast Fourier transform the wave field runs on, in double precision on the CPU.
 // step05 uses the FFT (on the GPU, FFTW as its reference and fallback); here it is written out: the
 // wave field around the boat is small (128 x 128) and its bodies need it on the CPU in the same
-// step (README, section 2: why the field is on the CPU).
+// step (fft.md: why the field is on the CPU).
 //
 // Radix 2, in place (Cooley and Tukey): a transform of length N is two of length N/2, one over
 // the even samples and one over the odd, joined by N/2 "butterflies"
-//     X[k]       = E[k] + w^k O[k]
-//     X[k + N/2] = E[k] - w^k O[k],     w = e^{-2 pi i / N} (forward), e^{+2 pi i / N} (inverse)
+//     X[j]       = Xe[j] + w^j Xo[j]
+//     X[j + N/2] = Xe[j] - w^j Xo[j],     w = e^{-2 pi i / N} (forward), e^{+2 pi i / N} (inverse)
 // log2 N times over: N log2 N work in place of the direct sum's N^2. The samples are first put in
 // bit-reversed order: then each block of the stage's length holds, in its two halves, the two
 // shorter transforms that the stage joins.
