@@ -104,20 +104,22 @@ std::vector<Exercise> chapter() {
         // derived: the README does not give this answer
         {"step08_wakes", 2, "Kelvin's angle from the group velocity", "kelvin.cpp",
          "double kelvin_edge_angle(double group_to_phase) {",
-         "    // TODO (exercise 2): the wake's half-angle when energy travels at n times the phase speed.\n"
+         "    // TODO (exercise 2): the wake's half-angle when energy travels at r times the phase speed.\n"
          "    (void)group_to_phase;\n"
          "    return 0;\n",
          "Write kelvin_edge_angle (C++, in kelvin.cpp; section 3): a boat sails at U; the waves it made at\n"
-         "P, t seconds ago, that keep pace with it have crests moving at U cos(theta) along theta, and\n"
-         "carry their energy at n times that speed (n = c_g / c, the argument: 1/2 in deep water).\n"
-         "Where does that energy lie now, for every theta? Find the curve, then the angle from the\n"
-         "boat within which every such curve (for every t) is seen. Where none exists (the boat inside\n"
-         "the curve), return pi / 2. With n = 1/2 you should find 19.47 degrees, the angle of the\n"
-         "program's kelvin_lines (--set plan=true --set kelvin_lines=true). ./ocean check compares n\n"
-         "from 0.05 to 1.2.",
-         "The energy lies at P + n U t cos(theta) (cos theta, sin theta): a circle through P. Its centre "
+         "O, t seconds ago, that keep pace with it have crests moving at U cos(theta) along theta, and\n"
+         "carry their energy at r times that speed (r = c_g / c, the argument: 1/2 in deep water).\n"
+         "Here r is the same for every wave: a model of a dispersive medium, not shallow water (over\n"
+         "water h deep r = (1 + 2kh / sinh 2kh) / 2 varies with each wave's k, and the waves made at O\n"
+         "no longer share one curve). Where does that energy lie now, for every theta? Find the curve,\n"
+         "then the angle from the boat within which every such curve (for every t) is seen. Where none\n"
+         "exists (the boat inside the curve), return pi / 2. With r = 1/2 you should find 19.47\n"
+         "degrees, the angle of the program's kelvin_lines (--set plan=true --set kelvin_lines=true).\n"
+         "./ocean check compares r from 0.05 to 1.2.",
+         "The energy lies at O + r U t cos(theta) (cos theta, sin theta): a circle through O. Its centre "
          "and radius give the angle of the tangent from the boat, which is U t ahead of P.",
-         "sin(alpha) = (n / 2) / (1 - n / 2); alpha = asin of it for n < 1, pi / 2 otherwise",
+         "sin(alpha) = (r / 2) / (1 - r / 2); alpha = asin of it for r < 1, pi / 2 otherwise",
          {"--set", "kelvin_lines=true"},
          [](const fs::path& work) {
              return check_cpp(work, "kelvin.cpp", kKelvinDriver, 100, kelvin_reference, 1e-12);
