@@ -103,7 +103,7 @@ set output 'wave_profiles.png'
 set key top center horizontal
 set yrange [-1.2:1.9]
 set multiplot layout 2,1 title "Wave profiles: what each chapter adds to the crest"
-set title "step01-04: a sine, and step04's two shapes, of equal crest-to-trough height 1 − e⁻² = 0.86"
+set title "step04's two shapes, of equal crest-to-trough height 1 − e⁻² = 0.86; the sine of steps 01-03 for scale"
 set xlabel "phase θ / π"
 set ylabel "height / amplitude"
 set key at graph 0.99, graph 0.99 right top vertical font ",10"

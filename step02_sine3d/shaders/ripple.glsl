@@ -10,7 +10,7 @@ float ripple_height(vec2 xz) {
     float r = distance(xz, u_ripple.xy);
     float wavelength = 6.2831853 / u_ripple.z;
     // The energy a crest carries, a^2 per unit area, spreads round a circle 2 pi r long: a falls as
-    // 1 / sqrt(r) beyond one wavelength; nearer, the stone's own splash, it stays a.
+    // 1 / sqrt(r) beyond one wavelength; nearer, where the bobbing source itself is, it stays a.
     float spread = sqrt(wavelength / max(r, wavelength));
     return u_ripple.w * spread * sin(r * u_ripple.z + u_ripple_phase);
 }
