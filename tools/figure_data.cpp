@@ -420,9 +420,9 @@ Figure butterfly() {
     return f;
 }
 
-// The plain radix-2 FFT worked by hand (README section 3): an 8-point inverse transform of a step,
+// The plain radix-2 FFT worked by hand (step05's fft.md): an 8-point inverse transform of a step,
 // x = (1, 1, 1, 1, 0, 0, 0, 0), by fft_radix2.comp's rule (bit-reversed read, then stage s joins
-// blocks of h = 2^s: X[k] = E[k] + zeta^k O[k], X[k + h] = E[k] - zeta^k O[k], zeta = e^{2 pi i/(2h)}),
+// blocks of M = 2^s: X[r] = E[r] + zeta^r O[r], X[r + M] = E[r] - zeta^r O[r], zeta = e^{2 pi i/(2M)}),
 // every value on its node; the result checked here against the sum X[n] = sum_m x[m] e^{2 pi i m n / 8}.
 std::string complex_label(std::complex<double> z) {
     const auto clean = [](double v) { return std::abs(v) < 5e-13 ? 0.0 : v; };
@@ -476,8 +476,8 @@ Figure radix2_by_hand() {
              << "set xrange [-0.45:3.45]\nset yrange [-7.6:0.6]\nset bmargin 5\nunset key\nunset grid\nunset border\n"
              << "set ytics (\"0\" 0, \"1\" -1, \"2\" -2, \"3\" -3, \"4\" -4, \"5\" -5, \"6\" -6, \"7\" -7) nomirror\n"
              << "set ylabel \"index in the line\"\n"
-             << "set xtics (\"read bit-reversed:\\nx_0 x_4 x_2 x_6 x_1 x_5 x_3 x_7\" 0, \"stage 0 (h = 1):\\n4 transforms of 2\" 1, "
-                "\"stage 1 (h = 2):\\n2 transforms of 4\" 2, \"stage 2 (h = 4):\\nX, the transform of 8\" 3) nomirror\n"
+             << "set xtics (\"read bit-reversed:\\nx_0 x_4 x_2 x_6 x_1 x_5 x_3 x_7\" 0, \"stage 0 (M = 1):\\n4 transforms of 2\" 1, "
+                "\"stage 1 (M = 2):\\n2 transforms of 4\" 2, \"stage 2 (M = 4):\\nX, the transform of 8\" 3) nomirror\n"
              << "set style textbox opaque noborder\n"
              << "plot 'radix2_by_hand.dat' index 0 using 1:2:($3-$1):($4-$2) with vectors nohead lc rgb '#9db8d9' lw 1.5, \\\n"
              << "     '' index 1 using 1:2:3 with labels font \",10\" tc rgb '#d9822b', \\\n"
