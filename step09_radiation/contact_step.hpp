@@ -65,8 +65,9 @@ public:
     void release() { pressure_.clear(); }
 
 private:
-    // The height a unit p / rho held on cell 0 over dt raises on every cell, from rest (n x n,
-    // periodic): the field's kernel, made for `kernel_for_` seconds and `kernel_grid_`.
+    // The height change a unit p / rho held on cell 0 over dt leaves on every cell, from rest (n x n,
+    // periodic): a dent, -(1 - cos omega dt) / g mode by mode, so negative under the cell; the
+    // field's kernel, made for `kernel_for_` seconds and `kernel_grid_`.
     void make_kernel(const WaveFieldSettings& settings, double dt);
 
     std::vector<double> kernel_, pressure_;

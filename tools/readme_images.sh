@@ -156,9 +156,15 @@ panel "$root/step08_wakes/wake_speeds.png" 480x270 2 \
   "9 m/s, Fr 1.17: the largest waves inside it|$scratch/wake_fast.png|0.1,0,0.9,1"
 echo step08_wakes/wake_speeds.png
 
-# step09's bodies in step08's scene: the raft in contact, the buoy radiating (as step08's shot).
+# step09's bodies in step08's scene 0.1 s after the drop (as step08's shot): nothing has rung yet.
 shot step09_radiation "$root/step09_radiation/screenshot.png" --size 640x360 --frames 2 --time 0 --dt 0.1
 echo step09_radiation/screenshot.png
+# The buoy pushed up and down at 1 Hz (forced_heave) on a flat sea (wind_speed=0), 8 s on (160 steps
+# of 0.05 s), the camera held (follow_boat=false) and looking down on it: its rings, the boat's wake,
+# the raft in contact.
+shot step09_radiation "$root/step09_radiation/rings.png" --size 640x360 --frames 160 --time 0 --dt 0.05 \
+  --set wind_speed=0 --set forced_heave=0.3 --set follow_boat=false --set camera_pitch=45 --set camera_distance=30
+echo step09_radiation/rings.png
 
 # step05's one Gerstner wave at three steepnesses Q k A (sea=gerstner), crests across the view.
 gerstner() {  # gerstner STEEPNESS
