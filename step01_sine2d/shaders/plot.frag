@@ -1,6 +1,7 @@
 #version 450 core
 // The plot, one pixel at a time: for each curve y = f(x) the pixel's distance to it is
-// |y - f(x)| / sqrt(1 + f'(x)^2) (in pixels), which keeps lines the same width on steep slopes.
+// |dy| / sqrt(1 + m^2), dy = y - f(x) in pixels and m = f'(x) turned into pixels per pixel (the
+// axes' metres per pixel differ), which keeps lines the same width on steep slopes.
 #include "sine_sum.glsl"
 #include "digits.glsl"
 
