@@ -22,7 +22,8 @@ std::vector<Exercise> chapter() {
          "Write wave_height: the sum of the u_wave_count waves at xz. A directional wave travels along its\n"
          "unit direction d, and its crests are straight lines across d: its height depends on xz only through\n"
          "how far along d the point lies. Turn step01's wave a sin(x w + phase) into one along d, and sum them.\n"
-         "u_waves[i] = (d.x, d.z, w, a); the phase is its own array, u_wave_phases[i]. Without it the sea is flat.",
+         "u_waves[i] = (d.x, d.z, w, a): mind the letters, GLSL's .w is the amplitude a and the wavenumber w\n"
+         "is .z. The phase is its own array, u_wave_phases[i]. Without it the sea is flat.",
          "How far along d the point xz lies is a projection: one product of two vectors. The phase is "
          "u_wave_phases[i], not a component of u_waves[i].",
          "wave_height(xz) = sum over i of a sin(dot(d, xz) w + phase) = "
@@ -65,9 +66,9 @@ std::vector<Exercise> chapter() {
          "Then its height: a crest's energy, which\n"
          "grows as the square of the amplitude, is spread round a circle that grows as the ring spreads,\n"
          "and none is lost. Derive how the amplitude must fall with the distance r so that the energy\n"
-         "crossing every circle is the same, given that it is u_ripple.w one wavelength from c; nearer\n"
-         "than that (the source itself) keep it u_ripple.w. u_ripple = (c.x, c.z, w, a), the phase -t phi\n"
-         "in u_ripple_phase. The step runs with a ripple (ripple_amplitude): without it, none.",
+         "crossing every circle in a second is the same, given that it is u_ripple.w one wavelength from c;\n"
+         "nearer than that (the source itself) keep it u_ripple.w. u_ripple = (c.x, c.z, w, a), the phase\n"
+         "-t phi in u_ripple_phase. The step runs with a ripple (ripple_amplitude): without it, none.",
          "The crest's circle is 2 pi r long: the energy per metre of crest falls as 1 / r, and the "
          "energy goes as the amplitude squared. The wavelength is 2 pi / w.",
          "r = distance(xz, c); ripple_height = a sqrt(wavelength / max(r, wavelength)) sin(r w + phase), "

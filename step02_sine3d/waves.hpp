@@ -1,6 +1,6 @@
 // Chapter 1.2.2 on the CPU, in double precision: a sum of directional sines over the plane.
 //
-//   h(x, z, t) = sum_i a_i sin(d_i . (x, z) w_i - t phi_i),   d_i = (cos theta_i, sin theta_i)
+//   h(x, z, t) = sum_i a_i sin(d_i . (x, z) w_i - t phi_i),   d_i = (cos alpha_i, sin alpha_i)
 //
 // with w and phi as in step01 (2 pi / wavelength, speed * 2 pi / wavelength): the crests of wave i
 // travel along +d_i at `speed` (the notes' + t phi sends them along -d_i). This is the
@@ -27,7 +27,7 @@ struct DirectionalWave {
 struct Direction { double x, z; };
 
 inline Direction direction(const DirectionalWave& wave) {
-    const double theta = wave.direction_deg * kTwoPi / 360.0;
+    const double theta = wave.direction_deg * kTwoPi / 360.0;  // the README's alpha, in radians
     return {std::cos(theta), std::sin(theta)};
 }
 
