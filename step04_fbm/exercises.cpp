@@ -111,8 +111,8 @@ std::vector<Exercise> chapter() {
          "here k = 3. Like the exp-sine (\"A sharper wave shape\" and \"The sea's level\"), it must be\n"
          "scaled to the same crest-to-trough height, 1 - e^-2 (so that the shapes compare like with like),\n"
          "and have its mean over a period taken out (so that the sea rests at y = 0); then return\n"
-         "(W, W', W''), W' for the normals and W'' for the warp's Jacobian. Find the mean as the lesson finds\n"
-         "e^-1 I0(1): expand the power, and average each power of sin over a period. The derivatives are the\n"
+         "(W, W', W''), W' for the normals and W'' for the warp's Jacobian. Find the mean as \"The sea's level\"\n"
+         "finds e^-1 I0(1): expand the power, and average each power of sin over a period. The derivatives are the\n"
          "chain rule (a power of a function) and then the product rule. The step runs with\n"
          "shape=power_sine: the starter is a sine twice as high, round crests as wide as the troughs.",
          "Expanded, the cube is a polynomial in sin theta: the odd powers average 0 over a period, sin^2 "
