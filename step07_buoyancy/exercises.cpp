@@ -148,7 +148,7 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 3): the period of the sphere's small heave about its rest.\n"
          "    (void)radius, (void)draft, (void)linear_drag;\n"
          "    return 0;\n",
-         "Write sphere_heave_period (C++, in hull_forces.cpp; section 10): the program's buoy is a sphere\n"
+         "Write sphere_heave_period (C++, in hull_forces.cpp; motion.md, section 10): the program's buoy is a sphere\n"
          "of this radius, floating at rest with the water `draft` above its lowest point. Raised a little\n"
          "and let go on still water, it heaves up and down. Section 10 finds a box's heave period: it\n"
          "writes Newton's law for the height above the rest, with Archimedes' push, the weight and the\n"

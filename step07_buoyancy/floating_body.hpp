@@ -12,7 +12,7 @@
 // The water's velocity for the drag shrinks with depth (sea_query.hpp's water_velocity).
 // There is no added mass (the water a body must accelerate with it when it heaves): a box's heave
 // period is 2 pi sqrt(d / g) for draft d. For the tested box that water is of the order of the box's
-// own mass, and a real box heaves about a third more slowly (README, section 10).
+// own mass, and a real box heaves about a third more slowly (motion.md, section 10).
 #pragma once
 
 #include "step07_buoyancy/hull_forces.hpp"

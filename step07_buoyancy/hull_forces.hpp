@@ -52,7 +52,7 @@ double spherical_cap_volume(double radius, double draft);
 glm::dvec3 sphere_buoyancy(double radius, double centre_y, double water_line);
 // The period, in seconds, of a floating sphere's small heave about its rest at `draft` (0 < draft <
 // 2 radius), with step07's linear drag (per kilogram of water displaced, 1/s) and no added mass:
-// Archimedes linearised about the rest, as section 10 does for a box. Infinite where the drag
+// Archimedes linearised about the rest, as motion.md's section 10 does for a box. Infinite where the drag
 // leaves no oscillation. Exercise 3 (./ocean exercise step07_buoyancy 3) empties it;
 // tests/test_floating_body.cpp holds the program's buoy, raised and let go, to it.
 double sphere_heave_period(double radius, double draft, double linear_drag);

@@ -18,7 +18,9 @@ namespace step07 {
 // it (below the peak the spectrum dies off as exp(-5/4 (omega_p / omega)^4)), and the band's lower
 // edge for a band above it (the spectrum falls with k there); a swell's peak counts as the wind
 // sea's. Shorter waves of the band shrink faster than it says: the water's motion at depth is
-// overestimated a little, never hidden (tests/test_sea_query.cpp measures how much).
+// overestimated a little down to 25 m. Deeper, where the water moves at about 1 % of the surface's
+// speed, it can come out a little low (about a fifth at 50 m); tests/test_sea_query.cpp measures
+// how much.
 std::vector<double> band_wavenumbers(const step05::SpectrumParams& shared);
 // The wavenumber of angular frequency omega at depth h: omega^2 = g k tanh(k h) solved for k.
 double wavenumber_of(double omega, double depth);

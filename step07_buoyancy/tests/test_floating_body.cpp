@@ -182,7 +182,7 @@ TEST(FloatingBody, ABoxHeavesWithThePeriodOfItsSpring) {
     // (the drag is per kilogram of water displaced, which at rest is the body's mass). Period
     // 2 pi / sqrt(g / d - (drag / 2)^2): 2 pi sqrt(d / g) without drag. No added mass in the model:
     // the model's own closed form, not a real box's, which carries about 0.8 of its mass of water
-    // along and heaves about a third more slowly (README, section 10).
+    // along and heaves about a third more slowly (motion.md, section 10).
     const double density = 600, drag = 0.2;
     const double draft = density / step07::kWaterDensity;
     FloatingBody body(box({2, 1, 2}, density, drag), {0, 0.5 - draft + 0.05, 0});
