@@ -118,7 +118,7 @@ std::vector<Exercise> chapter() {
          "degrees, the angle of the program's kelvin_lines (--set plan=true --set kelvin_lines=true).\n"
          "./ocean check compares r from 0.05 to 1.2.",
          "The energy lies at O + r U t cos(theta) (cos theta, sin theta): a circle through O. Its centre "
-         "and radius give the angle of the tangent from the boat, which is U t ahead of P.",
+         "and radius give the angle of the tangent from the boat, which is U t ahead of O.",
          "sin(alpha) = (r / 2) / (1 - r / 2); alpha = asin of it for r < 1, pi / 2 otherwise",
          {"--set", "kelvin_lines=true"},
          [](const fs::path& work) {
