@@ -120,10 +120,11 @@ std::vector<Exercise> chapter() {
          "Write flow_through_surface (C++, in image_source.cpp; the primer's method, a variant it does not\n"
          "work out): a unit source `depth` metres under the surface, with its image (kImageStrength, from\n"
          "the same file). How fast does the water go up through the surface y = 0 at a point `across`\n"
-         "metres from the point straight above the source? This is what the panel method hands step08's\n"
-         "field as its source, cell by cell. Derive it from the potential of exercise 1, then check it:\n"
-         "over the whole surface, how much water goes through, for the sink image, and for a rigid lid\n"
-         "(kImageStrength = +1)? ./ocean check compares 300 points, 0.05 to 2 m deep, 0 to 5 m across.",
+         "metres from the point straight above the source? This is the water the sources put through\n"
+         "each cell; the code gets the same water mode by mode (README, section 11). Derive it from the\n"
+         "potential of exercise 1, then check it: over the whole surface, how much water goes through,\n"
+         "for the sink image, and for a rigid lid (kImageStrength = +1)? ./ocean check compares 300\n"
+         "points, 0.05 to 2 m deep, 0 to 5 m across.",
          "Differentiate the potential of both in y and set y = 0: the source and its image are the same "
          "distance away, so their two terms have one form. The sink image's whole surface should carry "
          "the source's 1 m^3/s; the rigid lid's none.",
