@@ -261,12 +261,12 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 6): thread t's four butterflies of the stage of stride p, lines[from] -> lines[1 - from].\n"
          "    for (int j = 0; j < 4; ++j) lines[1 - from][t + j * QUARTER] = lines[from][t + j * QUARTER];\n",
          "Write radix4_stage, the optimisation of exercise 5 (fft.md section 3): split a transform four ways\n"
-         "instead of two, so a 4-point DFT (factors 1, i, -1, -i: no multiplications) joins four quarter-size\n"
-         "transforms, and half as many stages run, all in shared memory. In Stockham's order a stage of\n"
-         "stride p reads its four inputs a quarter of the line apart and writes its outputs where the next\n"
-         "stage will read them, so no bit reversal is needed. Derive the index rule from fft.md's Stockham\n"
+         "instead of two, so an unnormalised 4-point inverse DFT (factors e^{+2 pi i j q / 4} = 1, i, -1, -i: no\n"
+         "multiplications) joins four quarter-size transforms, and half as many stages run, all in shared\n"
+         "memory. In Stockham's order a stage of stride p reads its four inputs a quarter of the line apart\n"
+         "and writes its outputs where the next stage will read them, so no bit reversal is needed. Derive the index rule from fft.md's Stockham\n"
          "radix-2 rule (item 1 of its section 3, not exercise 5's bit-reversed one), with four blocks for two.",
-         "r = t mod p picks the twiddle, as in exercise 5. Twiddle the inputs before the 4-point DFT, not after; "
+         "r = t mod p picks the twiddle, as in exercise 5. Twiddle the inputs before the 4-point inverse DFT, not after; "
          "output q is a sum of the four inputs turned by q quarter turns per j.",
          "r = t & (p - 1); a_j = x[t + j N/4] zeta^(j r), zeta^(j r) = twiddle[j r N / (4 p)];\n"
          "y[(t - r) 4 + r + q p] = sum_j a_j i^(j q), q = 0..3: q = 1 is a0 + i a1 - a2 - i a3, q = 2 is\n"
@@ -316,7 +316,7 @@ std::vector<Exercise> chapter() {
          "    m.displacement = vec4(0.0, wave.w * cos(theta), 0.0, 0.0);\n"
          "    m.slopes = vec4(-wave.w * wave.z * wave.xy * sin(theta), 0.0, 0.0);\n"
          "    return m;\n",
-         "Write gerstner_wave: README section 4's Gerstner wave, with Q, in the maps' form (GPU Gems 1, chapter 1;\n"
+         "Write gerstner_wave: gerstner.md's Gerstner wave (README section 4), with Q, in the maps' form (GPU Gems 1, chapter 1;\n"
          "steepness is Q: the step passes gerstner_steepness / (k A)). In a real wave the water moves in\n"
          "circles: each point rises at the crest and moves forward there, sinks in the trough and moves\n"
          "back. So a Gerstner wave moves the point of rest position p up by A cos(theta) and also sideways,\n"

@@ -46,7 +46,7 @@ int element(int layer, int line, int e) {
 vec2 times_i(vec2 a) { return vec2(-a.y, a.x); }
 
 // One radix-4 stage of stride p, thread t's share: four inputs a quarter of the line apart, twiddled,
-// give four outputs of one 4-point DFT, written where the next stage reads them (Stockham).
+// give four outputs of one 4-point inverse DFT (e^{+2 pi i j q / 4}), written where the next stage reads them (Stockham).
 void radix4_stage(int t, int p, int from) {
     int r = t & (p - 1);
     int step = r * (FFT_SIZE / (4 * p));  // zeta^(j r) = twiddle[j * step]
