@@ -83,7 +83,7 @@ text(LEFT, legend + 44, "In a texel: the small t= is the texel's index, the bold
 text(LEFT, legend + 62, "The texture is drawn apart from the cells: its place on the page means nothing, only the "
      "arrows link a cell to its texel.", 12, "start")
 legend += 40
-text(LEFT, legend + 46, "The renderer reads cell i at texture coordinate i / N, and GL_REPEAT takes the mod; "
+text(LEFT, legend + 46, "The renderer reads cell i at (i + ½) / N, its centre, and GL_REPEAT takes the mod; "
      "foam.frag, run once a texel,", 12, "start")
 text(LEFT, legend + 64, "finds the cell it holds the other way round: i = origin + ((texel − origin) mod N).", 12, "start")
 width, height = LEFT + CELLS * W + 110, legend + 80
