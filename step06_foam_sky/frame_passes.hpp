@@ -28,7 +28,8 @@ constexpr std::array<FramePass, 8> kFramePasses{{
      "G-buffer (world RGBA32F, rest RGBA32UI);depth;slopes (4 layers);foam (rg32f, 3 levels);bubble pattern;sky (cubemap);horizon (256 x 1)",
      "scene (RGBA16F, HDR)"},
     {"background", "sky.frag where depth = far: sky and sun disc", "depth;sky (cubemap)", "scene (RGBA16F, HDR)"},
-    {"bloom", "bloom_down.frag down the levels, bloom_up.frag back up", "scene (RGBA16F, HDR)", "bloom (quarter size, 5 levels)"},
+    {"bloom", "bloom_down.frag down the levels, bloom_up.frag back up", "scene (RGBA16F, HDR);bloom (quarter size, 5 levels)",
+     "bloom (quarter size, 5 levels)"},
     {"tonemap", "tonemap.frag: exposure, ACES or AgX, sRGB", "scene (RGBA16F, HDR);bloom (quarter size, 5 levels)",
      "screen (sRGB)"},
 }};
