@@ -6,33 +6,21 @@
 // sources on its wetted surface, Green's identity for the water they put through the surface).
 // `buoy_waves=false` lets both float on step07's Archimedes as in step08; `forced_heave` moves
 // the buoy up and down to watch its rings.
+// The program is step08's (wake_program.hpp), given this chapter's way for the bodies and the
+// field to take a frame (RadiatingBodies below, a step08::BodiesAndField); no plan view, deep water.
 // Controls: step08's; the arrows (held) steer the boat; a left click drops a stone.
 #include "common/app.hpp"
+#include "common/constants.hpp"
 #include "common/error.hpp"
-#include "common/gpu_timer.hpp"
-#include "step06_foam_sky/look_params.hpp"
-#include "step06_foam_sky/post.hpp"
-#include "step06_foam_sky/sea.hpp"
-#include "step06_foam_sky/sea_renderer.hpp"
-#include "step06_foam_sky/sky.hpp"
 #include "step07_buoyancy/bodies.hpp"
-#include "step07_buoyancy/body_painter.hpp"
-#include "step07_buoyancy/body_params.hpp"
-#include "step07_buoyancy/hull_forces.hpp"
-#include "step07_buoyancy/sea_feed.hpp"
-#include "step07_buoyancy/sea_query.hpp"
+#include "step08_wakes/bodies_and_field.hpp"
 #include "step08_wakes/wake_maps.hpp"
-#include "step08_wakes/wake_scene.hpp"
-#include "step08_wakes/wake_sea.hpp"
+#include "step08_wakes/wake_program.hpp"
 #include "step09_radiation/bodies_in_field.hpp"
 #include "step09_radiation/hull_contact.hpp"
 
-#include <GLFW/glfw3.h>
-#include <glm/gtc/quaternion.hpp>
 #include <imgui.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -41,138 +29,71 @@
 
 namespace {
 
-// A moderate breeze (Beaufort 4): waves a metre high, a few whitecaps, and a wake that shows in
-// them. step06's near gale would hide it.
-constexpr double kBreeze = 6;
-
-class Radiation : public ocean::App {
+// The raft in contact with the field and the buoy radiating: they move in the field's own steps,
+// making their waves, where step08's ride the wake. (step08 puts the raft afloat at its draft, not
+// dropped, within the field: a 5 m raft falling 1.5 m flat on the water would splash the view white
+// with its rings.)
+class RadiatingBodies : public step08::BodiesAndField {
 public:
-    Radiation()
-        : App({"Radiation", "-",
-               "Bodies that make the waves that damp them, on step08's wake: the raft in contact with the wave field "
-               "(the water under it ends each step where its bottom is), the buoy as sources on its wetted surface "
-               "that radiate its heave away as rings. Arrows: steer the boat; left click: drop a stone.",
-               /*window_samples=*/0}) {
-        sea_.use_wind_speed(kBreeze);
-        body_params_.boat_length = 6;  // Froude number 0.5 at 4 m/s: a Kelvin wake
-        steering_.throttle = 0.5f;     // about 4 m/s (the thrust against the hull's drag)
-        ocean::ParamRegistry& p = params();
-        sea_.declare(p);
-        renderer_.declare(p);
-        look_.declare(p);
-        body_params_.declare(p);
-        steering_.declare(p);
-        {
-            const auto group = p.group("wake");
-            p.add_choice("cells", &cells_choice_, {"64", "128", "256"}, "the wave field's cells a side");
-            p.add_float("cell", &cell_, 0.1f, 2, "the wave field's cell, metres");
-            p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat has sailed before the first frame");
-            p.add_bool("follow_boat", &follow_boat_, "the camera keeps the boat where it is in the view");
-            p.add_bool("show_wake", &show_wake_, "the wake added to the sea (off: step07's sea, which no body disturbs)");
-            p.add_bool("buoy_waves", &buoy_waves_, "the raft and the buoy make waves as they move (off: they ride the wake on step07's Archimedes, as in step08)");
-            p.add_float("forced_heave", &forced_heave_, 0, 0.5, "a push up and down on the buoy at 1 Hz, its weight times this (0: none)");
-        }
-        use_camera({{0, 0, 0}, 45, 35, 22}, ocean::kOceanReach);
-        offer_bench_figures([this] { return bench_figures(); });
-#ifndef OCEAN_GL_PORTABLE  // step05's backends: GL 4.5 only
-        offer_warm_up([this] { return sea_.choosing_backend(); });
-#endif
+    void declare(ocean::ParamRegistry& p) override {
+        p.add_bool("buoy_waves", &buoy_waves_, "the raft and the buoy make waves as they move (off: they ride the wake on step07's Archimedes, as in step08)");
+        p.add_float("forced_heave", &forced_heave_, 0, 0.5, "a push up and down on the buoy at 1 Hz, its weight times this (0: none)");
     }
 
-private:
-    void init() override {
-        sea_.init(program_factory());
-        sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
-        renderer_.init(program_factory());
-        post_.init(program_factory());
-        painter_.init(program_factory());
+    void field_made(const step08::WakeScene& wake, const std::vector<step07::FloatingBody>& bodies) override {
+        try {
+            buoy_sources_ = std::make_unique<step09::RadiatingBuoy>(wake.field(), bodies[step07::kBuoy]);
+        } catch (const ocean::Error& failure) {
+            // A buoy as dense as the water (it sinks) or too large for the grid has no sources: it
+            // rides the wake on step07's Archimedes.
+            std::cerr << "warning: " << failure.what() << "; the buoy rides the wake without making waves\n";
+            buoy_sources_.reset();
+        }
     }
 
-    step08::WaveFieldSettings field_settings() const {
-        step08::WaveFieldSettings s;
-        s.n = 64 << cells_choice_;
-        s.cell = cell_;
-        // Deep water: the sources' images and their waves (source_hull.hpp) are deep water's.
-        s.depth = std::numeric_limits<double>::infinity();
-        s.absorbing_width = 0.125 * s.n * s.cell;  // an eighth of the side at each edge
-        return s;
-    }
-
-    void update(double time, double dt) override {
-        read_input();
-        const glm::dvec3 eye = camera().eye_world();
-        {
-            ocean::GpuScope timed(timers(), "simulation");
-            sea_.simulate(time, eye);
-        }
-        {
-            ocean::GpuScope timed(timers(), "foam");
-            sea_.update_foam(dt, eye, camera().forward());
-        }
-        {
-            ocean::GpuScope timed(timers(), "sky");
-            sky_->update(look_.sky(time, sea_.wind_direction()), look_.sky_image, look_.sky_image_changes.value);
-        }
-        ocean::GpuScope timed(timers(), "bodies and wake");
-        feed_.update(sea_, time);
-        if (!feed_.ready()) return;
-        if (bodies_built_for_ != body_params_.changed.value || bodies_.empty() || !wake_ ||
-            !step08::same_grid(wake_settings_, field_settings())) {
-            drop_bodies_and_warm_up();
-        }
-        sail(std::min(dt, step07::kMaxBodyFrame));
+    // The wake turned off: the bodies the field held float on step07's Archimedes again, their
+    // dents taken out of the field.
+    void let_go(step08::WakeFrame& frame) override {
+        std::vector<step07::FloatingBody>& bodies = frame.bodies;
+        step08::WaveField& field = frame.wake.field();
+        if (buoy_sources_) buoy_sources_->let_go(bodies[step07::kBuoy]);
+        for (std::size_t b = 0; b < bodies.size(); ++b)
+            if (b != step07::kBoat) {
+                if (!bodies[b].archimedes()) step09::lift_out(field, bodies[b], frame.feed.before());
+                bodies[b].set_archimedes(true);
+            }
     }
 
     // One frame of the bodies and the wake, step08's with the raft in contact and the buoy
     // radiating. The boat floats on the sea without its wake and presses on the field along the
     // way it went (step08); the raft and the buoy move in the same steps as the field, making
     // their waves; a body the field cannot hold floats on the sea with the wake in it.
-    void sail(double dt) {
-        const auto started = std::chrono::steady_clock::now();
-        step07::FloatingBody& boat = bodies_[step07::kBoat];
-        step07::steer(boat, double(steering_.throttle) + key_throttle_, double(steering_.rudder) + key_rudder_);
-        const glm::dvec3 boat_before = boat.position();
-        boat.step(feed_.before(), feed_.now(), dt, feed_.interval());
-        if (follow_boat_) camera().target += glm::dvec3(boat.position().x - boat_before.x, 0, boat.position().z - boat_before.z);
-        if (!show_wake_) {
-            // step07's sea: the field waits where the boat is, to take up from there.
-            const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
-            wake_->place({boat.position().x, boat.position().z}, {along.x, along.z});
-            if (buoy_sources_) buoy_sources_->let_go(bodies_[step07::kBuoy]);
-            for (std::size_t b = 0; b < bodies_.size(); ++b)
-                if (b != step07::kBoat) {
-                    if (!bodies_[b].archimedes()) step09::lift_out(wake_->field(), bodies_[b], feed_.before());
-                    bodies_[b].set_archimedes(true);
-                    bodies_[b].step(feed_.before(), feed_.now(), dt, feed_.interval());
-                }
-            sea_.add_local_waves(nullptr);
-            stones_.clear();
-            wake_ms_ = 0;
-            return;
-        }
+    void step_field(step08::WakeFrame& frame, const Press& press) override {
+        std::vector<step07::FloatingBody>& bodies = frame.bodies;
+        step08::WaveField& field = frame.wake.field();
         // The raft, within the field, in contact with it, and the buoy afloat within it, radiating.
-        step09::BodiesInField in_field{{}, {}, &feed_.before(), &feed_.now(), feed_.interval()};
-        step07::FloatingBody& buoy = bodies_[step07::kBuoy];
+        step09::BodiesInField in_field{{}, {}, &frame.feed.before(), &frame.feed.now(), frame.feed.interval()};
+        step07::FloatingBody& buoy = bodies[step07::kBuoy];
         if (forced_heave_ > 0)  // an impulse each frame: the buoy's weight times forced_heave, at 1 Hz
-            buoy.push({0, buoy.mass() * ocean::kGravity * double(forced_heave_) * std::sin(ocean::kTwoPi * time()) * dt, 0},
+            buoy.push({0, buoy.mass() * ocean::kGravity * double(forced_heave_) * std::sin(ocean::kTwoPi * frame.time) * frame.dt, 0},
                       buoy.position());
-        const bool radiating = buoy_radiating_ = buoy_radiates(wake_->field(), buoy);
+        const bool radiating = buoy_radiating_ = buoy_radiates(field, buoy, frame.feed.before());
         if (radiating)
             in_field.radiating.push_back({&buoy, buoy_sources_.get()});
         else if (buoy_sources_)
             buoy_sources_->let_go(buoy);
-        for (std::size_t b = 0; b < bodies_.size(); ++b) {
-            const bool contact = buoy_waves_ && b != step07::kBoat && step09::can_touch(wake_->field(), bodies_[b]);
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            const bool contact = buoy_waves_ && b != step07::kBoat && step09::can_touch(field, bodies[b]);
             // A body coming into the field brings its dent with it: the water under it settled
             // where its hull is, as Archimedes held it (else the first step would push it all in);
             // one leaving takes its dent away (else the dent would fall back as a ring of waves).
-            if (contact && bodies_[b].archimedes()) step09::settle_under(wake_->field(), bodies_[b], feed_.before());
-            if (!contact && !bodies_[b].archimedes()) step09::lift_out(wake_->field(), bodies_[b], feed_.before());
-            bodies_[b].set_archimedes(!contact);
-            if (contact) in_field.in_contact.push_back(&bodies_[b]);
+            if (contact && bodies[b].archimedes()) step09::settle_under(field, bodies[b], frame.feed.before());
+            if (!contact && !bodies[b].archimedes()) step09::lift_out(field, bodies[b], frame.feed.before());
+            bodies[b].set_archimedes(!contact);
+            if (contact) in_field.in_contact.push_back(&bodies[b]);
         }
         try {
-            press(*wake_, boat, dt, step09::step_with(in_field, contact_));
+            press(step09::step_with(in_field, contact_));
         } catch (const ocean::Error& failure) {
             // Should a contact's system still be singular, the frame goes on without it: its bodies
             // float on Archimedes (and try again next frame), rather than the program stopping.
@@ -180,236 +101,81 @@ private:
             contact_failed_ = true;
             contact_.release();
             for (step07::FloatingBody* body : in_field.in_contact) {
-                step09::lift_out(wake_->field(), *body, feed_.before());
+                step09::lift_out(field, *body, frame.feed.before());
                 body->set_archimedes(true);
             }
         }
-        for (const glm::dvec2& stone : stones_) wake_->drop_stone(stone);
-        stones_.clear();
-        wake_before_ = std::move(wake_now_);
-        wake_now_ = drawn_wake();
-        const step08::SeaWithWake before(feed_.before(), wake_before_), now(feed_.now(), wake_now_);
-        for (std::size_t b = 0; b < bodies_.size(); ++b)
-            if (b != step07::kBoat && bodies_[b].archimedes() && !(b == step07::kBuoy && radiating))
-                bodies_[b].step(before, now, dt, feed_.interval());
-        local_waves_.upload(wake_now_);
-        sea_.add_local_waves(&local_waves_);
-        wake_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    }
+
+    // The bodies step_field moved with the field (the raft in contact, the buoy radiating) do not.
+    bool rides_the_wake(const step08::WakeFrame& frame, std::size_t b) const override {
+        return frame.bodies[b].archimedes() && !(b == step07::kBuoy && buoy_radiating_);
     }
 
     // The field's maps as the window shows it: beside the bodies in contact, their dents (the water
     // under a hull, which the hull hides) left out, their waves kept (contact_step.hpp's pressure).
-    step06::LocalWaveMaps drawn_wake() const {
-        if (contact_.pressure().empty()) return step08::wake_maps(wake_->field(), sea_.choppiness());
-        std::vector<double> heights = wake_->field().heights();
+    step06::LocalWaveMaps drawn_wake(const step08::WakeFrame& frame) const override {
+        if (contact_.pressure().empty()) return step08::wake_maps(frame.wake.field(), frame.choppiness);
+        std::vector<double> heights = frame.wake.field().heights();
         for (std::size_t c = 0; c < heights.size(); ++c) heights[c] += contact_.pressure()[c] / ocean::kGravity;
-        return step08::wake_maps(wake_->field(), sea_.choppiness(), &heights);
+        return step08::wake_maps(frame.wake.field(), frame.choppiness, &heights);
     }
 
-    // Whether the buoy makes waves this frame: switched on, with sources, and as they hold for it.
-    bool buoy_radiates(const step08::WaveField& field, const step07::FloatingBody& buoy) const {
-        return buoy_waves_ && buoy_sources_ && buoy_sources_->holds(field, buoy, feed_.before());
-    }
-
-    // The hull's patch pressed on the field over dt, from where it was to where the boat is now.
-    static void press(step08::WakeScene& wake, const step07::FloatingBody& boat, double dt,
-                      const step08::FieldStep& bodies) {
-        const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
-        wake.press(dt, {boat.position().x, boat.position().z}, {along.x, along.z}, hull_patch(boat), bodies);
-    }
-    // The patch of the water the boat displaces afloat, its mass over the water's density
-    // (Archimedes): its weight is what presses. Not the volume under water at this instant, which
-    // swings as the boat heaves in the sea's waves (and is nothing while it falls on its drop):
-    // the patch would pulse and ring; the waves a heaving hull makes are the raft's contact.
-    static step08::BoatSettings hull_patch(const step07::FloatingBody& boat) {
-        return step08::hull_of(boat.settings().shape.size.x, boat.mass() / step07::kWaterDensity);
-    }
-
-    // step07's bodies dropped in front of the camera; the boat already under way at the speed its
-    // throttle holds (thrust against drag), its wake made by `warm_up` seconds of sailing the
-    // same line, so the window opens on a wake.
-    void drop_bodies_and_warm_up() {
-        bodies_built_for_ = body_params_.changed.value;
-        const glm::vec3 f = camera().forward();
-        const glm::dvec2 ahead = glm::normalize(glm::dvec2(f.x, f.z) + glm::dvec2(1e-9, 0));
-        bodies_ = step07::drop_bodies(body_params_, camera().eye_world(), ahead);
-        step07::FloatingBody& boat = bodies_[step07::kBoat];
-        const double speed = step07::kFullThrust * double(steering_.throttle) * ocean::kGravity /
-                             std::max(double(body_params_.drag), 0.05);
-        const glm::dvec3 along = boat.orientation() * glm::dvec3(1, 0, 0);
-        const glm::dvec2 heading = glm::normalize(glm::dvec2(along.x, along.z));
-        boat.push(boat.mass() * speed * glm::dvec3(heading.x, 0, heading.y), boat.position());
-        // The raft abeam of the boat, 10 m off its course (step07 drops it where this boat, under
-        // way, would sail through it): within the field, where its waves are the field's, and where
-        // the boat's wake reaches it a few seconds on. Put afloat at its draft, not dropped: a 5 m
-        // raft falling 1.5 m flat on the water would splash the view white with its rings.
-        step07::FloatingBody& raft = bodies_[step07::kRaft];
-        const glm::dvec2 beside = glm::dvec2(boat.position().x, boat.position().z) + 10.0 * glm::dvec2(-heading.y, heading.x);
-        const step07::BodySettings& r = raft.settings();
-        const double afloat = step07::query(feed_.now(), beside).height + r.shape.size.y * (0.5 - r.density / step07::kWaterDensity);
-        raft = step07::FloatingBody(r, {beside.x, afloat, beside.y}, raft.orientation());
-        wake_settings_ = field_settings();
-        wake_ = std::make_unique<step08::WakeScene>(wake_settings_);
-        try {
-            buoy_sources_ = std::make_unique<step09::RadiatingBuoy>(wake_->field(), bodies_[step07::kBuoy]);
-        } catch (const ocean::Error& failure) {
-            // A buoy as dense as the water (it sinks) or too large for the grid has no sources: it
-            // rides the wake on step07's Archimedes.
-            std::cerr << "warning: " << failure.what() << "; the buoy rides the wake without making waves\n";
-            buoy_sources_.reset();
+    // --bench: the raft in contact with the field when it is, the buoy radiating when it does,
+    // with a contact of their own and a copy of the buoy's sources.
+    void time_presses(const step08::WakeScene& wake, std::vector<step07::FloatingBody>& bodies,
+                      const step07::SeaFeed& feed, const Press& time) override {
+        step09::BodiesInField in_field{{}, {}, &feed.before(), &feed.now(), feed.interval()};
+        step09::ContactStep contact;
+        for (std::size_t b = 0; b < bodies.size(); ++b)
+            if (b != step07::kBoat && !bodies[b].archimedes()) in_field.in_contact.push_back(&bodies[b]);
+        std::unique_ptr<step09::RadiatingBuoy> sources;
+        if (buoy_radiates(wake.field(), bodies[step07::kBuoy], feed.before())) {
+            sources = std::make_unique<step09::RadiatingBuoy>(*buoy_sources_);
+            in_field.radiating.push_back({&bodies[step07::kBuoy], sources.get()});
         }
-        step08::BoatSettings hull = hull_patch(boat);
-        hull.speed = speed;
-        const glm::dvec2 at(boat.position().x, boat.position().z);
-        wake_->place(at - double(warm_up_) * speed * heading, heading);
-        wake_->sail(warm_up_, hull, 0);
-        wake_now_ = step08::wake_maps(wake_->field(), sea_.choppiness());
-        if (follow_boat_) look_from_behind(boat.position(), heading);
+        time(step09::step_with(in_field, contact));
     }
 
-    // The camera on the boat, from behind it and a little to port, high enough to see the wake's V
-    // open behind it (the view aerial photographs of wakes take).
-    void look_from_behind(glm::dvec3 boat, glm::dvec2 heading) {
-        ocean::Camera& c = camera();
-        c.target = glm::dvec3(boat.x, 0, boat.z);
-        // forward() is (sin yaw, -cos yaw) on the water: yaw along the heading, turned 20 degrees.
-        c.yaw_deg = float(glm::degrees(std::atan2(heading.x, -heading.y))) + 20;
-    }
-
-    // --bench: the wake's CPU time per 1/60 s frame (median of 15, milliseconds), as a machine that
-    // draws 60 frames a second would spend it: a copy of the boat, the raft (in contact with the
-    // field when it is) and the field, the boat going straight on and pressing the field, the
-    // field's maps made each frame; and step05's backends as step07 times them.
-    BenchFigures bench_figures() {
-        BenchFigures figures;
-#ifndef OCEAN_GL_PORTABLE
-        figures = sea_.time_backends(time());
-#endif
-        std::vector<double> times;
-        const auto time_frames = [&times](auto&& frame) {
-            for (int i = 0; i < 15; ++i) {
-                const auto start = std::chrono::steady_clock::now();
-                frame();
-                times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-            }
-        };
-        if (wake_ && !bodies_.empty() && feed_.ready()) {
-            step08::WakeScene scene = *wake_;
-            std::vector<step07::FloatingBody> bodies = bodies_;
-            step09::BodiesInField in_field{{}, {}, &feed_.before(), &feed_.now(), feed_.interval()};
-            step09::ContactStep contact;
-            for (std::size_t b = 0; b < bodies.size(); ++b)
-                if (b != step07::kBoat && !bodies[b].archimedes()) in_field.in_contact.push_back(&bodies[b]);
-            std::unique_ptr<step09::RadiatingBuoy> sources;
-            if (buoy_radiates(scene.field(), bodies[step07::kBuoy])) {
-                sources = std::make_unique<step09::RadiatingBuoy>(*buoy_sources_);
-                in_field.radiating.push_back({&bodies[step07::kBuoy], sources.get()});
-            }
-            try {
-                time_frames([&] {
-                    bodies[step07::kBoat].step(feed_.before(), feed_.now(), 1.0 / 60, feed_.interval());
-                    press(scene, bodies[step07::kBoat], 1.0 / 60, step09::step_with(in_field, contact));
-                    step08::wake_maps(scene.field(), sea_.choppiness());
-                });
-            } catch (const ocean::Error& failure) {  // as sail() does: the run goes on, without this figure
-                std::cerr << "warning: " << failure.what() << "; no wave_field_ms\n";
-                return figures;
-            }
-        }
-        figures.push_back({"wave_field_ms", ocean::median(times)});
-        return figures;
-    }
-
-    // The arrows (held) steer the boat; a left click drops a stone where the cursor meets the sea.
-    void read_input() {
-        const ImGuiIO& io = ImGui::GetIO();
-        key_throttle_ = key_rudder_ = 0;
-        if (!io.WantCaptureKeyboard) {
-            key_throttle_ = double(ImGui::IsKeyDown(GLFW_KEY_UP)) - double(ImGui::IsKeyDown(GLFW_KEY_DOWN));
-            key_rudder_ = double(ImGui::IsKeyDown(GLFW_KEY_RIGHT)) - double(ImGui::IsKeyDown(GLFW_KEY_LEFT));
-        }
-        for (const ocean::InputEvent& press : frame_input().presses)
-            if (press.code == ocean::input::kMouseLeft && !io.WantCaptureMouse) drop_stone_at(glm::dvec2(press.at));
-    }
-
-    void drop_stone_at(glm::dvec2 cursor) {
-        const ImGuiIO& io = ImGui::GetIO();
-        if (io.DisplaySize.x <= 0 || io.DisplaySize.y <= 0) return;
-        const glm::dvec2 uv(cursor.x / io.DisplaySize.x, 1 - cursor.y / io.DisplaySize.y);
-        // The cursor's ray from the eye, to where it meets the mean level (y = 0).
-        const glm::mat4 inverse = glm::inverse(camera().projection(aspect()) * camera().view(sea_.world_origin()));
-        const glm::vec4 near = inverse * glm::vec4(2.0f * glm::vec2(uv) - 1.0f, -1, 1);
-        const glm::vec4 far = inverse * glm::vec4(2.0f * glm::vec2(uv) - 1.0f, 1, 1);
-        const glm::dvec3 from = sea_.world_origin() + glm::dvec3(glm::vec3(near) / near.w);
-        const glm::dvec3 ray = glm::dvec3(glm::vec3(far) / far.w - glm::vec3(near) / near.w);
-        if (!(ray.y < 0)) return;  // above the horizon: no sea there
-        const glm::dvec3 hit = from - (from.y / ray.y) * ray;
-        stones_.push_back({hit.x, hit.z});
-    }
-
-    void render() override {
-        post_.begin(framebuffer_size());
-        const glm::mat4 view_projection = camera().projection(aspect()) * camera().view(sea_.world_origin());
-        {
-            ocean::GpuScope timed(timers(), "ocean");
-            renderer_.draw(sea_, *sky_, look_,
-                           {view_projection, camera().eye_world(), framebuffer_size(), post_.scene_framebuffer(),
-                            post_.depth_texture(), fullscreen_vao()});
-        }
-        painter_.draw(bodies_, sea_.world_origin(), view_projection, camera().eye_world(), *sky_, look_);
-        {
-            ocean::GpuScope timed(timers(), "background");
-            sky_->draw_background(view_projection, fullscreen_vao());
-        }
-        const step06::PostSettings image = look_.post(renderer_.view() == step06::kViewShaded);
-        {
-            ocean::GpuScope timed(timers(), "bloom");
-            post_.bloom(image, fullscreen_vao());
-        }
-        ocean::GpuScope timed(timers(), "tonemap");
-        bind_target();
-        post_.tonemap(image, fullscreen_vao());
-    }
-
-    void ui() override {
-        ImGui::Separator();
-        ImGui::TextWrapped("arrows: steer the boat; left click: drop a stone");
-        if (bodies_.empty()) return;
-        ImGui::TextWrapped("the wake and the bodies: %.2f ms a frame on the CPU", wake_ms_);
-        const step07::FloatingBody &raft = bodies_[step07::kRaft], &buoy = bodies_[step07::kBuoy];
+    bool ui(const std::vector<step07::FloatingBody>& bodies, double wake_ms) const override {
+        if (bodies.empty()) return true;
+        ImGui::TextWrapped("the wake and the bodies: %.2f ms a frame on the CPU", wake_ms);
+        const step07::FloatingBody &raft = bodies[step07::kRaft], &buoy = bodies[step07::kBuoy];
         ImGui::TextWrapped("raft: %s", raft.archimedes() ? "on step07's Archimedes" : "in contact with the field");
         ImGui::TextWrapped("buoy: %s, heaving at %.2f m/s", buoy_radiating_ ? "radiating" : "on step07's Archimedes",
                            buoy.velocity().y);
+        return true;
     }
 
-    // step06's parts.
-    step06::Sea sea_;
-    std::unique_ptr<step06::Sky> sky_;
-    step06::SeaRenderer renderer_;
-    step06::PostProcess post_;
-    step06::LookParams look_;
-    // step07's bodies.
-    std::vector<step07::FloatingBody> bodies_;
-    step07::SeaFeed feed_;
-    step07::BodyPainter painter_;
-    step07::BodyParams body_params_;
-    step07::Steering steering_;
-    unsigned bodies_built_for_ = 0;
-    // The wake: its field, its maps last frame and now, and the textures step06's shaders read.
-    std::unique_ptr<step08::WakeScene> wake_;
-    std::unique_ptr<step09::RadiatingBuoy> buoy_sources_;  // the buoy's, for the field's grid
-    step08::WaveFieldSettings wake_settings_;
-    step06::LocalWaveMaps wake_before_, wake_now_;
-    step06::LocalWaves local_waves_;
+private:
+    // Whether the buoy makes waves this frame: switched on, with sources, and as they hold for it.
+    bool buoy_radiates(const step08::WaveField& field, const step07::FloatingBody& buoy,
+                       const step07::Surface& sea) const {
+        return buoy_waves_ && buoy_sources_ && buoy_sources_->holds(field, buoy, sea);
+    }
+
     // The bodies' waves: the raft's contact (its kernel, the pressure it held), the buoy's sources.
     step09::ContactStep contact_;
-    bool follow_boat_ = true, show_wake_ = true, buoy_waves_ = true, buoy_radiating_ = false;
+    std::unique_ptr<step09::RadiatingBuoy> buoy_sources_;  // the buoy's, for the field's grid
+    bool buoy_waves_ = true, buoy_radiating_ = false;
     bool contact_failed_ = false;  // warned once
-    float cell_ = 0.5, warm_up_ = 20, forced_heave_ = 0;
-    int cells_choice_ = 1;
-    double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held
-    std::vector<glm::dvec2> stones_;
-    double wake_ms_ = 0;
+    float forced_heave_ = 0;
+};
+
+// Deep water: the sources' images and their waves (source_hull.hpp) are deep water's.
+constexpr double kDeepWater = std::numeric_limits<double>::infinity();
+
+class Radiation : public step08::WakeProgram {
+public:
+    Radiation()
+        : WakeProgram({"Radiation", "-",
+                       "Bodies that make the waves that damp them, on step08's wake: the raft in contact with the wave "
+                       "field (the water under it ends each step where its bottom is), the buoy as sources on its "
+                       "wetted surface that radiate its heave away as rings. Arrows: steer the boat; left click: drop "
+                       "a stone.",
+                       /*window_samples=*/0},
+                      std::make_unique<RadiatingBodies>(),
+                      step08::WakeProgramOptions{/*plan_view=*/false, /*depth=*/kDeepWater}) {}
 };
 
 }  // namespace
