@@ -1,6 +1,6 @@
 // The waves a body makes take its energy away: a floating hemisphere released above its rest on
 // calm water decays, and rings for ever without them. Against Hulme (1982), who solved the real
-// hemisphere, two models of it (the README: the contact, sections 2 to 6; the hull of sources, 7 to 10):
+// hemisphere, two models of it (the README: the contact, sections 2 to 6; the hull of sources, 7 to 14):
 //   - as sources on its wetted surface (source_hull.hpp): linear theory's hull. Its added mass at
 //     the instant of a sudden motion is a sphere's in open water; its decay gives Hulme's damping
 //     and added mass within 30 % (measured: damping 1.13 times Hulme's, added mass 0.91 times);
