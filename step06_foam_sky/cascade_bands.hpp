@@ -17,9 +17,10 @@ struct Band {
 };
 
 // Cascade c, of tile side patch_sizes[c] (largest first) on a resolution x resolution grid, keeps
-// the modes with b_c <= |k| < b_{c+1}: b_0 = 0, b_c = 2 pi kWavesPerTileAtBoundary / L_c, and the
-// last band ends at the circle the last grid resolves, pi N / L_3. The bands tile [0, pi N / L_3)
-// without a gap or an overlap.
+// the modes with low <= |k| < high of its band: cascade 0 from k = 0, each later one from where its
+// tile holds kWavesPerTileAtBoundary waves, the last up to the circle the last grid resolves. The
+// bands tile [0, that circle) without a gap or an overlap (sea.md, section 1; how_we_know.md has
+// the bounds).
 std::array<Band, kCascades> cascade_bands(const std::array<double, kCascades>& patch_sizes, int resolution);
 
 }  // namespace step06

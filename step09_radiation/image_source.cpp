@@ -9,7 +9,7 @@ namespace step09 {
 SourceAt source_with_image(glm::dvec3 x, glm::dvec3 xi, glm::dvec3 n) {
     SourceAt at;
     for (int mirrored = 0; mirrored < 2; ++mirrored) {
-        // A source of strength q at s: potential -q / (4 pi r), flow q (x - s) / (4 pi r^3), outwards.
+        // A source of strength q at s: the primer's point source, its potential and its outward flow.
         const glm::dvec3 s = mirrored ? glm::dvec3(xi.x, -xi.y, xi.z) : xi;
         const double q = mirrored ? kImageStrength : 1.0;
         const glm::dvec3 d = x - s;

@@ -2,8 +2,8 @@
 // (normals.hpp is the CPU reference). The sum itself is step02's.
 #include "step02_sine3d/shaders/waves.glsl"
 
-// (h, dh/dx, dh/dz). Each wave's derivative along its direction is w a cos(angle); projected on
-// the axes it gives d.x and d.z times that.
+// (h, dh/dx, dh/dz): the height and its two partial derivatives in the same pass over the waves,
+// each wave differentiated by the chain rule (README, "Derivatives in the same loop").
 vec3 wave_height_gradient(vec2 xz) {
     vec3 result = vec3(0.0);
     for (int i = 0; i < u_wave_count; ++i) {

@@ -47,9 +47,9 @@ vec3 wave_shape(float theta) {
 
 // The chain rule through the warp, for one wave (fbm.hpp's cascade_height_gradient is the CPU
 // reference): the wave (d, w, a) is read at the warped point q, where shape = (W, W', W'') and its
-// gradient is slope. Adds its gradient at the rest position p to total.yz, carried back by the
-// Jacobian jacobian = dq/dp of the point it reads; then moves the Jacobian past this wave's push,
-// q -= u_warp a slope (the caller's next line).
+// gradient is slope. Adds the wave's gradient with respect to the rest position p to total.yz, and
+// keeps jacobian = dq/dp up to date past this wave's push, q -= u_warp a slope (the caller's next
+// line). README "The normal stays exact" derives both.
 void warp_chain_rule(vec2 d, float w, float a, vec3 shape, vec2 slope, inout vec3 total, inout mat2 jacobian) {
     total.yz += transpose(jacobian) * slope;
     jacobian = (mat2(1.0) - u_warp * a * a * w * w * shape.z * outerProduct(d, d)) * jacobian;
@@ -76,7 +76,8 @@ vec3 fbm_height_gradient(vec2 p) {
     return total;
 }
 
-// N = B x T with T = (1, dh/dx, 0), B = (0, dh/dz, 1), as in step03.
+// The unit normal from the gradient: the surface's two tangents crossed, in the order that points
+// out of the water, as step03 builds it (step03's README, "Tangent, bitangent, normal").
 vec3 fbm_normal(vec2 gradient) {
     return normalize(vec3(-gradient.x, 1.0, -gradient.y));
 }

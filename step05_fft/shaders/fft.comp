@@ -5,11 +5,10 @@
 // there, and writes the line back. Two dispatches (x, then z) make the 2D transform. Stockham
 // reorders as it goes, so no bit-reversal pass is needed. The stages are radix 4 (half as many
 // as radix 2, so half the barriers and half the trips through shared memory), with one radix-2
-// stage last when log2 N is odd (N = 128, 512). A stage of radix R with stride p (p = 1, R, R^2 ...):
-//     thread t < N / R, r = t mod p, a_j = x[t + j N / R] zeta^(j r), zeta = e^{+2 pi i / (R p)}
-//     y[(t - r) R + r + q p] = sum_j a_j e^{+2 pi i j q / R},  q = 0 .. R - 1
-// (radix 2 is the butterfly u0 + u1, u0 - u1; radix 4 needs no multiplication beyond the
-// twiddles, e^{+2 pi i j q / 4} being 1, i, -1, -i). The twiddles come from a table of
+// stage last when log2 N is odd (N = 128, 512). A stage of radix R and stride p (p = 1, R, R^2 ...)
+// twiddles R inputs N / R apart and joins them with an R-point inverse DFT, written where the next
+// stage reads them (fft.md, section 3, derives the indices; radix 4 needs no multiplication beyond
+// the twiddles, its DFT's factors being 1, i, -1, -i). The twiddles come from a table of
 // e^{+2 pi i m / N} computed once in double on the CPU (OceanSimulation::twiddles_), not from sin and
 // cos per butterfly. The result is sum_m X[m] e^{+2 pi i m n / N}, unnormalised, like
 // FFTW_BACKWARD.

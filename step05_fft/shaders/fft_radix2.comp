@@ -4,9 +4,7 @@
 // an axis) and ping-pongs between two buffers; README section 3 derives it.
 // Stage s joins pairs of transforms of M = 2^s points into transforms of 2M points. The first
 // stage reads the line in bit-reversed order, which puts the even samples' transform E beside the
-// odd samples' O at every stage: E at [base, base + M), O at [base + M, base + 2M). Butterfly b,
-// with r = b mod M and base = 2M (b div M), computes
-//     X[base + r] = E[r] + ζ^r O[r],   X[base + r + M] = E[r] − ζ^r O[r],   ζ = e^{+2πi/(2M)}
+// odd samples' O at every stage; each butterfly joins one frequency of one pair (fft.md, section 2).
 // The result is sum_m X[m] e^{+2 pi i m n / N}, unnormalised, like FFTW_BACKWARD and fft.comp.
 #ifndef FFT_SIZE
 #define FFT_SIZE 256  // N

@@ -1,7 +1,7 @@
 // One Gerstner wave in closed form (README section 4; GPU Gems 1, chapter 1), in the form of the
-// FFT's maps so that `--set sea=gerstner` can draw it in their place. With theta = k d.p - phase:
-// height A cos(theta), horizontal displacement -Q A d sin(theta), and their derivatives. The CPU
-// reference is step05_fft/gerstner.hpp.
+// FFT's maps so that `--set sea=gerstner` can draw it in their place, with theta = k d.p - phase:
+// the height, the horizontal displacement along d that sharpens the crests, and their derivatives.
+// The CPU reference is step05_fft/gerstner.hpp.
 struct MapSample {
     vec4 displacement;  // (Q Dx, h, Q Dz, Q dDx/dz)
     vec4 slopes;        // (dh/dx, dh/dz, Q dDx/dx, Q dDz/dz)

@@ -2,33 +2,28 @@
 // maps it gives. evolve.comp runs them at every texel; ocean_maps.cpp is the CPU reference.
 // Needs complex_multiply (ocean_layout.glsl), included before this file.
 
-// Texel (i, j) of an N x N spectrum holds the wave vector k = 2 pi (n, m) / L, with n = i in the
-// first half of the row (i < N/2) and n = i - N in the second: the FFT's order, zero and the
-// positive frequencies first, then the negative ones. The same for m along the column.
+// The wave vector k = 2 pi (n, m) / L that texel (i, j) of an N x N spectrum holds, in the order
+// the FFT keeps its frequencies (README, "A math primer").
 vec2 wave_vector(ivec2 texel, int n, float patch_size) {
     ivec2 signed_index = ivec2(texel.x < n / 2 ? texel.x : texel.x - n, texel.y < n / 2 ? texel.y : texel.y - n);
     return (6.2831853 / patch_size) * vec2(signed_index);
 }
 
-// h~(k, t) = h0(k) e^{-i omega t} + conj(h0(-k)) e^{+i omega t}, given phase = omega t reduced to
-// [0, 2 pi): the crests of h0(k) travel along +k, and the sum is Hermitian (h~(-k) = conj(h~(k))),
-// so the height comes out real.
+// The mode at time t from h0(k) and h0(-k), given phase = omega t reduced to [0, 2 pi): the
+// crests of h0(k) travel along +k, and the spectrum stays Hermitian, so the height comes out real
+// (README section 2).
 vec2 evolve_mode(vec2 h0_k, vec2 h0_minus_k, float phase) {
     vec2 rotation = vec2(cos(phase), -sin(phase));  // e^{-i omega t}
     return complex_multiply(h0_k, rotation) +
            complex_multiply(vec2(h0_minus_k.x, -h0_minus_k.y), vec2(rotation.x, -rotation.y));
 }
 
-// The eight maps' spectra from h~, packed two real fields a + i b per complex transform, with
-// u = k/|k| (D~ = +i u h~ for sharp crests, slopes i k h~, derivatives of D one more factor i k):
-//     h + i Dx         = h + i (i ux h)              = (1 - ux) h
-//     Dz + i dh/dx     = i uz h + i (i kx h)         = -kx h + uz (i h)
-//     dh/dz + i dDx/dx = i kz h + i (i kx)(i ux h)   = (kz - kx ux) (i h)
-//     dDz/dz + i dDx/dz = i kz (i uz h) + i (i kz)(i ux h) = -uz (kz h + kx (i h))
-// written as real multiples of h and i h. Not for speed: NVIDIA's driver (580, H100) compiled
-// the nested i (i ...) swizzles of the straightforward version with x and y exchanged, and
-// FftTest.EvolvedSpectraMatchTheFormulas caught it there (llvmpipe was right). k = 0 (the mean
-// level) gives nothing.
+// The eight maps' spectra from h~, packed two real fields a + i b per complex transform (README
+// section 4, "Two real maps per transform"): h + i Dx, Dz + i dh/dx, dh/dz + i dDx/dx and
+// dDz/dz + i dDx/dz, each written as real multiples of h and i h. Not for speed: NVIDIA's driver
+// (580, H100) compiled the nested i (i ...) swizzles of the straightforward version with x and y
+// exchanged, and FftTest.EvolvedSpectraMatchTheFormulas caught it there (llvmpipe was right).
+// k = 0 (the mean level) gives nothing.
 vec2[4] packed_pairs(vec2 h, vec2 k) {
     vec2 pairs[4] = vec2[4](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
     float length_k = length(k);

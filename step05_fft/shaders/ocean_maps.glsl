@@ -1,8 +1,7 @@
-// Sampling the simulation's textures (one layer per cascade; step05 has one) and the normal of
-// the choppy surface. The surface point of rest position p is P(p) = (p.x + l Dx, h, p.z + l Dz),
-// so its tangents are dP/dx = (1 + l dDx/dx, dh/dx, l dDz/dx) and dP/dz = (l dDx/dz, dh/dz,
-// 1 + l dDz/dz), with dDz/dx = dDx/dz, and N = dP/dz x dP/dx. With l = 0 this is step03's
-// normalize(-dh/dx, 1, -dh/dz).
+// Sampling the simulation's textures (one layer per cascade; step05 has one) and what the choppy
+// surface P(p) = (p.x + l Dx, h, p.z + l Dz) needs from them: its normal, from its two tangents,
+// and the Jacobian of its horizontal map (README section 4; the maps hold every derivative both
+// need). With l = 0 the normal is step03's.
 uniform sampler2DArray u_displacement;  // (l Dx, h, l Dz, l dDx/dz)
 uniform sampler2DArray u_slopes;        // (dh/dx, dh/dz, l dDx/dx, l dDz/dz)
 
@@ -23,7 +22,8 @@ vec3 choppy_normal(vec4 displacement, vec4 slopes) {
     return length2 > 1e-24 ? n * inversesqrt(length2) : vec3(0.0, 1.0, 0.0);
 }
 
-// J = (1 + l dDx/dx)(1 + l dDz/dz) - (l dDx/dz)^2: below 0 the surface folds over itself.
+// J, the determinant of the horizontal map's derivatives: how much the map stretches a small square
+// of water; below 0 the surface folds over itself.
 float jacobian(vec4 displacement, vec4 slopes) {
     return (1.0 + slopes.z) * (1.0 + slopes.w) - displacement.w * displacement.w;
 }

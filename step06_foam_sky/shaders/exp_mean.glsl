@@ -1,5 +1,5 @@
-// (1 - e^{-x}) / x, the mean of e^{-s x} over s in [0, 1]: how much of a frame's injection the foam
-// keeps (foam_step.glsl) and how much of the sea-level density a ray meets on average (fog.glsl).
+// (1 - e^{-x}) / x, the mean of e^{-s x} over s in [0, 1], for the closed forms of foam_step.glsl
+// and fog.glsl.
 // By its series near x = 0, where float loses 1 - e^{-x} to cancellation (x = 0 has the limit 1).
 #ifndef EXP_MEAN_GLSL
 #define EXP_MEAN_GLSL
