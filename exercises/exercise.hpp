@@ -41,7 +41,11 @@ struct Exercise {
     // (step05's GPU exercises need backend=gpu_fft: on a CPU-only machine auto picks FFTW).
     std::vector<std::string> run_flags;
     std::function<Verdict(const fs::path& work)> check;
+    // A variant the learner derives with the lesson's method (kDerived): no page gives its answer,
+    // and the copies the chapter's other exercises hand out keep its function empty too.
+    bool derived = false;
 };
+constexpr bool kDerived = true;
 
 // Every exercise, in step and number order (`exercise list`): the chapters' own, each
 // STEP/exercises.cpp registering its list with a Registration at start-up.

@@ -1,9 +1,11 @@
 // exercise list | exercise prepare|check STEP N WORK_DIR | exercise hint|flags STEP N
 // The exercises behind ./ocean exercise and ./ocean check (exercises/README.md).
-//   list:    every exercise, one a line: STEP N  title (file).
+//   list:    every exercise, one a line: STEP N  title (file), the title after "derived: " for
+//            a variant no page answers.
 //   prepare: copies the step's shaders into WORK_DIR and empties one function there (its body
 //            becomes a TODO that compiles), so the step runs on the learner's copy
-//            (--shader-dir, hot reload) with that piece missing.
+//            (--shader-dir, hot reload) with that piece missing; a derived exercise's function in
+//            the same file is emptied too, so no copy shows its answer.
 //   check:   holds the learner's function to the chapter's CPU reference; prints pass, or fail with
 //            a hint. Exit 0 on pass, 1 on fail.
 //   hint:    the formula the task leaves out (the second hint: try first, then read it).
@@ -71,7 +73,8 @@ int check(const Exercise& e, const fs::path& work) {
 int run(const Command& command, const std::vector<Exercise>& every) {
     if (command.verb == Verb::List) {
         for (const Exercise& e : every)
-            std::printf("%s %d  %s (%s)\n", e.step.c_str(), e.number, e.title.c_str(), e.file.c_str());
+            std::printf("%s %d  %s%s (%s)\n", e.step.c_str(), e.number, e.derived ? "derived: " : "", e.title.c_str(),
+                        e.file.c_str());
         return 0;
     }
     const Exercise& e = *std::find_if(every.begin(), every.end(), [&](const Exercise& x) {

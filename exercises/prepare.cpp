@@ -48,12 +48,21 @@ std::optional<std::string> prepare(const Exercise& exercise, const fs::path& wor
             if (entry.is_regular_file()) files.push_back(entry.path());
         if (error) return "cannot list " + from.string() + ": " + error.message();
     }
+    const std::vector<Exercise> every = all();
     for (const fs::path& file : files) {
         std::string text;
         if (auto problem = ocean::read_text_file(file.string(), &text)) return "cannot read " + *problem;
-        if (file.filename() == exercise.file) {
-            const std::optional<std::string> stubbed = replace_body(text, exercise.signature, exercise.stub);
-            if (!stubbed) return "'" + exercise.signature + "' is not a line of " + file.string();
+        // The exercise's own function goes, and so does every other derived exercise's in the same
+        // file: a derived answer is kept from every copy, not only from the pages.
+        std::vector<const Exercise*> emptied;
+        if (file.filename() == exercise.file) emptied.push_back(&exercise);
+        for (const Exercise& other : every)
+            if (other.derived && other.step == exercise.step && other.number != exercise.number &&
+                file.filename() == other.file)
+                emptied.push_back(&other);
+        for (const Exercise* e : emptied) {
+            const std::optional<std::string> stubbed = replace_body(text, e->signature, e->stub);
+            if (!stubbed) return "'" + e->signature + "' is not a line of " + file.string();
             text = *stubbed;
         }
         if (auto problem = ocean::write_file(work / file.filename(), text)) return problem;

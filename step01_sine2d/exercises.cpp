@@ -84,7 +84,7 @@ std::vector<Exercise> chapter() {
                      return step01::sum_of_sines_curvature(kStep01Waves, a.x, kCheckTime);
                  },
                  1e-4, -20, 20, set_step01_waves);
-         }},
+         }, kDerived},
     };
 }
 

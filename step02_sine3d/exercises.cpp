@@ -83,7 +83,7 @@ std::vector<Exercise> chapter() {
                  },
                  1e-4, -60, 60,
                  [](const ocean::ShaderProgram& p) { step02::upload_ripple(p, kStep02Ripple, kCheckTime); });
-         }},
+         }, kDerived},
     };
 }
 

@@ -126,7 +126,7 @@ std::vector<Exercise> chapter() {
                      return step03::phong_specular(step03::to_vec3(n), step03::to_vec3(v), light);
                  },
                  1e-4, [&](const ocean::ShaderProgram& p) { step03::upload_light(p, light); }, &fixed_sun);
-         }},
+         }, kDerived},
     };
 }
 

@@ -129,7 +129,7 @@ std::vector<Exercise> chapter() {
                      return glm::dvec3(w.value, w.first, w.second);
                  },
                  1e-4, -10, 10);
-         }},
+         }, kDerived},
     };
 }
 

@@ -355,7 +355,7 @@ std::vector<Exercise> chapter() {
          {"--set", "spreading=donelan_banner"},
          [](const fs::path& work) {
              return check_cpp(work, "donelan_banner.cpp", kSech2Driver, 200, sech2_reference, 1e-9);
-         }},
+         }, kDerived},
     };
 }
 

@@ -153,7 +153,7 @@ std::vector<Exercise> chapter() {
                      return step06::foam_step(a.x, 0.0, 0.5 * b.x, s);
                  },
                  1e-4, 0, 1);
-         }},
+         }, kDerived},
         {"step06_foam_sky", 4, "The tessellation level", "tessellation.glsl", "float edge_level(vec2 a, vec2 b) {",
          "    // TODO (exercise 4): how many segments the edge from a to b (x, z, at y = 0) is cut into.\n"
          "    return 16.0;\n",

@@ -168,7 +168,7 @@ std::vector<Exercise> chapter() {
          {},
          [](const fs::path& work) {
              return check_cpp(work, "hull_forces.cpp", kHeaveDriver, 200, heave_reference, 1e-9);
-         }},
+         }, kDerived},
     };
 }
 

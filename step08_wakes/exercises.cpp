@@ -123,7 +123,7 @@ std::vector<Exercise> chapter() {
          {"--set", "kelvin_lines=true"},
          [](const fs::path& work) {
              return check_cpp(work, "kelvin.cpp", kKelvinDriver, 100, kelvin_reference, 1e-12);
-         }},
+         }, kDerived},
     };
 }
 

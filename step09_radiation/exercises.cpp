@@ -132,7 +132,7 @@ std::vector<Exercise> chapter() {
          {},
          [](const fs::path& work) {
              return check_cpp(work, "image_source.cpp", kSurfaceDriver, 300, surface_reference, 1e-12);
-         }},
+         }, kDerived},
     };
 }
 

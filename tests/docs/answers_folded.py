@@ -9,9 +9,11 @@ summary that says it is the answer. A code excerpt's line is compared as the pag
 `//>` note aside (tests/docs/excerpts.py).
 
 Some exercises keep their answer back altogether: a variant the learner derives with the lesson's
-method, marked in the chapter's exercises.cpp by a line `// derived: ...` just above its entry
-(`{"stepNN_name", N, ...`). Their answer stands in no lesson page of any chapter, not even folded,
-and every chapter with exercises has at least one.
+method, `kDerived` in the chapter's exercises.cpp (`exercise list` prints its title after
+"derived: "), with a line `// derived: why` just above its entry (`{"stepNN_name", N, ...`). Their
+answer stands in no lesson page of any chapter, not even folded, nor in the copy any other exercise
+of the chapter hands out (`exercise prepare` empties a derived function wherever it copies it), and
+every chapter with exercises has at least one.
 
 Nor may the copy the learner edits print the answer in its comments. The comments it keeps from the
 chapter's file (the stub's own lines aside) are read as one text per run of comment lines, cut into
@@ -39,12 +41,12 @@ TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*|\d+(?:\.\d+)?|\S")
 
 
 def exercises():
-    """(step, number, the file the learner edits) of every exercise the tool lists."""
+    """(step, number, the file the learner edits, derived) of every exercise the tool lists."""
     listed = subprocess.run([tool, "list"], capture_output=True, text=True, check=True).stdout
     for line in listed.splitlines():
-        m = re.match(r"^(step\d\d_[a-z0-9_]+) (\d+) .*\(([^()]+)\)$", line)
+        m = re.match(r"^(step\d\d_[a-z0-9_]+) (\d+)  (derived: )?.*\(([^()]+)\)$", line)
         if m:
-            yield m.group(1), m.group(2), m.group(3)
+            yield m.group(1), m.group(2), m.group(4), bool(m.group(3))
 
 
 def pieces(text):
@@ -149,12 +151,21 @@ if list(giveaways(MUST_CATCH, [], secret)):
 if list(giveaways(MUST_PASS, MUST_PASS, secret)):
     failures.append("self-check: a comment that says only what the task prints is caught")
 
-derived = derived_exercises()
+marked = derived_exercises()
 listed = list(exercises())
+derived = {(step, number) for step, number, _, is_derived in listed if is_derived}
+for step, number in sorted(marked ^ derived):
+    failures.append(f"{step} exercise {number}: '// derived:' in exercises.cpp and kDerived (exercise list) disagree")
+copies, derived_answers = {}, {}
 with tempfile.TemporaryDirectory() as scratch:
-    for step, number, edited in listed:
+    for step, number, edited, _ in listed:
         work, task = prepare(step, number, scratch)
+        copies[(step, number)] = work
         answer = answer_lines(work, step)
+        if (step, number) in derived:
+            derived_answers[(step, number)] = {line for line in answer if not line.startswith("//")}
+            if not derived_answers[(step, number)]:
+                failures.append(f"{step} exercise {number}: derived, but its copy lacks no line of code")
         checked += 1
         hint = subprocess.run([tool, "hint", step, number], capture_output=True, text=True, check=True).stdout
         secret = answer_pieces(hint.split("\n", 1)[-1], task)
@@ -176,10 +187,20 @@ with tempfile.TemporaryDirectory() as scratch:
                     how = "derived, so shown in no lesson page" if kept_back else "unfolded"
                     failures.append(f"{page.relative_to(repo)}:{line_number}: {step} exercise {number}'s answer, "
                                     f"{how}: {text[:70]}")
-for step in sorted({step for step, _, _ in listed}):
+    # No other exercise's copy hands out a derived answer: it is emptied wherever it is copied.
+    for (step, number), work in copies.items():
+        for (derived_step, derived_number), secret_lines in derived_answers.items():
+            if derived_step != step or derived_number == number:
+                continue
+            for copy in sorted(work.iterdir()):
+                for line_number, line in enumerate(copy.read_text(encoding="utf-8").splitlines(), 1):
+                    if line.strip() in secret_lines:
+                        failures.append(f"{copy.name} (as exercise {number} of {step} prepares it):{line_number}: "
+                                        f"derived exercise {derived_number}'s answer: {line.strip()[:60]}")
+for step in sorted({step for step, _, _, _ in listed}):
     if not any(s == step for s, _ in derived):
-        failures.append(f"{step}: no exercise marked '// derived:' (one whose answer no lesson page gives)")
-for step, number in sorted(derived - {(step, number) for step, number, _ in listed}):
+        failures.append(f"{step}: no derived exercise (kDerived: one whose answer no lesson page gives)")
+for step, number in sorted(marked - {(step, number) for step, number, _, _ in listed}):
     failures.append(f"{step}/exercises.cpp: '// derived:' marks exercise {number}, which `exercise list` lacks")
 for failure in failures:
     print("FAIL:", failure)
