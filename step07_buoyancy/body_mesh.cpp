@@ -47,8 +47,9 @@ BodyMeshes::BodyMeshes() {
     hull_ = upload(hull_triangles());
 }
 
-// Triangles (position, normal) of the unit hull: the two sides lofted between sections, the deck
-// and the transom (the stern's flat end), each flat-shaded, counter-clockwise from outside.
+// Triangles (position, normal) of the unit hull: the two sides lofted between sections and the
+// deck, each flat-shaded, counter-clockwise from outside. The sides meet at the bow and the stern
+// (hull_half_beam is 0 at both ends), so no end face is needed.
 std::vector<glm::vec3> BodyMeshes::hull_triangles() {
     const int sections = 32, levels = 8;
     const auto side_point = [](int i, int j, float sign) {
@@ -58,7 +59,7 @@ std::vector<glm::vec3> BodyMeshes::hull_triangles() {
     std::vector<glm::vec3> out;
     const auto triangle = [&out](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 outward) {
         glm::vec3 n = glm::cross(b - a, c - a);
-        if (glm::length(n) < 1e-9f) return;  // the bow's edge, where the sides meet
+        if (glm::length(n) < 1e-9f) return;  // at the bow's and the stern's edges, where the sides meet
         n = glm::normalize(n);
         if (glm::dot(n, outward) < 0) std::swap(b, c), n = -n;
         out.insert(out.end(), {a, n, b, n, c, n});
@@ -77,12 +78,6 @@ std::vector<glm::vec3> BodyMeshes::hull_triangles() {
                         c = side_point(i + 1, levels, 1), d = side_point(i, levels, 1);
         triangle(a, b, c, {0, 1, 0});
         triangle(a, c, d, {0, 1, 0});
-    }
-    for (int j = 0; j < levels; ++j) {  // the transom, x = -0.5
-        const glm::vec3 a = side_point(0, j, -1), b = side_point(0, j, 1), c = side_point(0, j + 1, 1),
-                        d = side_point(0, j + 1, -1);
-        triangle(a, b, c, {-1, 0, 0});
-        triangle(a, c, d, {-1, 0, 0});
     }
     return out;
 }

@@ -1,5 +1,5 @@
 // The bodies' meshes: a unit cube (sides 1, scaled to a box), a unit-diameter sphere and a unit
-// hull (hull_half_beam's sections lofted, with its deck and transom), with normals, drawn by
+// hull (hull_half_beam's sections lofted, with its deck), with normals, drawn by
 // shaders/body.vert and body.frag.
 #pragma once
 

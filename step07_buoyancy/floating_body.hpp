@@ -32,8 +32,9 @@ struct Shape {
     glm::dvec3 size{1.0};  // a box's or a hull's length (x), depth (y, up) and beam (z); a sphere's diameter in x
 };
 // A boat's hull in unit coordinates (x from stern -0.5 to bow +0.5, y from keel -0.5 to deck
-// +0.5): its half-beam there as a share of the beam. A fine bow, a fuller stern with a transom,
-// and a V-shaped bottom. hull_cells fills it and body_mesh.cpp draws it.
+// +0.5): its half-beam there as a share of the beam. A fine bow and a fuller stern, both closing
+// to a knife edge at their ends (half-beam 0), over flared sections: 0.3 of the half-beam at the
+// keel, a flat bottom, widening to all of it at the deck. hull_cells fills it and body_mesh.cpp draws it.
 double hull_half_beam(double x, double y);
 double shape_volume(const Shape& shape);
 // The diagonal of the inertia tensor per kilogram, in the body's frame.
