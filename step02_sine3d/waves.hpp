@@ -62,8 +62,8 @@ inline double ripple_height(const Ripple& ripple, double x, double z, double tim
     return ripple.amplitude * spread * std::sin(r * w - time * ripple.speed * w);
 }
 
-// The flat facet shading's normal (facet.glsl): two edges of a triangle crossed, normalised and
-// turned to face up (+y).
+// The flat facet shading's normal (facet.glsl): two vectors in a triangle's plane crossed,
+// normalised and turned to face up (+y).
 struct Vector { double x, y, z; };
 inline Vector facet_normal(const Vector& a, const Vector& b) {
     Vector n{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};

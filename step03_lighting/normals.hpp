@@ -3,10 +3,11 @@
 //   h(x, z)   = sum_i a_i sin(d_i.(x,z) w_i - t phi_i)                    (step02)
 //   dh/dx     = sum_i w_i a_i d_ix cos(d_i.(x,z) w_i - t phi_i)          same loop, same angle
 //   dh/dz     = sum_i w_i a_i d_iz cos(d_i.(x,z) w_i - t phi_i)
-//   T = (1, dh/dx, 0),  B = (0, dh/dz, 1),  N = B x T = normalize(-dh/dx, 1, -dh/dz)   (y up)
+//   T = (1, dh/dx, 0),  B = (0, dh/dz, 1),  N = normalize(B x T) = normalize(-dh/dx, 1, -dh/dz)   (y up)
 //
 // The notes write T = <1, 0, d/dx> and B = <0, 1, d/dz>: those are the vectors of a z-up world.
-// With y up the slope goes in the y component, and N = B x T (T x B points down into the water).
+// With y up the slope goes in the y component, and N = normalize(B x T) (T x B points down into
+// the water).
 #pragma once
 
 #include "step02_sine3d/waves.hpp"

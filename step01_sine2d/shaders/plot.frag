@@ -17,7 +17,7 @@ uniform bool u_show_curvature;
 uniform float u_line_width;    // pixels
 uniform vec3 u_wave_colors[MAX_WAVES];
 
-// 1 on the curve, fading to 0 one pixel beyond half the line width.
+// 1 on the curve, fading to 0 across the pixel at the line's edge (half the width from the curve).
 float line(float value, float curve, float slope, vec2 metres_per_pixel, float width) {
     float dy = (value - curve) / metres_per_pixel.y;
     float pixel_slope = slope * metres_per_pixel.x / metres_per_pixel.y;

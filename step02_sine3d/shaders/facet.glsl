@@ -1,6 +1,6 @@
-// The flat facet shading's normal (waves.hpp's facet_normal is the CPU reference): a triangle's
-// two edges, here the screen-space derivatives of the world position, crossed, and turned to
-// face up. A first look at what step03 does exactly: a normal is the cross product of two
+// The flat facet shading's normal (waves.hpp's facet_normal is the CPU reference): two vectors
+// in a triangle's plane, here the screen-space derivatives of the world position (one-pixel
+// steps, not the triangle's edges), crossed, and turned to face up. A first look at what step03 does exactly: a normal is the cross product of two
 // tangents of the surface.
 vec3 facet_normal(vec3 along_x, vec3 along_y) {
     vec3 n = normalize(cross(along_x, along_y));

@@ -23,7 +23,7 @@ vec3 finite_difference_gradient(vec2 xz, float s) {
                 (wave_height(xz + dz) - wave_height(xz - dz)) / (2.0 * s));
 }
 
-// N = B x T with T = (1, dh/dx, 0) and B = (0, dh/dz, 1).
+// N = normalize(B x T) with T = (1, dh/dx, 0) and B = (0, dh/dz, 1).
 vec3 surface_normal(vec2 gradient) {
     return normalize(vec3(-gradient.x, 1.0, -gradient.y));
 }
