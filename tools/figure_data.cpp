@@ -279,7 +279,8 @@ Figure spectra() {
                << '\n';
     }
     const double pm_peak = step05::pierson_moskowitz_peak_omega(p.wind_speed);
-    const double k_min = 2 * kPi / p.patch_size, k_max = kPi * p.resolution / p.patch_size;
+    // The shortest wave the tile holds is at its corner, (N/2 - 1, N/2 - 1): the Nyquist row, n = N/2, is held at zero.
+    const double k_min = 2 * kPi / p.patch_size, k_max = std::sqrt(2.0) * 2 * kPi * (p.resolution / 2 - 1) / p.patch_size;
     const double omega_min = step05::dispersion(k_min, p.depth), omega_max = step05::dispersion(k_max, p.depth);
     f.script << "set title \"Wave spectra S(ω), wind 14 m/s (step05's spectrum.cpp)\"\n"
              << "set xlabel \"ω (rad/s)\"\nset ylabel \"S(ω) (m² s / rad)\"\nset xrange [0:3]\n"
@@ -291,7 +292,7 @@ Figure spectra() {
              << "set key at graph 0.98, graph 0.55\n"
              << "set arrow from " << omega_min << ", graph 0 to " << omega_min << ", graph 1 nohead ls 5 lc rgb '#aa3333'\n"
              << "set label \"one 500 m tile's longest wave\" at " << omega_min - 0.03 << ", graph 0.5 center rotate by 90 tc rgb '#aa3333'\n"
-             << "set label \"its shortest (N = 256): ω = " << std::round(omega_max * 100) / 100 << ", off the plot\" at 1.6, graph 0.22 tc rgb '#aa3333'\n"
+             << "set label \"its shortest (N = 256, at the grid's corner): ω = " << std::round(omega_max * 100) / 100 << ", off the plot\" at 1.6, graph 0.22 tc rgb '#aa3333'\n"
              << R"gp(plot 'spectra.dat' using 1:2 with lines ls 1 title "JONSWAP, 100 km fetch (γ = 3.3)", \
      '' using 1:3 with lines ls 2 title "JONSWAP, 100 km, γ = 1: no peak enhancement", \
      '' using 1:5 with lines ls 4 title "Pierson–Moskowitz: fully developed", \
@@ -868,14 +869,14 @@ Figure kelvin_construction() {
     f.data << "# the wake's edge: from the boat at arcsin(1/3) behind\n0 0\n" << -1.15 << ' ' << 1.15 * std::tan(kelvin)
            << "\n\n0 0\n" << -1.15 << ' ' << -1.15 * std::tan(kelvin) << '\n';
     f.script << "set terminal pngcairo size 900,620 font \"DejaVu Sans,12\" linewidth 1.5\nset output 'kelvin_construction.png'\nset bmargin 10\n"
-             << "set title \"Kelvin's angle: where the energy of the waves made at P has gone, t seconds later\"\n"
+             << "set title \"Kelvin's angle: where the energy of the waves made at O has gone, t seconds later\"\n"
              << "set xlabel \"along the track, in units of U t (the boat at 0, sailing to the right)\"\n"
              << "set ylabel \"across (U t)\"\nset size ratio -1\nset xrange [-1.2:0.1]\nset yrange [-0.45:0.45]\n"
              << "set key outside bottom center horizontal font \",10\"\n"
-             << "set label 1 \"P\" at -1.02,-0.04 right\nset label 2 \"boat\" at 0.02,-0.04\n"
+             << "set label 1 \"O\" at -1.02,-0.04 right\nset label 2 \"boat\" at 0.02,-0.04\n"
              << "set label 3 \"19.47°\" at -0.3,0.035\n"
-             << "plot 'kelvin_construction.dat' index 0 with lines ls 1 title \"waves made at P: energy at (U t / 2) cos θ along θ\", \\\n"
-             << "     '' index 1 with lines ls 2 title \"made later (U t = 0.6)\", \\\n"
+             << "plot 'kelvin_construction.dat' index 0 with lines ls 1 title \"waves made at O, t ago: energy at (U t / 2) cos θ along θ\", \\\n"
+             << "     '' index 1 with lines ls 2 title \"made 0.6 t ago: the same circle, 0.6 times as large\", \\\n"
              << "     '' index 2 with linespoints ls 3 pt 7 ps 0.8 title \"the cusp waves, θ = 35.26°\", \\\n"
              << "     '' index 3 with lines ls 5 title \"the edge: sin α = (U t / 4) / (3 U t / 4) = 1/3\"\n";
     return f;

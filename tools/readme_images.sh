@@ -151,9 +151,10 @@ panel "$root/step08_wakes/wake_on_the_sea.png" 480x270 2 \
 echo step08_wakes/wake_on_the_sea.png
 shot step08_wakes "$scratch/wake_slow.png" --size 640x360 --frames 2 --dt 0.1 --set plan=true --set kelvin_lines=true
 shot step08_wakes "$scratch/wake_fast.png" --size 640x360 --frames 2 --dt 0.1 --set plan=true --set kelvin_lines=true --set boat_speed=9
+# Each tile crops 16:9 out of the 16:9 shot (x and y alike), so the panel keeps the plan's angles.
 panel "$root/step08_wakes/wake_speeds.png" 480x270 2 \
-  "4 m/s, Fr 0.52: the edge at 19.47 degrees|$scratch/wake_slow.png|0.1,0,0.9,1" \
-  "9 m/s, Fr 1.17: the largest waves inside it|$scratch/wake_fast.png|0.1,0,0.9,1"
+  "4 m/s, Fr 0.52: the edge at 19.47 degrees|$scratch/wake_slow.png|0.1,0.1,0.9,0.9" \
+  "9 m/s, Fr 1.17: the largest waves inside it|$scratch/wake_fast.png|0.1,0.1,0.9,0.9"
 echo step08_wakes/wake_speeds.png
 
 # step09's bodies in step08's scene 0.1 s after the drop (as step08's shot): nothing has rung yet.
