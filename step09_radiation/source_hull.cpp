@@ -127,8 +127,9 @@ SourceHull::SourceHull(const WaveField& field, const SourceHullSettings& s) : se
 
     // The memory part, mode by mode, for the hull centred at the grid's origin. A field mode
     // phi^ e^(i k.x) / N^2 (N^2 the inverse transform's scale) reaches down as e^(|k| y): along the
-    // normal n, its flow is (|k| n_y + i k.n) times it. The parts come in mirror pairs (x, -x) and
-    // (z, -z), so each sum of e^(i k.x) is its cosines' sum (the sines cancel).
+    // normal n, its flow is (|k| n_y + i k.n) times it. Mirrored across x and across z, the parts
+    // also come in pairs (x, z) and (-x, -z), so each sum of e^(i k.x) is its cosines' sum (the
+    // sines cancel in each such pair, not in a pair mirrored across one plane only).
     cells_ = field.n();
     cell_area_ = field.settings().cell * field.settings().cell;
     const int half = cells_ / 2;
@@ -223,7 +224,7 @@ SourceHull::Reading SourceHull::read(const WaveField& field, glm::dvec2 centre) 
             // The mode's potential and height where the hull is (the readings are real).
             const double phi = times(-0.5 * times_i(both[mode] - mirrored), at_centre).real();
             const double eta = times(0.5 * (both[mode] + mirrored), at_centre).real();
-            const double phi_rate = -g * eta;  // the surface's condition: dphi^/dt = -g eta^
+            const double phi_rate = -g * eta;  // the surface's condition, the forcing's P left out: dphi^/dt = -g eta^
             const std::size_t kept = quarter(i, j);
             // The waves' pressure on the hull, and the change of the sources that cancel their flow
             // along it (their dphi/dt is part of the pressure as well): the heave's table.
