@@ -279,7 +279,7 @@ std::vector<Exercise> chapter() {
          "Write packed_pairs: the spectra of the choppy displacement and of the slopes, packed two per transform.\n"
          "Every map is h~ times a factor: a derivative d/dx of e^{i k.x} is a factor i kx. The horizontal\n"
          "displacement is the height's phase turned by a quarter along u = k/|k|, towards the crest (README\n"
-         "section 4: derive its sign from one Gerstner wave). Pack two real maps a, b as a + i b (README\n"
+         "section 4 gives its sign and why: translate it into vec2s). Pack two real maps a, b as a + i b (README\n"
          "section 4, 'Two real maps per transform'):\n"
          "h + i Dx, Dz + i dh/dx, dh/dz + i dDx/dx, dDz/dz + i dDx/dz; zeros at k = 0. The starter is the height\n"
          "alone: round waves lit as if flat.",
@@ -320,8 +320,8 @@ std::vector<Exercise> chapter() {
          "steepness is Q: the step passes gerstner_steepness / (k A)). In a real wave the water moves in\n"
          "circles: each point rises at the crest and moves forward there, sinks in the trough and moves\n"
          "back. So a Gerstner wave moves the point of rest position p up by A cos(theta) and also sideways,\n"
-         "along the wave's direction d, by Q A times a quarter-turned copy of the same oscillation. Find\n"
-         "the sign that moves points towards the crest (then crests sharpen and troughs widen), and fill the\n"
+         "along the wave's direction d, by Q A times a quarter-turned copy of the same oscillation. Translate\n"
+         "gerstner.md's sign, which moves points towards the crest (crests sharpen, troughs widen), and fill the\n"
          "maps' form: displacement (Q Dx, h, Q Dz, Q dDx/dz), slopes (dh/dx, dh/dz, Q dDx/dx, Q dDz/dz), with\n"
          "theta = k d.p - phase and wave = (d.x, d.z, k, A). At which Q k A does the crest become a cusp?\n"
          "The step draws your wave with sea=gerstner; try gerstner_steepness = 0.5, 1, 1.3.",
@@ -340,11 +340,11 @@ std::vector<Exercise> chapter() {
          "    return 0;\n",
          "Write sech2_spreading (C++, in donelan_banner.cpp; \"Making the sea right\", Directions): the\n"
          "spectrum gives each frequency its energy, and the spreading shares it among directions theta\n"
-         "from the wind. For that, D(theta) must integrate to 1 over the circle, theta from -pi to pi:\n"
-         "then no energy is made or lost. Hasselmann's lobe is cos^2s(theta / 2) times N(s); Donelan and\n"
+         "from the wind. For that, G(theta) must integrate to 1 over the circle, theta from -pi to pi:\n"
+         "then no energy is made or lost. Hasselmann's lobe is cos^2s(theta / 2) times C(s); Donelan and\n"
          "Banner measured another, sech^2(beta theta) (sech = 1 / cosh), narrow at the peak (beta 2.28)\n"
          "and wide for the short waves (beta down to 0.4). Find the factor that normalises it for every\n"
-         "beta > 0, and return D. The program draws it with --set spreading=donelan_banner.\n"
+         "beta > 0, and return G. The program draws it with --set spreading=donelan_banner.\n"
          "./ocean check compiles your file with a small program and compares 200 angles and betas from\n"
          "0.02 to 50; tests/test_spectrum.cpp holds it to the midpoint rule.",
          "sech^2 has an antiderivative you know from tanh's derivative. The integral runs over the circle, "
