@@ -351,7 +351,7 @@ std::vector<Exercise> chapter() {
          "not the whole line: sech^2 never reaches 0, and where beta is small the lobe reaches round to "
          "theta = +-pi, so the whole line's factor is too small there.",
          "the integral of sech^2(beta theta) over [-pi, pi] is 2 tanh(beta pi) / beta, so "
-         "D = beta / (2 tanh(beta pi)) sech^2(beta theta) (beta / 2 on the whole line)",
+         "G = beta / (2 tanh(beta pi)) sech^2(beta theta) (beta / 2 on the whole line)",
          {"--set", "spreading=donelan_banner"},
          [](const fs::path& work) {
              return check_cpp(work, "donelan_banner.cpp", kSech2Driver, 200, sech2_reference, 1e-9);
