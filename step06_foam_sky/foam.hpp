@@ -16,8 +16,8 @@
 // in a second or two, and the residual it leaves peaks, then fades as e^{-r_b t}.
 // Each frame integrates both exactly over dt, with J held through the frame (the same step at two
 // rates): the same foam at any frame rate. foam.frag does the same on the GPU, through
-// foam_step.glsl:
-//     a <- a e^{-r_a dt} + q (1 - e^{-r_a dt}) / r_a      (q dt when r_a = 0), at most 1.
+// foam_step.glsl. Deriving that step is exercise 3 (foam.md gives the method); foam_step below is
+// its answer.
 //
 // J is the Jacobian of the rendered surface, the sum of the cascades: a fold made by two
 // cascades together foams, and view=foam agrees with view=jacobian. The cascades' tiles never
