@@ -59,7 +59,7 @@ inline double foam_steady_state(double jacobian, const FoamSettings& s) {
     return std::clamp(s.injection * std::max(0.0, s.threshold - jacobian) / std::max(s.decay_rate, 0.1), 0.0, 1.0);
 }
 
-// One frame of dt seconds, exact for a J that holds through it (the header's formula). The clamp
+// One frame of dt seconds, exact for a J that holds through it (foam.md, section 3: its method). The clamp
 // commutes with the exact solution (it moves monotonically towards q / r), so it costs nothing.
 inline double foam_step(double foam, double jacobian, double dt, const FoamSettings& s) {
     const double q = s.injection * std::max(0.0, s.threshold - jacobian);
