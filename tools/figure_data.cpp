@@ -104,7 +104,7 @@ set key top center horizontal
 set yrange [-1.2:1.9]
 set multiplot layout 2,1 title "Wave profiles: what each chapter adds to the crest"
 set title "step04's two shapes, of equal crest-to-trough height 1 − e⁻² = 0.86; the sine of steps 01-03 for scale"
-set xlabel "phase θ / π"
+set xlabel "angle θ / π (the whole angle: step03 calls it angle_i)"
 set ylabel "height / amplitude"
 set key at graph 0.99, graph 0.99 right top vertical font ",10"
 plot 'wave_profiles.dat' index 0 using 1:2 with lines ls 5 title "sin θ (steps 01-03)", \
@@ -292,7 +292,7 @@ Figure spectra() {
              << "set key at graph 0.98, graph 0.55\n"
              << "set arrow from " << omega_min << ", graph 0 to " << omega_min << ", graph 1 nohead ls 5 lc rgb '#aa3333'\n"
              << "set label \"one 500 m tile's longest wave\" at " << omega_min - 0.03 << ", graph 0.5 center rotate by 90 tc rgb '#aa3333'\n"
-             << "set label \"its shortest (N = 256, at the grid's corner): ω = " << std::round(omega_max * 100) / 100 << ", off the plot\" at 1.6, graph 0.22 tc rgb '#aa3333'\n"
+             << "set label \"its shortest (N = 256, at the\\ngrid's corner): ω = " << std::round(omega_max * 100) / 100 << ", off the plot\" at 1.45, graph 0.22 tc rgb '#aa3333'\n"
              << R"gp(plot 'spectra.dat' using 1:2 with lines ls 1 title "JONSWAP, 100 km fetch (γ = 3.3)", \
      '' using 1:3 with lines ls 2 title "JONSWAP, 100 km, γ = 1: no peak enhancement", \
      '' using 1:5 with lines ls 4 title "Pierson–Moskowitz: fully developed", \
