@@ -202,7 +202,7 @@ std::vector<Exercise> chapter() {
          "    return (6.2831853 / patch_size) * vec2(texel);\n",
          "Write wave_vector: which wave vector k does texel (i, j) of the N x N spectrum hold? On a tile of side\n"
          "L only whole numbers of wavelengths fit, so k = 2 pi (n, m) / L. An FFT of N points cannot tell\n"
-         "frequency n from n - N (e^{2 pi i n x / N} is the same at every sample x); the README's primer lays\n"
+         "frequency n from n - N (e^{2 pi i n u / N} is the same at every sample u); the README's primer lays\n"
          "out the FFT's order (its table for N = 8): translate it to GLSL for any N. Texel N/2, the Nyquist\n"
          "frequency, means -N/2 (the check expects k = -(N/2) 2 pi / L there). The step runs the GPU FFT\n"
          "(backend=gpu_fft) so that your shader is used.",
@@ -269,7 +269,7 @@ std::vector<Exercise> chapter() {
          "r = t mod p picks the twiddle, as in exercise 5. Twiddle the inputs before the 4-point inverse DFT, not after; "
          "output q is a sum of the four inputs turned by q quarter turns per j.",
          "r = t & (p - 1); a_j = x[t + j N/4] zeta^(j r), zeta^(j r) = twiddle[j r N / (4 p)];\n"
-         "y[(t - r) 4 + r + q p] = sum_j a_j i^(j q), q = 0..3: q = 1 is a0 + i a1 - a2 - i a3, q = 2 is\n"
+         "out[(t - r) 4 + r + q p] = sum_j a_j i^(j q), q = 0..3: q = 1 is a0 + i a1 - a2 - i a3, q = 2 is\n"
          "a0 - a1 + a2 - a3, q = 3 is a0 - i a1 - a2 + i a3",
          {"--set", "backend=gpu_fft", "--set", "fft=stockham4"},
          [](const fs::path& work) { return check_fft(work, step05::GpuFftForm::Stockham4); }},
