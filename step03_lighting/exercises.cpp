@@ -102,7 +102,7 @@ std::vector<Exercise> chapter() {
          "    return 0.0;\n",
          "Write phong_specular, Phong's glint, older than Blinn-Phong's: a mirror sends the sun's light (towards\n"
          "u_to_sun, L) off along one direction M, the sun mirrored about the normal (the README's figure draws\n"
-         "R, the eye mirrored, instead), and the glint is the eye's direction (to_eye, V) against M, raised to\n"
+         "it), and the glint is the eye's direction (to_eye, V) against M, raised to\n"
          "an exponent. First find M from L and the unit normal: split L into its part along the normal and its\n"
          "part across it; a mirror keeps one and turns the other round. Then the exponent: at the same\n"
          "u_shininess s Phong's lobe is much narrower than Blinn-Phong's. For an eye in the plane of\n"

@@ -569,14 +569,15 @@ Figure lighting_vectors() {
     const Vec3 t = step03::normalize(step03::tangent(g)), n = step03::normal(g);
     const Vec3 v = step03::normalize({-0.82, 0.57, 0}), l = step03::normalize({0.77, 0.64, 0});
     const Vec3 h = step03::normalize({v.x + l.x, v.y + l.y, v.z + l.z});
-    const double vn = step03::dot(v, n);
-    const Vec3 r{2 * vn * n.x - v.x, 2 * vn * n.y - v.y, 0};
+    // M, the sun mirrored about N: where a flat mirror along the surface sends the sunlight (Phong's R).
+    const double ln = step03::dot(l, n);
+    const Vec3 m{2 * ln * n.x - l.x, 2 * ln * n.y - l.y, 0};
     f.data << "\n\n# x y dx dy label\n";
     const double length = 3.0;
     const struct {
         const char* label;
         Vec3 d;
-    } arrows[] = {{"T", t}, {"N", n}, {"V (to the eye)", v}, {"L (to the sun)", l}, {"H", h}, {"R", r}};
+    } arrows[] = {{"T", t}, {"N", n}, {"V (to the eye)", v}, {"L (to the sun)", l}, {"H", h}, {"M", m}};
     for (const auto& a : arrows)
         f.data << x0 << ' ' << g.height << ' ' << length * a.d.x << ' ' << length * a.d.y << " \"" << a.label << "\"\n";
     f.script << R"gp(set title "The vectors of the lighting model at one point (step03's normals.hpp)"
