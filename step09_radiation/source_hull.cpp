@@ -240,7 +240,7 @@ SourceHull::Reading SourceHull::read(const WaveField& field, glm::dvec2 centre) 
 std::vector<double> SourceHull::surface_source(const Reading& reading, double heave_speed, double ahead, const WaveField& field,
                                                glm::dvec2 centre) const {
     // Green's identity over the water: what the sources put through the free surface, per mode,
-    // is sum_i A_i (Psi_i dphi_s/dn - phi_s N_i) over the hull, where dphi_s/dn is the hull's speed
+    // is sum_i dS_i (Psi_i dphi_s/dn - phi_s N_i) over the hull, where dphi_s/dn is the hull's speed
     // along its normal less the field's flow there (held at the step's middle), and phi_s the
     // sources' potential. The hull's own heave goes through its table, the one the force is read
     // with; the field's flow, cancelled, through Psi and N.

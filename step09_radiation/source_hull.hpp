@@ -87,7 +87,7 @@ private:
     std::vector<double> band_area_;                  // m^2
     std::vector<double> inverse_influence_;          // bands x bands, row major
     double added_mass_ = 0;
-    std::vector<double> area_potential_;             // bands x bands: A_i (potential S)_ij, potential[i][j] at band i's point per unit strength on band j
+    std::vector<double> area_potential_;             // bands x bands: dS_i (potential S)_ij, dS_i band i's area, potential[i][j] at band i's point per unit strength on band j
     // Per band and mode, for the hull centred at the grid's origin: the band's mean of a mode's
     // flow along the normal per unit of the potential's transform, and of its potential. Per mode:
     // the heave's table, the force on the hull per unit of a mode's dphi^/dt, which also writes the
