@@ -172,7 +172,7 @@ void FloatingBody::substep(double h, double share) {
     // Semi-implicit Euler: velocities first, then positions with the new velocities. Symplectic:
     // it conserves a nearby energy exactly, so an undamped oscillator's energy stays within a
     // band of about h omega / 2 of its start instead of growing, as explicit Euler's would.
-    force.y *= mass_ / (mass_ + heave_added_mass_);  // the water carried in heave takes its share (none in step07)
+    force.y *= mass_ / (mass_ + heave_added_mass_);  // the water carried in heave takes its share (none by default)
     velocity_ += h * force / mass_;
     position_ += h * velocity_;
     const glm::dvec3 gyroscopic = glm::cross(angular_velocity_, inertia * angular_velocity_);

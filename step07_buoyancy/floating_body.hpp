@@ -77,18 +77,20 @@ public:
     void push(glm::dvec3 impulse, glm::dvec3 at);
     // Steering: a force (N) at a point of the body's frame, for the next step only.
     void add_force(glm::dvec3 force_world, glm::dvec3 at_body);
-    // Whether the water holds the body up by Archimedes on the sea's surface (step07; the
-    // default) or by a push found after each step elsewhere (add_water_push: step09, where the
-    // body's hull is in contact with a field of waves it makes). The drag stays either way.
+    // Whether the water holds the body up by Archimedes on the sea's surface (the default), or
+    // another model of the water pushes it, found after each step and given with add_water_push
+    // (a water that moves with the hull, which Archimedes on a given surface cannot see). The drag
+    // stays either way.
     void set_archimedes(bool on) { archimedes_ = on; }
     bool archimedes() const { return archimedes_; }
     // A force (N) and torque (N m) held over the last step of dt seconds, added after it: the
     // velocities change by F dt / m and I^-1 tau dt, and the position and orientation move as
     // the step's substeps would have moved them (travel_per_acceleration).
     void add_water_push(glm::dvec3 force, glm::dvec3 torque, double dt);
-    // Water that moves with the body when it heaves (kg): its vertical motion answers to the
-    // vertical force over its mass plus this. None in step07 (see the header's last lines); step09
-    // gives its buoy the added mass of the sources on its hull (step09_radiation/radiating_buoy.hpp).
+    // Water that moves with the body when it heaves (kg, the added mass motion.md section 10
+    // estimates): its vertical motion answers to the vertical force over its mass plus this, and
+    // the heave slows by sqrt(1 + added / mass). None by default: the program's bodies heave as
+    // the model's closed form says.
     void set_heave_added_mass(double kg) { heave_added_mass_ = kg; }
     double heave_added_mass() const { return heave_added_mass_; }
     // How far a step of dt seconds moves a body per unit of a constant acceleration held over it:

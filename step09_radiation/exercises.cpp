@@ -4,84 +4,49 @@
 // exercise tool (exercises/) gathers every chapter's.
 #include "exercises/exercise.hpp"
 
+#include "step09_radiation/exercise_cases.hpp"
 #include "step09_radiation/image_source.hpp"
 
-#include <cmath>
-#include <random>
 #include <string>
 
 namespace exercises {
 
 namespace {
 
-// Exercise 1's cases: a source under the surface (0.05 to 2 m down), a point of the water near it
-// (within 3 m, under the surface), a random unit direction; all from one seed per case.
-struct SourceCase {
-    glm::dvec3 x, xi, n;
-};
-SourceCase source_case(int index) {
-    std::mt19937 random(std::uint32_t(3000 + index));
-    std::uniform_real_distribution<double> unit(-1, 1), zero_one(0, 1);
-    SourceCase c;
-    c.xi = {unit(random), -0.05 - 1.95 * zero_one(random), unit(random)};
-    c.x = {c.xi.x + 3 * unit(random), -0.01 - 2.99 * zero_one(random), c.xi.z + 3 * unit(random)};
-    c.n = {unit(random), unit(random), unit(random)};
-    const double length = std::sqrt(c.n.x * c.n.x + c.n.y * c.n.y + c.n.z * c.n.z);
-    c.n = length > 1e-3 ? c.n / length : glm::dvec3(0, 1, 0);
-    return c;
-}
+// The cases (exercise_cases.hpp), the chapter's answers on them, and the program that prints the
+// learner's on the same cases.
 std::vector<double> source_reference(int index) {
-    const SourceCase c = source_case(index);
+    const step09::SourceCase c = step09::source_case(index);
     const step09::SourceAt at = step09::source_with_image(c.x, c.xi, c.n);
     return {at.potential, at.along};
 }
-const char* kSourceDriver = R"(#include "step09_radiation/image_source.hpp"
-#include <cmath>
+const char* kSourceDriver = R"(#include "step09_radiation/exercise_cases.hpp"
+#include "step09_radiation/image_source.hpp"
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 int main(int argc, char** argv) {
     const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
     for (int index = 0; index < cases; ++index) {
-        std::mt19937 random(std::uint32_t(3000 + index));
-        std::uniform_real_distribution<double> unit(-1, 1), zero_one(0, 1);
-        glm::dvec3 xi(unit(random), -0.05 - 1.95 * zero_one(random), unit(random));
-        glm::dvec3 x(xi.x + 3 * unit(random), -0.01 - 2.99 * zero_one(random), xi.z + 3 * unit(random));
-        glm::dvec3 n(unit(random), unit(random), unit(random));
-        const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-        n = length > 1e-3 ? n / length : glm::dvec3(0, 1, 0);
-        const step09::SourceAt at = step09::source_with_image(x, xi, n);
+        const step09::SourceCase c = step09::source_case(index);
+        const step09::SourceAt at = step09::source_with_image(c.x, c.xi, c.n);
         std::printf("%.17g %.17g\n", at.potential, at.along);
     }
 }
 )";
 
-// Exercise 2's cases: a source 0.05 to 2 m down, a point of the surface 0 to 5 m across from the
-// point above it.
-struct SurfaceCase {
-    double across = 0, depth = 0;
-};
-SurfaceCase surface_case(int index) {
-    std::mt19937 random(std::uint32_t(4000 + index));
-    std::uniform_real_distribution<double> zero_one(0, 1);
-    return {5 * zero_one(random), 0.05 + 1.95 * zero_one(random)};
-}
 std::vector<double> surface_reference(int index) {
-    const SurfaceCase c = surface_case(index);
+    const step09::SurfaceCase c = step09::surface_case(index);
     return {step09::flow_through_surface(c.across, c.depth)};
 }
-const char* kSurfaceDriver = R"(#include "step09_radiation/image_source.hpp"
+const char* kSurfaceDriver = R"(#include "step09_radiation/exercise_cases.hpp"
+#include "step09_radiation/image_source.hpp"
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 int main(int argc, char** argv) {
     const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
     for (int index = 0; index < cases; ++index) {
-        std::mt19937 random(std::uint32_t(4000 + index));
-        std::uniform_real_distribution<double> zero_one(0, 1);
-        const double across = 5 * zero_one(random);
-        const double depth = 0.05 + 1.95 * zero_one(random);
-        std::printf("%.17g\n", step09::flow_through_surface(across, depth));
+        const step09::SurfaceCase c = step09::surface_case(index);
+        std::printf("%.17g\n", step09::flow_through_surface(c.across, c.depth));
     }
 }
 )";

@@ -204,6 +204,47 @@ TEST(FloatingBody, ABoxHeavesWithThePeriodOfItsSpring) {
     EXPECT_LT(swing(y.size() - 240), 0.5 * swing(0));
 }
 
+TEST(FloatingBody, AddedMassSlowsTheHeaveAsTheSpringSays) {
+    // motion.md section 10: a box carries water as it heaves, about 1960 kg for this 2400 kg box
+    // (a disc of its waterplane's area), and a real box heaves about 1.35 times more slowly. With
+    // set_heave_added_mass the whole vertical force moves m + A: (m + A) y'' = -rho_w g S y - c y',
+    // c = m drag, so the period is 2 pi / sqrt(g/d m/(m + A) - (drag m / (2 (m + A)))^2).
+    const double density = 600, drag = 0.2, added = 1960;
+    const double draft = density / step07::kWaterDensity;
+    FloatingBody body(box({2, 1, 2}, density, drag), {0, 0.5 - draft + 0.05, 0});
+    body.set_heave_added_mass(added);
+    const double dt = 1.0 / 240, m = body.mass(), share = m / (m + added);
+    std::vector<double> y;
+    for (int i = 0; i < 240 * 16; ++i) {
+        body.step(kCalm, kCalm, dt);
+        y.push_back(body.position().y);
+    }
+    const double decay = drag * share / 2;
+    const double expected = ocean::kTwoPi / std::sqrt(ocean::kGravity / draft * share - decay * decay);
+    std::cout << "heave period with " << added << " kg of water " << heave_period(y, dt, 0.5 - draft)
+              << " s, predicted " << expected << " s\n";
+    EXPECT_NEAR(heave_period(y, dt, 0.5 - draft), expected, 0.05 * expected);
+    const double bare = ocean::kTwoPi / std::sqrt(ocean::kGravity / draft - drag * drag / 4);
+    EXPECT_NEAR(expected / bare, 1.35, 0.02);  // the README's "a third longer"
+}
+
+TEST(FloatingBody, AWaterPushHeldOverAStepMovesItAsItsSubstepsWould) {
+    // With Archimedes off, a push of the body's weight given after each step (add_water_push)
+    // must undo gravity exactly: the substeps move a constant acceleration's body dt^2 (n + 1) / (2n)
+    // (travel_per_acceleration), and the push moves it that far back. Out of the water, at two frame
+    // times (two and five substeps), the body stays where it is.
+    for (const double dt : {1.0 / 60, 1.0 / 25}) {
+        FloatingBody body(box({1, 1, 1}, 500), {0, 5, 0});
+        body.set_archimedes(false);
+        for (int i = 0; i < 200; ++i) {
+            body.step(kCalm, kCalm, dt);
+            body.add_water_push({0, body.mass() * ocean::kGravity, 0}, glm::dvec3(0.0), dt);
+        }
+        EXPECT_NEAR(body.position().y, 5.0, 1e-9) << "dt " << dt;
+        EXPECT_NEAR(body.velocity().y, 0.0, 1e-9) << "dt " << dt;
+    }
+}
+
 TEST(FloatingBody, ASphereHeavesWithThePeriodOfItsWaterplane) {
     // The program's buoy (1.2 m) raised 2 cm above its rest and let go heaves with
     // sphere_heave_period (exercise 3): the period the simulation shows, from its zero crossings,
