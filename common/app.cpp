@@ -236,15 +236,19 @@ void App::frame(const TestProbes& probes, int frame, double dt, double real_dt) 
         if (frame_input_.drag_ended) report_camera();
     }
 
-    update(time_, dt);
     const bool drawable = framebuffer_size_.x > 0 && framebuffer_size_.y > 0;  // zero while minimised
+    const bool split = drawable && split_view_ && split_variants_;
+    const SplitVariants variants = split ? split_variants_() : SplitVariants{};
+    const bool update_each_side = split && variants.update_each_side;
+    if (!update_each_side) update(time_, dt);
     if (drawable) {
-        const auto render_frame = [this] {
+        const auto render_frame = [this, update_each_side, dt] {
+            if (update_each_side) update(time_, dt);  // with this side's parameters
             bind_target();
             render();
         };
-        if (split_view_ && split_variants_) {
-            if (auto error = split_.render(params_, split_variants_(), framebuffer_size_,
+        if (split) {
+            if (auto error = split_.render(params_, variants, framebuffer_size_,
                                            context_->target_framebuffer(), render_frame))
                 show_message(*error);
         } else {

@@ -14,7 +14,8 @@
 // One frame, in this order (App::frame in app.cpp):
 //   1. input: the window's events since the last frame, each press in order (F1, Esc, F5, C act
 //      here, input_events.hpp); the camera moves (mouse, keys); frame_input() holds the rest;
-//   2. update(time, dt): once, GPU passes included;
+//   2. update(time, dt): once, GPU passes included (once per side with a split view whose
+//      variants change what it computes: SplitVariants::update_each_side);
 //   3. render(): into the target; twice with the split view, once per variant (split_view.hpp);
 //   4. the panel: the framework's widgets, then ui(), showing this frame's state; what the user
 //      changes there takes effect from the next frame's update();

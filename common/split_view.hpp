@@ -4,7 +4,8 @@
 // parameters the variants set are put back as they were (their values kept typed: nothing else
 // is touched). Work that must happen once a
 // frame, whatever is shown (advancing a simulation, accumulating foam), belongs in update(),
-// which runs once before the frame's renders.
+// which runs once before the frame's renders; variants that change what update() computes
+// (update_each_side) have it run before each side's render instead.
 #pragma once
 
 #include "common/gl.hpp"
@@ -22,6 +23,10 @@ namespace ocean {
 struct SplitVariants {
     std::string left_label, right_label;
     std::vector<std::string> left, right;  // "name=value" each
+    // The variants differ in what update() computes, not only in how it is drawn (a transform's
+    // backend: each side's maps come from its own): update() runs before each side's render,
+    // with that side's parameters, instead of once before both.
+    bool update_each_side = false;
 };
 
 class SplitView {

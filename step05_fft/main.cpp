@@ -6,7 +6,8 @@
 // displacement and slope maps (fft.comp: Stockham in shared memory), which displace the grid.
 // Three transform backends to compare: the notes' naive DFT, the GPU FFT, and FFTW on the CPU.
 // Without compute shaders (the portable profile: macOS, the browser) the same passes run as
-// fragment passes (fragment_simulation.hpp) and there is no backend to choose.
+// fragment passes (fragment_simulation.hpp) and there is no backend to choose: the profile is
+// chosen once, in sea_simulation.hpp and transform_choice.hpp, not here.
 // Controls: as step02; the panel's "spectrum" group, the backend and the map views.
 #include "common/app.hpp"
 #include "common/constants.hpp"
@@ -17,31 +18,16 @@
 #include "step05_fft/export.hpp"
 #include "step05_fft/ocean_maps.hpp"
 #include "step05_fft/ocean_params.hpp"
-#ifdef OCEAN_GL_PORTABLE
-#include "step05_fft/fragment_simulation.hpp"
-#else
-#include "step05_fft/ocean_simulation.hpp"
-#endif
+#include "step05_fft/sea_simulation.hpp"
 #include "step05_fft/spectrum_view.hpp"
+#include "step05_fft/transform_choice.hpp"
 
 #include <imgui.h>
 
 #include <cmath>
-#include <iostream>
 #include <memory>
 
 namespace {
-
-// The simulation the window runs. In the GL 4.5 profile: compute passes, with a choice of
-// transforms (OceanSimulation's backends: the notes' DFT, the GPU FFT, FFTW). Where there are no
-// compute shaders (GL 4.1 on macOS, ES 3.0, WebGL 2): the same passes as fragment passes, the same
-// maps (FragmentSimulation), and no choice of backend.
-#ifdef OCEAN_GL_PORTABLE
-using Simulation = step05::FragmentSimulation;
-#else
-using Simulation = step05::OceanSimulation;
-using step05::Backend;
-#endif
 
 class FftOcean : public ocean::App {
 public:
@@ -55,7 +41,7 @@ public:
         // (common/camera.cpp).
         auto& p = params();
         ocean_params_.declare(p);
-        offer_backends();  // GL 4.5 only: the transform's parameters, benchmark and split view
+        offer_transforms();  // GL 4.5 only: the transform's parameters, benchmark and split view
         p.add_choice("sea", &sea_, {"spectrum", "gerstner"},
                      "the FFT's sea, or one Gerstner wave in closed form along the wind (section 4)");
         p.add_float("gerstner_wavelength", &gerstner_.wavelength, 1, 500, "sea=gerstner: the wave's length, m")
@@ -81,30 +67,32 @@ public:
         use_camera(ocean::camera_view("deck"));  // an open sea, seen from a ship's deck (12 m up)
         // --export DIR: this frame's maps as PFM files and a list of the parameters (export.hpp).
         offer_export([this](const std::string& dir) {
-            step05::export_maps(dir, gpu_->displacement_texture(), gpu_->slopes_texture(), 0, gpu_->resolution(),
+            step05::export_maps(dir, simulation_->displacement_texture(), simulation_->slopes_texture(), 0,
+                                simulation_->resolution(),
                                 ocean_params_.spectrum.patch_size, time(), ocean_params_.choppiness, params());
         });
     }
 
 private:
     void init() override {
-        gpu_ = std::make_unique<Simulation>(program_factory());
+        simulation_ = std::make_unique<step05::SeaSimulation>(program_factory());
     }
 
-    void update(double /*time*/, double /*dt*/) override {
+    // A new spectrum when one of its parameters moved, then the maps at `time`.
+    void update(double time, double /*dt*/) override {
         grid_params_.update(grid_);
-        if (spectrum_built_for_ != ocean_params_.changes.value) {  // a spectrum parameter moved
-            spectrum_built_for_ = ocean_params_.changes.value;
+        if (spectrum_made_for_ != ocean_params_.changes.value) {
+            spectrum_made_for_ = ocean_params_.changes.value;
             const step05::SpectrumParams& wanted = ocean_params_.spectrum;
             spectrum_ = std::make_unique<step05::InitialSpectrum>(step05::initial_spectrum(wanted));
-            gpu_->set_spectra({spectrum_.get()});
+            simulation_->set_spectra({spectrum_.get()});
             spectrum_view_.update(wanted, *spectrum_);
             height_variance_ = step05::resolved_variance(wanted);
         }
+        transforms_.simulate(*simulation_, time, ocean_params_.choppiness, timers());
     }
 
     void render() override {
-        simulate_frame();
         const glm::vec3 clear = step03::LightParams::background_srgb();
         clear_target(clear);
         if (view_ > 0) {
@@ -119,7 +107,7 @@ private:
         ocean_program->set("u_resolution", ocean_params_.spectrum.resolution);
         ocean_program->set("u_wireframe", int(wireframe_));
         ocean_program->set("u_background", step03::srgb_to_linear(clear));
-        gpu_->bind_maps(*ocean_program);
+        simulation_->bind_maps(*ocean_program);
         // Only the grid's chunks that may be in view (the plane reaches the horizon all round, the
         // view sees a wedge of it), widened by how far a vertex can move.
         double margin = step05::largest_displacement(height_variance_, ocean_params_.choppiness);
@@ -150,7 +138,7 @@ private:
         p->set("u_map", map);
         p->set("u_range", range);
         p->set("u_resolution", glm::vec2(framebuffer_size()));
-        gpu_->bind_maps(*p);
+        simulation_->bind_maps(*p);
         p->set("u_spectrum_image", 3);
         ocean::bind_texture(3, GL_TEXTURE_2D, spectrum_view_.texture());
         glUseProgram(p->id());
@@ -160,86 +148,27 @@ private:
     void ui() override {
         ImGui::Separator();
         spectrum_view_.draw_ui();
-        backends_ui();
+        transforms_.ui(*simulation_, time());
     }
 
-#ifdef OCEAN_GL_PORTABLE
-    // One simulation, timed whole.
-    void offer_backends() {}
-    void simulate_frame() {
-        ocean::GpuScope timed(timers(), "simulation");
-        gpu_->simulate(time(), ocean_params_.choppiness);
+    // The transform's parameters, --bench's table of the backends against FFTW's floor, the
+    // warm-up while auto decides, and the split view of the notes' DFT against the GPU FFT: where
+    // the build has transforms to choose between (transform_choice.hpp).
+    void offer_transforms() {
+        transforms_.declare(params());
+        if (!step05::TransformChoice::kOffered) return;
+        offer_bench_figures([this] { return transforms_.bench_figures(*simulation_, time()); });
+        offer_warm_up([this] { return transforms_.warming_up(simulation_.get()); });
+        offer_split_view([this] { return transforms_.split_variants(ocean_params_.spectrum.resolution); });
     }
-    void backends_ui() {}
-#else
-    // The transform's two parameters; --bench's table of the backends against FFTW's floor; the
-    // warm-up while auto decides; the split view of the notes' DFT against the GPU FFT.
-    void offer_backends() {
-        auto& p = params();
-        p.add_choice("backend", &backend_, step05::backend_names(),
-                     "inverse transform: naive DFT on the GPU (N <= 64), GPU FFT, FFTW on the CPU, or auto "
-                     "(the faster of the last two, timed on the first frames)");
-        p.add_choice("fft", &fft_form_, step05::gpu_fft_form_names(),
-                     "the GPU FFT's form: plain radix 2 (a dispatch a stage) or radix 4 in Stockham's order "
-                     "(every stage in shared memory); the same result");
-        offer_bench_figures([this] {
-            const step05::BackendTimes times = step05::time_backends(*gpu_, time(), 9);
-            for (const auto& line : times.lines()) std::cout << "bench: " << line << "\n";
-            return times.figures();
-        });
-        offer_warm_up([this] { return Backend(backend_) == Backend::Auto && (!gpu_ || gpu_->auto_deciding()); });
-        // Above the DFT's resolution the left half is the GPU FFT too (backend() falls back): its
-        // label says so, as the picture shows it.
-        offer_split_view([this] {
-            const std::string left = ocean_params_.spectrum.resolution > step05::kMaxDftSize
-                                         ? "naive DFT (off above " + std::to_string(step05::kMaxDftSize) + ": GPU FFT)"
-                                         : "naive DFT";
-            return SplitVariants{left, "GPU FFT", {"backend=dft"}, {"backend=gpu_fft"}};
-        });
-    }
-
-    Backend backend() {
-        const Backend wanted = Backend(backend_);
-        if (wanted == Backend::Dft && gpu_->resolution() > step05::kMaxDftSize) {
-            if (!warned_dft_)
-                std::cerr << "warning: the naive DFT is for resolution <= 64; using the GPU FFT at "
-                          << gpu_->resolution() << "\n";
-            warned_dft_ = true;
-            return Backend::GpuFft;
-        }
-        return wanted;
-    }
-
-    void simulate_frame() {
-        gpu_->set_gpu_fft_form(step05::GpuFftForm(fft_form_));
-        const Backend chosen = backend();
-        if (chosen == Backend::Auto) {
-            // While auto decides, frames alternate the backends, whose passes differ: one figure
-            // for the whole simulation, as step06 keeps.
-            ocean::GpuScope timed(timers(), "simulation");
-            gpu_->simulate(time(), chosen, ocean_params_.choppiness);
-        } else {
-            gpu_->simulate(time(), chosen, ocean_params_.choppiness, &timers());  // each pass timed
-        }
-        if (auto decision = gpu_->take_auto_decision()) std::cout << "backend auto " << *decision << std::endl;  // flushed: a log follows the run
-    }
-
-    void backends_ui() {
-        if (ImGui::Button("compare the backends")) backend_times_ = step05::time_backends(*gpu_, time(), 3).lines();
-        for (const auto& line : backend_times_) ImGui::TextUnformatted(line.c_str());
-    }
-
-    int backend_ = int(Backend::Auto), fft_form_ = int(step05::GpuFftForm::Stockham4);
-    std::vector<std::string> backend_times_;
-    bool warned_dft_ = false;
-#endif
 
     step05::OceanParams ocean_params_;
     step03::LightParams light_;
     ocean::GridParams grid_params_{800, 400};  // several tiles: the sea reaches the horizon
-    std::unique_ptr<Simulation> gpu_;
+    step05::TransformChoice transforms_;
+    std::unique_ptr<step05::SeaSimulation> simulation_;
     std::unique_ptr<step05::InitialSpectrum> spectrum_;
-    unsigned spectrum_built_for_ = 0;
+    unsigned spectrum_made_for_ = 0;  // ocean_params_.changes when the spectrum was made
     step05::SpectrumView spectrum_view_;
     ocean::GridMesh grid_;
     bool cull_ = true;
@@ -248,7 +177,7 @@ private:
     struct {
         float wavelength = 24, amplitude = 1.2f, steepness = 0.8f;  // k A = 0.31: a steep wind wave
     } gerstner_;
-    double height_variance_ = 0;  // m^2: the spectrum's resolved variance (step06 keeps the same)
+    double height_variance_ = 0;  // m^2: the spectrum's resolved variance
     bool wireframe_ = false;
 };
 

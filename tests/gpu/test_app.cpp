@@ -144,4 +144,43 @@ TEST(App, BadInputIsRefusedBeforeAnyContextIsMade) {
     EXPECT_EQ(step.rendered, 0);
 }
 
+// A step whose split variants set `level`, and which notes the level each update() sees.
+class SplitProbe : public ocean::App {
+public:
+    explicit SplitProbe(bool update_each_side) : App({"split probe", "-", "a step for testing the split view"}) {
+        params().add_float("level", &level_, 0, 1, "grey level of the clear colour");
+        offer_split_view([update_each_side] {
+            SplitVariants variants{"dark", "light", {"level=0.2"}, {"level=0.8"}};
+            variants.update_each_side = update_each_side;
+            return variants;
+        });
+    }
+    std::vector<float> levels_updated;
+    int rendered = 0;
+
+private:
+    void update(double, double) override { levels_updated.push_back(level_); }
+    void render() override {
+        ++rendered;
+        glClearColor(level_, level_, level_, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    float level_ = 0.5f;
+};
+
+TEST(App, SplitViewUpdatesOnceAFrameWithTheUsersParameters) {
+    SplitProbe step(false);
+    ASSERT_EQ(step.run({"--headless", "--size", "32x16", "--frames", "2", "--split"}, kWhere), 0);
+    EXPECT_EQ(step.levels_updated, (std::vector<float>{0.5f, 0.5f}));
+    EXPECT_EQ(step.rendered, 4);
+}
+
+// A variant that changes what update() computes (step05's transform backend) gets its own update.
+TEST(App, SplitViewWhoseSidesUpdateEachSideUpdatesBeforeEachRender) {
+    SplitProbe step(true);
+    ASSERT_EQ(step.run({"--headless", "--size", "32x16", "--frames", "2", "--split"}, kWhere), 0);
+    EXPECT_EQ(step.levels_updated, (std::vector<float>{0.2f, 0.8f, 0.2f, 0.8f}));
+    EXPECT_EQ(step.rendered, 4);
+}
+
 }  // namespace
