@@ -1,6 +1,6 @@
 # add_step(NAME SOURCES ... [LIBRARY ...] SHADERS ... [LINKS ...] [TESTS ...] [GPU_TESTS ...]
 #          [TEST_SHADERS ...] [EXERCISES ...] [GOLDEN file])
-# declares one chapter:
+# declares one step, the program of a chapter, with what it is made of and tested by:
 #  - the executable NAME (folder, target and window title share the name),
 #  - with LIBRARY, a static library NAME_lib of the chapter's technique, which the step, the
 #    tests and later chapters link (step06 links step05_fft_lib),

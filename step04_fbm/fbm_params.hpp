@@ -1,6 +1,6 @@
 // step04's wave parameters, declared once and bound to the fields the math reads. Those that make
 // new waves (count, wavelength, amplitude, gain, lacunarity, speed, seed, cascades) bump
-// `waves_changed`; the shape and the warp are read every frame and bump nothing, and neither does
+// `changes`; the shape and the warp are read every frame and bump nothing, and neither does
 // anything outside this class (the camera, the light, the grid). So a camera drag rebuilds no
 // waves (Step04Params.OnlyWaveParametersRebuildTheWaves).
 #pragma once
@@ -16,10 +16,10 @@ public:
     int shape = int(Shape::ExpSine), wave_count = 20, seed = 1, cascade_count = 2;
     float base_wavelength = 40, amplitude = 1.2f, gain = 0.82f, lacunarity = 1.18f, speed_scale = 1;
     float warp = 4, cascade_ratio = 0.37f;
-    ocean::Generation waves_changed;
+    ocean::Generation changes;
 
     // Every parameter but the shape and the warp changes the waves themselves: those bump
-    // waves_changed and the step rebuilds its cascades (the shape picks a compile-time variant of
+    // `changes` and the step rebuilds its cascades (the shape picks a compile-time variant of
     // the shaders, `#define SHAPE`; the warp is a uniform).
     void declare(ocean::ParamRegistry& p) {
         const auto fbm_group = p.group("fbm");
@@ -27,7 +27,7 @@ public:
                      "wave shape: sin(x), exp(sin(x) - 1) with sharp crests and flat troughs, or "
                      "((1 + sin(x)) / 2)^3 (GPU Gems 1's sharpened sine)");
         {
-            const auto waves_group = p.group("fbm", &waves_changed);
+            const auto waves_group = p.group("fbm", &changes);
             p.add_int("wave_count", &wave_count, 1, kMaxWavesPerCascade, "waves in each cascade");
             p.add_float("base_wavelength", &base_wavelength, 1, 500, "wavelength of wave 0, metres").logarithmic();
             p.add_float("amplitude", &amplitude, 0, 10, "amplitude of wave 0 (a0), metres");
@@ -39,7 +39,7 @@ public:
         }
         p.add_float("warp", &warp, 0, 10,
                     "domain warping strength (beta): each wave pushes the next ones' input by warp * a * grad f");
-        const auto cascades_group = p.group("cascades", &waves_changed);
+        const auto cascades_group = p.group("cascades", &changes);
         p.add_int("cascade_count", &cascade_count, 1, kMaxCascades, "independent sums layered");
         p.add_float("cascade_ratio", &cascade_ratio, 0.05f, 0.95f,
                     "base wavelength and amplitude of cascade c: ratio^c times cascade 0's");

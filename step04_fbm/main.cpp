@@ -46,9 +46,9 @@ private:
 
     void update(double /*time*/, double /*dt*/) override {
         grid_params_.update(grid_);
-        if (fbm_.waves_changed.value != waves_built_for_) {  // only a wave parameter makes new waves
+        if (fbm_.changes.value != waves_made_for_) {  // only a wave parameter makes new waves
             cascades_ = fbm_.make();
-            waves_built_for_ = fbm_.waves_changed.value;
+            waves_made_for_ = fbm_.changes.value;
         }
     }
 
@@ -81,7 +81,7 @@ private:
     step03::LightParams light_;
     std::vector<step04::Cascade> cascades_;
     step04::FbmParams fbm_;  // the waves' parameters (fbm_params.hpp)
-    unsigned waves_built_for_ = 0;  // waves_changed starts at 1: the first frame builds
+    unsigned waves_made_for_ = 0;  // changes starts at 1: the first frame builds
     int view_ = 0;
     bool wireframe_ = false;
 };

@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-namespace chapter {
+namespace stepNN {  // `./ocean new` names it after the folder: step10 for step10_spray
 
 struct Wave {
     double wavelength = 8;  // metres
@@ -28,4 +28,4 @@ inline double phase(const Wave& wave, double time) {
     return p < 0 ? p + ocean::kTwoPi : p;
 }
 
-}  // namespace chapter
+}  // namespace stepNN

@@ -10,7 +10,7 @@ namespace {
 
 // The title, the notes' sections and the paragraph the panel shows.
 ocean::StepInfo chapter_info() {
-    return {"A new chapter", "-",
+    return {"A new chapter", "",
             "The template every chapter starts from: one travelling wave, h = a sin(w (x - c t)), drawn as a "
             "band of colour. Replace it with the chapter's technique."};
 }
@@ -27,15 +27,15 @@ public:
     }
 
 private:
-    chapter::Wave wave() const { return {wavelength_, amplitude_, speed_}; }
+    stepNN::Wave wave() const { return {wavelength_, amplitude_, speed_}; }
 
     void render() override {
         clear_target({0, 0, 0});
         ocean::ShaderProgram* p = program("chapter", {"fullscreen.vert", "chapter.frag"});
-        const chapter::Wave w = wave();
+        const stepNN::Wave w = wave();
         p->set("u_wavenumber", float(ocean::kTwoPi / w.wavelength));
         p->set("u_amplitude", float(w.amplitude));
-        p->set("u_phase", float(chapter::phase(w, time())));
+        p->set("u_phase", float(stepNN::phase(w, time())));
         p->set("u_x_span", x_span_);
         ocean::GpuScope timed(timers(), "chapter");
         glUseProgram(p->id());
@@ -44,7 +44,7 @@ private:
 
     void ui() override {
         ImGui::Separator();
-        ImGui::Text("h(0, t) = %.3f m", chapter::height(wave(), 0, time()));
+        ImGui::Text("h(0, t) = %.3f m", stepNN::height(wave(), 0, time()));
     }
 
     float amplitude_ = 1, wavelength_ = 8, speed_ = 2, x_span_ = 32;

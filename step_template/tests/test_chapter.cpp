@@ -9,19 +9,19 @@ namespace {
 
 TEST(Chapter, CrestMovesTowardsPlusXAtItsSpeed) {
     // The crest at x = wavelength / 4 at t = 0, found by a search later on: moved by c t.
-    const chapter::Wave wave{8, 1, 2};
+    const stepNN::Wave wave{8, 1, 2};
     for (double t : {0.25, 1.0}) {
         double best_x = 0, best_h = -1;
         for (double x = 0; x < 8; x += 1e-4)
-            if (chapter::height(wave, x, t) > best_h) best_h = chapter::height(wave, x, t), best_x = x;
+            if (stepNN::height(wave, x, t) > best_h) best_h = stepNN::height(wave, x, t), best_x = x;
         EXPECT_NEAR(std::remainder(best_x - (2 + 2 * t), 8.0), 0.0, 2e-4) << "t = " << t;
     }
 }
 
 TEST(Chapter, ReducedPhaseIsTheSameAngle) {
-    const chapter::Wave wave{8, 1, 2};
+    const stepNN::Wave wave{8, 1, 2};
     for (double t : {0.0, 3.7, 864000.0}) {
-        const double p = chapter::phase(wave, t);
+        const double p = stepNN::phase(wave, t);
         EXPECT_GE(p, 0.0);
         EXPECT_LT(p, ocean::kTwoPi);
         EXPECT_NEAR(std::sin(p), std::sin(-ocean::kTwoPi / 8 * 2 * t), 1e-6);

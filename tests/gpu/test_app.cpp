@@ -14,7 +14,7 @@ namespace {
 
 class ProbeStep : public ocean::App {
 public:
-    ProbeStep() : App({"probe", "-", "a step for testing the framework"}) {
+    ProbeStep() : App({"probe", "", "a step for testing the framework"}) {
         params().add_float("level", &level_, 0, 1, "grey level of the clear colour");
         params().add_bool("make_gl_error", &make_gl_error_, "call GL with a bad enum once");
     }
@@ -147,7 +147,7 @@ TEST(App, BadInputIsRefusedBeforeAnyContextIsMade) {
 // A step whose split variants set `level`, and which notes the level each update() sees.
 class SplitProbe : public ocean::App {
 public:
-    explicit SplitProbe(bool update_each_side) : App({"split probe", "-", "a step for testing the split view"}) {
+    explicit SplitProbe(bool update_each_side) : App({"split probe", "", "a step for testing the split view"}) {
         params().add_float("level", &level_, 0, 1, "grey level of the clear colour");
         offer_split_view([update_each_side] {
             SplitVariants variants{"dark", "light", {"level=0.2"}, {"level=0.8"}};

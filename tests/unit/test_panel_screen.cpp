@@ -22,7 +22,7 @@ namespace {
 
 class GreyStep : public ocean::App {
 public:
-    GreyStep() : App({"probe", "-", "a step for measuring the panel"}) {
+    GreyStep() : App({"probe", "", "a step for measuring the panel"}) {
         params().add_float("level", &level_, 0, 1, "grey level of the clear colour");
         offer_split_view([] { return SplitVariants{"dark", "light", {"level=0.2"}, {"level=0.8"}}; });
     }
