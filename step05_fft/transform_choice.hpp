@@ -43,8 +43,9 @@ public:
     void ui(SeaSimulation& simulation, double time);
 
 private:
-    int backend_ = 0, fft_form_ = 0;  // Backend and GpuFftForm; their defaults are declare()'s
-    bool warned_dft_ = false;
+    // The choice (none in the portable profile: there they stay unread).
+    [[maybe_unused]] int backend_ = 0, fft_form_ = 0;  // Backend and GpuFftForm; declare() sets their defaults
+    [[maybe_unused]] bool warned_dft_ = false;
     std::vector<std::string> table_;  // the panel's last comparison
 };
 
