@@ -1,7 +1,8 @@
 // Chapter 8's physics as the program runs it, frame by frame: step07's bodies on the sea the
 // program reads (a SeaFeed), the boat's hull and the stones pressing the wave field around it, and
 // the field's maps for the sea to draw. WakeProgram (wake_program.hpp) owns one, gives it the sea,
-// the steering and the clock each frame, and draws what it holds; --bench times the same frames.
+// the steering and the clock each frame, and draws what it holds; --bench times its boat pressing
+// the field (time_pressing) with the same press.
 // How the field and the bodies other than the boat take a frame is the BodiesAndField it is given
 // (bodies_and_field.hpp).
 #pragma once
