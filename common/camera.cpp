@@ -46,6 +46,18 @@ glm::mat4 Camera::projection(float aspect) const {
     return glm::perspective(glm::radians(fov_deg), std::max(aspect, 1e-3f), near_plane, far_plane);
 }
 
+std::optional<Ray> cursor_ray(const Camera& camera, float aspect, const glm::dvec3& origin, glm::dvec2 cursor,
+                              glm::dvec2 window) {
+    if (window.x <= 0 || window.y <= 0) return std::nullopt;
+    // The cursor on the near and the far plane, from the origin: in float, as the frame draws.
+    const glm::vec2 at(cursor), size(window);
+    const glm::vec2 ndc(2 * at.x / size.x - 1, 1 - 2 * at.y / size.y);
+    const glm::mat4 inverse = glm::inverse(camera.projection(aspect) * camera.view(origin));
+    const glm::vec4 near = inverse * glm::vec4(ndc, -1, 1), far = inverse * glm::vec4(ndc, 1, 1);
+    const glm::vec3 on_near = glm::vec3(near) / near.w, on_far = glm::vec3(far) / far.w;
+    return Ray{origin + glm::dvec3(on_near), glm::normalize(glm::dvec3(on_far - on_near))};
+}
+
 void Camera::apply(const CameraInput& input, float dt) {
     const float degrees_per_pixel = 0.25f;
     const glm::dvec3 eye_before = eye_world();

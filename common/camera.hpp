@@ -7,6 +7,7 @@
 #include "common/params.hpp"
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <optional>
@@ -58,6 +59,18 @@ public:
     float distance = 10, yaw_deg = 0, pitch_deg = 20, fov_deg = 50;
     float near_plane = 0.1f, far_plane = 2000.0f;
 };
+
+// A ray in world metres: where it starts, and its direction (a unit vector).
+struct Ray {
+    glm::dvec3 from, direction;
+};
+
+// The ray under the cursor: through `cursor` (pixels from the window's top left, in a window
+// `window` wide and high in the same units), from the near plane away from the eye, built from the
+// matrices a camera-relative frame draws with (projection(aspect) * view(origin)), so that it meets
+// what the window shows there, anywhere on an ocean. None for a window of no size.
+std::optional<Ray> cursor_ray(const Camera& camera, float aspect, const glm::dvec3& origin, glm::dvec2 cursor,
+                              glm::dvec2 window);
 
 // Named views shared by every 3D step (--camera NAME), so that pictures of different chapters line
 // up: they set the camera_* parameters.

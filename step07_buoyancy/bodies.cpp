@@ -2,6 +2,9 @@
 
 #include "common/constants.hpp"
 
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -41,6 +44,12 @@ std::vector<FloatingBody> drop_bodies(const BodyParams& params, glm::dvec3 eye, 
     return bodies;
 }
 
+std::vector<FloatingBody> drop_bodies(const BodyParams& params, const ocean::Camera& camera) {
+    const glm::vec3 f = camera.forward();
+    const glm::dvec2 ahead = glm::normalize(glm::dvec2(f.x, f.z) + glm::dvec2(1e-9, 0));
+    return drop_bodies(params, camera.eye_world(), ahead);
+}
+
 // The thrust accelerates the boat against its drag (0.5/s of the water it displaces, about its own
 // mass afloat); the turning force acts at half a length behind the middle.
 void steer(FloatingBody& boat, double throttle, double rudder) {
@@ -52,6 +61,16 @@ void steer(FloatingBody& boat, double throttle, double rudder) {
     boat.add_force(thrust * weight * along, {0, 0, 0});
     // A rudder turned to starboard pushes the stern to port, which swings the bow to starboard.
     boat.add_force(-turn * weight * across, {-0.5 * boat.settings().shape.size.x, 0, 0});
+}
+
+Arrows held_arrows() {
+    if (ImGui::GetIO().WantCaptureKeyboard) return {};
+    return {double(ImGui::IsKeyDown(GLFW_KEY_UP)) - double(ImGui::IsKeyDown(GLFW_KEY_DOWN)),
+            double(ImGui::IsKeyDown(GLFW_KEY_RIGHT)) - double(ImGui::IsKeyDown(GLFW_KEY_LEFT))};
+}
+
+void steer(FloatingBody& boat, const Steering& panel, const Arrows& arrows) {
+    steer(boat, double(panel.throttle) + arrows.throttle, double(panel.rudder) + arrows.rudder);
 }
 
 // 6 m at most: the 9 m boat gets 7.6 m/s, not 11; 3 m at least: the 1.2 m buoy gets 3.8 m/s,

@@ -4,6 +4,7 @@
 // same functions on a flat sea, so the numbers the README quotes are the program's.
 #pragma once
 
+#include "common/camera.hpp"
 #include "step07_buoyancy/body_params.hpp"
 #include "step07_buoyancy/floating_body.hpp"
 
@@ -25,6 +26,8 @@ std::array<BodySettings, 3> body_settings(const BodyParams& params);
 // `ahead` (a horizontal unit vector): all in the right part of the view, which the panel (at the
 // left) leaves free; the boat broadside, so its length shows.
 std::vector<FloatingBody> drop_bodies(const BodyParams& params, glm::dvec3 eye, glm::dvec2 ahead);
+// The same in front of `camera`: at its eye, looking along its view turned level.
+std::vector<FloatingBody> drop_bodies(const BodyParams& params, const ocean::Camera& camera);
 
 // The boat's engine and rudder at full (the throttle or the rudder at 1, or an arrow held), as
 // fractions of its weight m g: a thrust along its length at its middle, and a rudder's sideways
@@ -41,6 +44,17 @@ inline constexpr double kFullThrust = 0.4, kFullRudder = 0.1;
 // plus the arrows' while they are held, clamped to that range); a positive rudder turns it to
 // starboard (its right: the right arrow).
 void steer(FloatingBody& boat, double throttle, double rudder);
+
+// The arrows held this frame, as the boat's controls: up and down a throttle of 1 and -1, right
+// and left a rudder of 1 and -1. None while the panel takes the keys (a field being typed in), and
+// none headless. Read once a frame, in update().
+struct Arrows {
+    double throttle = 0, rudder = 0;
+};
+Arrows held_arrows();
+
+// steer() with the panel's throttle and rudder plus the arrows held.
+void steer(FloatingBody& boat, const Steering& panel, const Arrows& arrows);
 
 // The speed a right click gives `body`: enough to carry it about its own size d (its longer
 // horizontal side, between 3 and 6 m) in the first second against its linear drag c, on a flat

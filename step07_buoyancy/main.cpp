@@ -1,19 +1,16 @@
 // step07_buoyancy: things that float on step06's sea.
-// Beyond the notes. The sea is step06's: this program owns step06's parts (the Sea, the Sky, the
-// SeaRenderer, the PostProcess) and composes them as step06's main.cpp does, adding the bodies
-// between the sea and the sky behind it; this chapter asks the sea questions. Each frame the maps the renderer draws reach the CPU (from the FFTW backend
-// directly, or from the GPU through map_readback.hpp, a frame late: sea_feed.hpp), the height above each hull
-// cell is found by inverting the choppy displacement (sea_query.hpp), and a buoy, a raft and a
-// boat move under buoyancy and drag (floating_body.hpp).
-// Controls: step06's; the arrows (held) steer the boat, a right click pushes the body under the cursor;
-// the panel sets each body's size and density, drops them again, and sets the boat's throttle
-// and rudder.
+// Beyond the notes. The sea is step06's: this program owns step06's frame (its SeaScene, with the
+// Sea, the Sky, the SeaRenderer and the PostProcess) and runs it as step06's main.cpp does, drawing
+// the bodies into the scene between the sea and the sky behind it; this chapter asks the sea
+// questions. Each frame the maps the renderer draws reach the CPU (from the FFTW backend directly,
+// or from the GPU through map_readback.hpp, a frame late: sea_feed.hpp), the height above each
+// hull cell is found by inverting the choppy displacement (sea_query.hpp), and a buoy, a raft and
+// a boat move under buoyancy and drag (floating_body.hpp).
+// Controls: step06's; the arrows (held) steer the boat, a right click pushes the body under the
+// cursor; the panel sets each body's size and density, drops them again, and sets the boat's
+// throttle and rudder.
 #include "common/app.hpp"
-#include "step06_foam_sky/look_params.hpp"
-#include "step06_foam_sky/post.hpp"
-#include "step06_foam_sky/sea.hpp"
-#include "step06_foam_sky/sea_renderer.hpp"
-#include "step06_foam_sky/sky.hpp"
+#include "step06_foam_sky/sea_scene.hpp"
 #include "step07_buoyancy/bodies.hpp"
 #include "step07_buoyancy/body_painter.hpp"
 #include "step07_buoyancy/body_params.hpp"
@@ -25,15 +22,12 @@
 #include "common/error.hpp"
 #include "common/file_output.hpp"
 
-#include <GLFW/glfw3.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -48,48 +42,31 @@ public:
                /*window_samples=*/0}) {
         ocean::ParamRegistry& p = params();
         // step06's parameters, then the bodies'.
-        sea_.declare(p);
-        renderer_.declare(p);
-        look_.declare(p);
+        scene_.declare(p);
         body_params_.declare(p);  // a change drops the bodies again
         steering_.declare(p);       // read each frame: drops nothing
         queries_.declare(p);
         use_camera(ocean::camera_view("low"), ocean::kOceanReach);
         offer_export([this](const std::string& dir) { export_all(dir); });
 #ifndef OCEAN_GL_PORTABLE  // step05's backends: GL 4.5 only
-        offer_bench_figures([this] { return sea_.time_backends(time()); });
-        offer_warm_up([this] { return sea_.choosing_backend(); });
+        offer_bench_figures([this] { return scene_.sea().time_backends(time()); });
+        offer_warm_up([this] { return scene_.sea().choosing_backend(); });
 #endif
     }
 
 private:
     void init() override {
-        sea_.init(program_factory());
-        sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
-        renderer_.init(program_factory());
-        post_.init(program_factory());
+        scene_.init(program_factory());
         queries_.init(program_factory());
         painter_.init(program_factory());
     }
 
-    // step06's frame (its main.cpp), then the bodies on the sea it made.
+    // step06's frame (sea_scene.hpp), then the bodies on the sea it made.
     void update(double time, double dt) override {
-        const glm::dvec3 eye = camera().eye_world();
-        {
-            ocean::GpuScope timed(timers(), "simulation");
-            sea_.simulate(time, eye);
-        }
-        {
-            ocean::GpuScope timed(timers(), "foam");
-            sea_.update_foam(dt, eye, camera().forward());
-        }
-        {
-            ocean::GpuScope timed(timers(), "sky");
-            sky_->update(look_.sky(time, sea_.wind_direction()), look_.sky_image, look_.sky_image_changes.value);
-        }
+        scene_.update(time, dt, camera(), timers());
         ocean::GpuScope timed(timers(), "bodies");
         const auto started = std::chrono::steady_clock::now();
-        feed_.update(sea_, time);
+        feed_.update(scene_.sea(), time);
         read_input();  // every frame: a click before the first sea arrives is answered, not lost
         if (!feed_.ready()) return;
         if (bodies_built_for_ != body_params_.changed.value || bodies_.empty()) {
@@ -98,7 +75,7 @@ private:
         }
         steer_boat();
         step07::advance_bodies(bodies_, feed_.before(), feed_.now(), dt, feed_.interval());
-        queries_.update(feed_.now(), sea_, camera().eye_world(), camera().forward(), time);
+        queries_.update(feed_.now(), scene_.sea(), camera().eye_world(), camera().forward(), time);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             trajectory_.push_back({time, int(b), bodies_[b].position(), bodies_[b].orientation()});
         bodies_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
@@ -107,71 +84,46 @@ private:
     // The three bodies, in front of the camera (anywhere on the ocean: positions in double).
     void drop_bodies() {
         trajectory_.clear();
-        const glm::vec3 f = camera().forward();
-        const glm::dvec2 ahead = glm::normalize(glm::dvec2(f.x, f.z) + glm::dvec2(1e-9, 0));
-        bodies_ = step07::drop_bodies(body_params_, camera().eye_world(), ahead);
+        bodies_ = step07::drop_bodies(body_params_, camera());
     }
 
     // The panel's throttle and rudder, plus the arrows while they are held (bodies.hpp).
     void steer_boat() {
-        if (bodies_.size() <= step07::kBoat) return;
-        step07::steer(bodies_[step07::kBoat], double(steering_.throttle) + key_throttle_,
-                      double(steering_.rudder) + key_rudder_);
+        if (bodies_.size() > step07::kBoat) step07::steer(bodies_[step07::kBoat], steering_, arrows_);
     }
 
     // step06's frame with the bodies and the query dots drawn into the scene between the sea (its
     // depth is there) and the sky behind it.
     void render() override {
-        post_.begin(framebuffer_size());
-        const glm::mat4 view_projection = camera().projection(aspect()) * camera().view(sea_.world_origin());
-        {
-            ocean::GpuScope timed(timers(), "ocean");
-            renderer_.draw(sea_, *sky_, look_,
-                           {view_projection, camera().eye_world(), framebuffer_size(), post_.scene_framebuffer(),
-                            post_.depth_texture(), fullscreen_vao()});
-        }
-        queries_.draw(sea_.world_origin(), view_projection);
-        painter_.draw(bodies_, sea_.world_origin(), view_projection, camera().eye_world(), *sky_, look_);
-        {
-            ocean::GpuScope timed(timers(), "background");
-            sky_->draw_background(view_projection, fullscreen_vao());
-        }
-        const step06::PostSettings image = look_.post(renderer_.view() == step06::kViewShaded);
-        {
-            ocean::GpuScope timed(timers(), "bloom");
-            post_.bloom(image, fullscreen_vao());
-        }
-        ocean::GpuScope timed(timers(), "tonemap");
-        bind_target();
-        post_.tonemap(image, fullscreen_vao());
+        step06::FrameAdditions additions;
+        additions.draw_into_scene = [this](const glm::mat4& view_projection) {
+            const glm::dvec3 origin = scene_.sea().world_origin();
+            queries_.draw(origin, view_projection);
+            painter_.draw(bodies_, origin, view_projection, camera().eye_world(), scene_.sky(), scene_.look());
+        };
+        scene_.render({camera(), framebuffer_size(), aspect(), fullscreen_vao(), [this] { bind_target(); }},
+                      timers(), additions);
     }
 
     // The keys and the mouse (windowed; each frame in update(), the panel shown or not): the arrows,
     // held, steer the boat; each right click pushes the body under the cursor away from the camera.
     void read_input() {
-        const ImGuiIO& io = ImGui::GetIO();
-        key_throttle_ = key_rudder_ = 0;
-        if (!io.WantCaptureKeyboard) {
-            key_throttle_ = double(ImGui::IsKeyDown(GLFW_KEY_UP)) - double(ImGui::IsKeyDown(GLFW_KEY_DOWN));
-            key_rudder_ = double(ImGui::IsKeyDown(GLFW_KEY_RIGHT)) - double(ImGui::IsKeyDown(GLFW_KEY_LEFT));
-        }
+        arrows_ = step07::held_arrows();
         for (const ocean::InputEvent& press : frame_input().presses)
-            if (press.code == ocean::input::kMouseRight) push_at(glm::vec2(press.at));
+            if (press.code == ocean::input::kMouseRight) push_at(press.at);
     }
 
-    void push_at(glm::vec2 cursor) {
+    // The body closest to the cursor's ray (common/camera.hpp), pushed where the ray passes it.
+    void push_at(glm::dvec2 cursor) {
         const ImGuiIO& io = ImGui::GetIO();
-        if (io.DisplaySize.x <= 0 || io.DisplaySize.y <= 0) return;
+        const std::optional<ocean::Ray> under_cursor = ocean::cursor_ray(
+            camera(), aspect(), scene_.sea().world_origin(), cursor, {io.DisplaySize.x, io.DisplaySize.y});
+        if (!under_cursor) return;
         if (bodies_.empty()) {
             std::cout << "push: the bodies are not dropped yet (they wait for the first sea)" << std::endl;
             return;
         }
-        // The cursor's ray, from the world origin near the camera, then the body closest to it.
-        const glm::vec2 ndc(2 * cursor.x / io.DisplaySize.x - 1, 1 - 2 * cursor.y / io.DisplaySize.y);
-        const glm::mat4 inverse = glm::inverse(camera().projection(aspect()) * camera().view(sea_.world_origin()));
-        const glm::vec4 near = inverse * glm::vec4(ndc, -1, 1), far = inverse * glm::vec4(ndc, 1, 1);
-        const glm::dvec3 from = sea_.world_origin() + glm::dvec3(glm::vec3(near) / near.w);
-        const glm::dvec3 ray = glm::normalize(glm::dvec3(glm::vec3(far) / far.w - glm::vec3(near) / near.w));
+        const glm::dvec3 from = under_cursor->from, ray = under_cursor->direction;
         step07::FloatingBody* hit = nullptr;
         double best = 0;
         glm::dvec3 at(0.0);
@@ -213,7 +165,7 @@ private:
     void export_all(const std::string& dir) {
 #ifndef OCEAN_GL_PORTABLE
         ocean::ProgramFactory programs = program_factory();
-        sea_.export_surface(dir, programs, time(), params());
+        scene_.sea().export_surface(dir, programs, time(), params());
 #endif
         std::ostringstream out;
         out << "time,body,x,y,z,qw,qx,qy,qz\n";
@@ -232,12 +184,7 @@ private:
         glm::dvec3 position;
         glm::dquat orientation;
     };
-    // step06's parts.
-    step06::Sea sea_;
-    std::unique_ptr<step06::Sky> sky_;
-    step06::SeaRenderer renderer_;
-    step06::PostProcess post_;
-    step06::LookParams look_;
+    step06::SeaScene scene_;  // step06's frame
     // The bodies, and what asks the sea.
     std::vector<step07::FloatingBody> bodies_;
     std::vector<TrajectoryRow> trajectory_;
@@ -246,7 +193,7 @@ private:
     unsigned bodies_built_for_ = 0;
     step07::BodyParams body_params_;
     step07::Steering steering_;
-    double key_throttle_ = 0, key_rudder_ = 0;  // the arrows, held
+    step07::Arrows arrows_;  // held this frame
     double bodies_ms_ = 0;
     step07::QueryGrid queries_;
 };

@@ -1,9 +1,10 @@
 // Chapter 8 in the program: how the wave field and the bodies other than the boat take a frame, and
 // what of the field the sea draws. This class is step08's own way (its defaults): the boat's hull
 // presses the field, the buoy and the raft float on the sea with the wake in it, the field is
-// drawn as it is. WakeProgram (wake_program.hpp) runs the frame and asks this class at each of
-// these points, so a program that moves other bodies with the field gives WakeProgram a subclass
-// and leaves the rest of the frame (the sea, the boat, the camera, the drawing) as step08's.
+// drawn as it is. BoatAndWake (boat_and_wake.hpp), the physics of WakeProgram's frame, asks this
+// class at each of these points, so a program that moves other bodies with the field gives
+// WakeProgram a subclass and leaves the rest of the frame (the sea, the boat, the camera, the
+// drawing) as step08's.
 #pragma once
 
 #include "common/params.hpp"

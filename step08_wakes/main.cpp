@@ -9,8 +9,10 @@
 // the raft float on the sea with the wake in it (wake_sea.hpp).
 // `plan` shows the wake alone from above, a boat at a set speed on still water (plan_view.hpp):
 // the lesson's laboratory, where Kelvin's angle is measured.
-// The frame, top to bottom, is wake_program.cpp's; how the field and the bodies other than the boat
-// take it is a part of its own (bodies_and_field.hpp), which a later chapter may give otherwise.
+// The frame, top to bottom, is wake_program.cpp's: step06's frame (its SeaScene, sea_scene.hpp)
+// with the bodies drawn into it, and each frame's physics, the bodies and the wake, in a part of
+// its own (boat_and_wake.hpp). How the field and the bodies other than the boat take a frame is a
+// part again (bodies_and_field.hpp), which a program built on this one may give otherwise.
 // Controls: step06's; the arrows (held) steer the boat; a left click drops a stone.
 #include "common/app.hpp"
 #include "step08_wakes/bodies_and_field.hpp"

@@ -8,18 +8,12 @@
 // The two draw the same picture (draws_what_step06_draws.sh); `./ocean bench --lab compute_shading`
 // times them side by side.
 //
-// The program is step06's parts, composed as step06's main.cpp composes them, with one pass
-// changed: the mesh still records the G-buffer (SeaRenderer::record), then shaders/ocean_shade.comp
-// shades it with step06's own shading (ocean_shade.glsl) and the same inputs
-// (SeaRenderer::bind_shading).
+// The program is step06's frame (its SeaScene, sea_scene.hpp) with one pass changed: the mesh
+// still records the G-buffer (SeaRenderer::record), then shaders/ocean_shade.comp shades it with
+// step06's own shading (ocean_shade.glsl) and the same inputs (SeaRenderer::bind_shading), given
+// to the frame as its shade_sea.
 #include "common/app.hpp"
-#include "step06_foam_sky/look_params.hpp"
-#include "step06_foam_sky/post.hpp"
-#include "step06_foam_sky/sea.hpp"
-#include "step06_foam_sky/sea_renderer.hpp"
-#include "step06_foam_sky/sky.hpp"
-
-#include <memory>
+#include "step06_foam_sky/sea_scene.hpp"
 
 namespace {
 
@@ -32,82 +26,41 @@ public:
     ComputeShading()
         : App({"step06 with compute shading", "", "step06's frame with its shading pass as a compute shader.",
                /*window_samples=*/0}) {
-        ocean::ParamRegistry& p = params();
-        sea_.declare(p);
-        renderer_.declare(p);
-        look_.declare(p);
+        scene_.declare(params());
         use_camera(ocean::camera_view("low"), ocean::kOceanReach);
-        offer_bench_figures([this] { return sea_.time_backends(time()); });
-        offer_warm_up([this] { return sea_.choosing_backend(); });
+        offer_bench_figures([this] { return scene_.sea().time_backends(time()); });
+        offer_warm_up([this] { return scene_.sea().choosing_backend(); });
     }
 
 private:
-    void init() override {
-        sea_.init(program_factory());
-        sky_ = std::make_unique<step06::Sky>(program_factory(), 128);
-        renderer_.init(program_factory());
-        post_.init(program_factory());
-    }
+    void init() override { scene_.init(program_factory()); }
 
-    void update(double time, double dt) override {
-        const glm::dvec3 eye = camera().eye_world();
-        {
-            ocean::GpuScope timed(timers(), "simulation");
-            sea_.simulate(time, eye);
-        }
-        {
-            ocean::GpuScope timed(timers(), "foam");
-            sea_.update_foam(dt, eye, camera().forward());
-        }
-        ocean::GpuScope timed(timers(), "sky");
-        sky_->update(look_.sky(time, sea_.wind_direction()), look_.sky_image, look_.sky_image_changes.value);
-    }
+    void update(double time, double dt) override { scene_.update(time, dt, camera(), timers()); }
 
     void render() override {
-        post_.begin(framebuffer_size());
-        const glm::mat4 view_projection = camera().projection(aspect()) * camera().view(sea_.world_origin());
-        const step06::SeaFrame frame{view_projection, camera().eye_world(), framebuffer_size(),
-                                     post_.scene_framebuffer(), post_.depth_texture(), fullscreen_vao()};
-        {
-            ocean::GpuScope timed(timers(), "ocean");
-            renderer_.record(sea_, frame);
-            shade_in_compute(frame);
-        }
-        {
-            ocean::GpuScope timed(timers(), "background");
-            sky_->draw_background(view_projection, fullscreen_vao());
-        }
-        const step06::PostSettings image = look_.post(renderer_.view() == step06::kViewShaded);
-        {
-            ocean::GpuScope timed(timers(), "bloom");
-            post_.bloom(image, fullscreen_vao());
-        }
-        ocean::GpuScope timed(timers(), "tonemap");
-        bind_target();
-        post_.tonemap(image, fullscreen_vao());
+        step06::FrameAdditions additions;
+        additions.shade_sea = [this](const step06::SeaFrame& frame) { shade_in_compute(frame); };
+        scene_.render({camera(), framebuffer_size(), aspect(), fullscreen_vao(), [this] { bind_target(); }},
+                      timers(), additions);
     }
 
     // A thread a pixel, 8 x 8 a workgroup; the pixels where the mesh drew nothing keep the
     // cleared scene, for the background to fill.
     void shade_in_compute(const step06::SeaFrame& frame) {
-        if (renderer_.wireframe()) return;  // the wireframe is drawn straight into the scene
-        ocean::ShaderProgram* shade =
-            program("ocean_shade_compute", {"ocean_shade.comp"}, renderer_.shading_defines(sea_, look_));
+        const step06::SeaRenderer& renderer = scene_.renderer();
+        ocean::ShaderProgram* shade = program("ocean_shade_compute", {"ocean_shade.comp"},
+                                              renderer.shading_defines(scene_.sea(), scene_.look()));
         if (shade == nullptr) return;
-        renderer_.bind_shading(*shade, sea_, *sky_, look_, frame);
-        glBindTextureUnit(kDepthUnit, post_.depth_texture());
-        glBindImageTexture(0, post_.scene_texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        renderer.bind_shading(*shade, scene_.sea(), scene_.sky(), scene_.look(), frame);
+        glBindTextureUnit(kDepthUnit, scene_.post().depth_texture());
+        glBindImageTexture(0, scene_.post().scene_texture(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
         glUseProgram(shade->id());
         glDispatchCompute(GLuint((frame.size.x + 7) / 8), GLuint((frame.size.y + 7) / 8), 1);
         // What follows draws into the scene (the background) and reads it (bloom).
         glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
 
-    step06::Sea sea_;
-    std::unique_ptr<step06::Sky> sky_;
-    step06::SeaRenderer renderer_;
-    step06::PostProcess post_;
-    step06::LookParams look_;
+    step06::SeaScene scene_;
 };
 
 }  // namespace

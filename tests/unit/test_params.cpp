@@ -293,6 +293,9 @@ TEST(ParamRegistry, DuplicateNamesAreAProgrammingError) {
 
 #include "common/camera.hpp"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
 namespace {
 
 // 1000 km out a float's steps are 6 cm: a camera there is kept, written and read back to every digit
@@ -327,6 +330,32 @@ TEST(CameraPresets, SetTheCameraParametersOrSayWhatExists) {
     const auto none = ocean::apply_camera_preset(flat, "deck");
     ASSERT_TRUE(none);
     EXPECT_NE(none->find("no camera"), std::string::npos);
+}
+
+// The ray under the cursor starts on the near plane in front of the eye and goes where the view
+// looks: through the window's middle along forward(), through its top left corner up and to the
+// left. Built from a world origin near a camera 2000 km out, as a camera-relative frame draws.
+TEST(CursorRay, GoesWhereTheWindowShows) {
+    ocean::ParamRegistry params;
+    ocean::Camera camera;
+    camera.declare_params(params, {{0, 0, 0}, 10, 30, 20}, ocean::kOceanReach);
+    camera.target = {1000000.25, 0, -2000000.5};
+    const glm::dvec3 origin = glm::floor(camera.eye_world());
+    const glm::dvec2 window(1280, 720);
+    const float aspect = 16.0f / 9;
+    const auto middle = ocean::cursor_ray(camera, aspect, origin, window / 2.0, window);
+    ASSERT_TRUE(middle);
+    EXPECT_NEAR(glm::length(middle->direction), 1, 1e-12);
+    EXPECT_NEAR(glm::dot(middle->direction, glm::dvec3(camera.forward())), 1, 1e-6);
+    EXPECT_NEAR(glm::length(middle->from - camera.eye_world()), camera.near_plane, 1e-3);
+    const auto corner = ocean::cursor_ray(camera, aspect, origin, {0, 0}, window);
+    ASSERT_TRUE(corner);
+    const glm::dvec3 forward(camera.forward());
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0, 1, 0)));
+    const glm::dvec3 up = glm::cross(right, forward);
+    EXPECT_LT(glm::dot(corner->direction, right), 0);
+    EXPECT_GT(glm::dot(corner->direction, up), 0);
+    EXPECT_FALSE(ocean::cursor_ray(camera, aspect, origin, {0, 0}, {0, 0})) << "a window of no size";
 }
 
 }  // namespace
