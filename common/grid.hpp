@@ -92,9 +92,9 @@ public:
 
     // Rebuilds the mesh only when its size or resolution changed.
     void update(GridMesh& grid) {
-        if (built_for_ == changes_.value) return;
+        if (made_for_ == changes_.value) return;
         grid.build({plane_size_, plane_size_}, x_quads_, z_quads_);
-        built_for_ = changes_.value;
+        made_for_ = changes_.value;
     }
 
     int triangle_count() const { return 2 * x_quads_ * z_quads_; }
@@ -103,7 +103,7 @@ private:
     float plane_size_;
     int x_quads_, z_quads_;
     Generation changes_;
-    unsigned built_for_ = 0;
+    unsigned made_for_ = 0;
 };
 
 }  // namespace ocean

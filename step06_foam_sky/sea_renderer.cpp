@@ -12,8 +12,8 @@ void SeaRenderer::declare(ocean::ParamRegistry& p) {
         const auto mesh_group = p.group("mesh");
         p.add_float("tess_scale", &tess_scale_, 0.5f, 64, "edge level = tess_scale * patch / distance");
         p.add_float("tess_patch_size", &tess_patch_size_, 2, 200, "side of a tessellated patch, metres")
-            .bumps(patches_changed_);
-        p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").bumps(patches_changed_);
+            .bumps(patch_changes_);
+        p.add_int("patch_count", &patch_count_, 4, 400, "patches per side around the camera").bumps(patch_changes_);
         p.add_bool("wireframe", &wireframe_, "edges only, coloured by tessellation level");
         p.add_int("anisotropy", &anisotropy_, 1, 16,
                   "most samples of each cascade along a pixel's long footprint (1: isotropic trilinear)");
@@ -35,8 +35,8 @@ void SeaRenderer::draw(const Sea& sea, const Sky& sky, const LookParams& look, c
 }
 
 void SeaRenderer::record(const Sea& sea, const SeaFrame& frame) {
-    if (patches_built_for_ != patches_changed_.value) {
-        patches_built_for_ = patches_changed_.value;
+    if (patches_made_for_ != patch_changes_.value) {
+        patches_made_for_ = patch_changes_.value;
         patches_.build(patch_count_, tess_patch_size_);
     }
     if (wireframe_) {

@@ -57,7 +57,8 @@ public:
     // (the wireframe straight into the scene).
     void draw(const Sea& sea, const Sky& sky, const LookParams& look, const SeaFrame& frame);
 
-    // The two halves of draw(), for a program that shades the G-buffer its own way (lab/): the
+    // The two halves of draw(), for a program that shades the G-buffer its own way (SeaScene's
+    // FrameAdditions::shade_sea: a compute pass, say): the
     // mesh into the G-buffer (the wireframe straight into the scene), and what the shading reads:
     // its variant's defines, and its textures and uniforms bound to `shade`.
     void record(const Sea& sea, const SeaFrame& frame);
@@ -77,8 +78,8 @@ private:
     ocean::ProgramFactory programs_;
     SeaPatches patches_;
     GBuffer gbuffer_;
-    ocean::Generation patches_changed_;  // patch_count, tess_patch_size
-    unsigned patches_built_for_ = 0;
+    ocean::Generation patch_changes_;  // patch_count, tess_patch_size
+    unsigned patches_made_for_ = 0;
     float tess_scale_ = 12, tess_patch_size_ = 16;
     int patch_count_ = 96;
     bool wireframe_ = false;

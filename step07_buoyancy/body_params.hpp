@@ -10,10 +10,10 @@ namespace step07 {
 struct BodyParams {
     float buoy_diameter = 1.2f, buoy_density = 350, raft_size = 5, raft_density = 450;
     float boat_length = 9, boat_density = 300, drag = 0.5f, drop_height = 1.5f;
-    ocean::Generation changed;  // bumped by each parameter above: the bodies are dropped again
+    ocean::Generation changes;  // bumped by each parameter above: the bodies are dropped again
 
     void declare(ocean::ParamRegistry& p) {
-        const auto group = p.group("bodies", &changed);
+        const auto group = p.group("bodies", &changes);
         p.add_float("buoy_diameter", &buoy_diameter, 0.2f, 5, "the buoy's diameter, metres");
         p.add_float("buoy_density", &buoy_density, 50, 3000, "kg/m^3 (water: 1025)");
         p.add_float("raft_size", &raft_size, 1, 200, "the raft's side, metres");

@@ -69,8 +69,8 @@ private:
         feed_.update(scene_.sea(), time);
         read_input();  // every frame: a click before the first sea arrives is answered, not lost
         if (!feed_.ready()) return;
-        if (bodies_built_for_ != body_params_.changed.value || bodies_.empty()) {
-            bodies_built_for_ = body_params_.changed.value;
+        if (bodies_made_for_ != body_params_.changes.value || bodies_.empty()) {
+            bodies_made_for_ = body_params_.changes.value;
             drop_bodies();
         }
         steer_boat();
@@ -190,7 +190,7 @@ private:
     std::vector<TrajectoryRow> trajectory_;
     step07::SeaFeed feed_;
     step07::BodyPainter painter_;
-    unsigned bodies_built_for_ = 0;
+    unsigned bodies_made_for_ = 0;
     step07::BodyParams body_params_;
     step07::Steering steering_;
     step07::Arrows arrows_;  // held this frame

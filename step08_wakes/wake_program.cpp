@@ -81,7 +81,7 @@ void WakeProgram::update(double time, double dt) {
     ocean::GpuScope timed(timers(), "bodies and wake");
     feed_.update(scene_.sea(), time);
     if (!feed_.ready()) return;
-    if (bodies_built_for_ != body_params_.changed.value || !boat_and_wake_.afloat_on(field_settings()))
+    if (bodies_made_for_ != body_params_.changes.value || !boat_and_wake_.afloat_on(field_settings()))
         drop_bodies_and_warm_up();
     sail(std::min(dt, step07::kMaxBodyFrame));
 }
@@ -101,7 +101,7 @@ void WakeProgram::sail(double dt) {
 // throttle holds (thrust against drag), its wake made by `warm_up` seconds of sailing the
 // same line, so the window opens on a wake.
 void WakeProgram::drop_bodies_and_warm_up() {
-    bodies_built_for_ = body_params_.changed.value;
+    bodies_made_for_ = body_params_.changes.value;
     const glm::dvec2 heading =
         boat_and_wake_.launch(step07::drop_bodies(body_params_, camera()), double(steering_.throttle),
                               field_settings(), double(warm_up_), feed_, scene_.sea().choppiness());

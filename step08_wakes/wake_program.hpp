@@ -56,7 +56,7 @@ private:
     step07::BodyPainter painter_;
     step07::BodyParams body_params_;
     step07::Steering steering_;
-    unsigned bodies_built_for_ = 0;
+    unsigned bodies_made_for_ = 0;
     PlanView plan_view_;
     bool plan_ = false, follow_boat_ = true, show_wake_ = true;
     float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;

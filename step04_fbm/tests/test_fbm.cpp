@@ -201,18 +201,18 @@ TEST(Step04Params, OnlyWaveParametersRebuildTheWaves) {
     fbm.declare(registry);
     ocean::Camera camera;  // declared as App::use_camera declares it, then dragged and scrolled
     camera.declare_params(registry, ocean::camera_view("deck"));
-    const unsigned built_for = fbm.changes.value;
+    const unsigned made_for = fbm.changes.value;
     ocean::CameraInput drag;
     drag.drag = {40.0f, -12.0f};
     drag.scroll = 2.0f;
     drag.move = {1.0f, 0.0f, 1.0f};
     for (int frame = 0; frame < 10; ++frame) camera.apply(drag, 1.0f / 60.0f);
-    EXPECT_EQ(fbm.changes.value, built_for) << "a camera drag rebuilt the waves";
+    EXPECT_EQ(fbm.changes.value, made_for) << "a camera drag rebuilt the waves";
     for (const char* other : {"camera_yaw=42", "camera_mode=fly", "warp=2", "shape=sine"}) {
         const std::string text = other;
         const auto eq = text.find('=');
         ASSERT_FALSE(registry.set(text.substr(0, eq), text.substr(eq + 1)).has_value()) << other;
-        EXPECT_EQ(fbm.changes.value, built_for) << other << " rebuilt the waves";
+        EXPECT_EQ(fbm.changes.value, made_for) << other << " rebuilt the waves";
     }
     for (const char* wave : {"wave_count=12", "base_wavelength=30", "amplitude=2", "gain=0.7", "lacunarity=1.3",
                              "speed_scale=2", "seed=9", "cascade_count=3", "cascade_ratio=0.5"}) {

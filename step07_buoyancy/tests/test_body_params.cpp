@@ -31,9 +31,9 @@ TEST(BodyParams, OnlyTheBodiesOwnSettingsDropThemAgain) {
                                                    "boat_length",   "boat_density", "drag",      "drop_height"};
     std::set<std::string> moved;
     for (const auto& p : registry.all()) {
-        const unsigned before = bodies.changed.value;
+        const unsigned before = bodies.changes.value;
         p->set_number(another_value(*p));
-        const bool dropped = bodies.changed.value != before;
+        const bool dropped = bodies.changes.value != before;
         EXPECT_EQ(dropped, drop_the_bodies.count(p->name()) == 1)
             << p->name() << (dropped ? " drops the bodies again" : " does not drop the bodies");
         moved.insert(p->name());
