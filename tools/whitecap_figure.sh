@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# whitecap_figure.sh BUILD_DIR OUT_DIR: docs/figures/whitecaps.png, step06's whitecap coverage
+# whitecap_figure.sh BUILD_DIR OUT_DIR: step06_foam_sky/whitecaps.png (foam.md), step06's whitecap coverage
 # against the wind as a camera records it (step06_foam_sky/tests/whitecaps.sh's pictures from
 # 150 m, read by tests/picture_check) and on the active foam map (foam > 0.3, tests/physics_check),
 # beside Monahan and O'Muircheartaigh's and Callaghan et al.'s laws; and the picture's active
