@@ -182,7 +182,7 @@ set ylabel "height (m)"
 set xrange [-20:20]
 set yrange [-1.2:1.9]
 plot 'jacobian_fold.dat' using 2:3 with linespoints ls 4 pt 7 ps 0.4 title "surface (points: grid vertices, 25 cm apart at rest)"
-set title "J = 1 + λ dDx/dx at each vertex: below 0 where the vertices' order reverses (step06 puts foam there)"
+set title "J = 1 + λ dDx/dx at each vertex: below 0 where the vertices' order reverses (where foam gathers)"
 set xlabel "rest x (m)"
 set ylabel "J"
 set yrange [-0.5:3.2]
