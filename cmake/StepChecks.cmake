@@ -62,22 +62,6 @@ function(step_figures)
   ocean_warnings(${library})
 endfunction()
 
-# step_check_program(NAME SOURCES...): a program the chapter's checks run (its tests/NAME.cpp) on
-# what the step wrote, its pictures and --export, through tests/'s readers only (no shader, no
-# chapter code): the target STEP_NAME, built as STEP's build folder's NAME. The default build's
-# only, as the tools its checks run beside it are.
-function(step_check_program name)
-  if(OCEAN_GL_PORTABLE OR EMSCRIPTEN)
-    return()
-  endif()
-  set(target ${OCEAN_STEP}_${name})
-  add_executable(${target} ${ARGN})
-  set_target_properties(${target} PROPERTIES OUTPUT_NAME ${name})
-  target_link_libraries(${target} PRIVATE ocean_common)
-  target_include_directories(${target} PRIVATE "${PROJECT_SOURCE_DIR}")
-  ocean_warnings(${target})
-endfunction()
-
 # step_bad_input(CASE EXPECT ARGS...): the chapter's own bad input (beyond the cases every step
 # gets): the step run with ARGS must exit non-zero, not crash, and print one "error:" line matching
 # the regular expression EXPECT (tests/cli/bad_input.sh). Refused before any GL, so the portable
