@@ -44,6 +44,24 @@ function(step_test kind case)
                        TIMEOUT ${ARG_TIMEOUT} ${ARG_PROPERTIES})
 endfunction()
 
+# step_figures(SOURCES... [LINKS LIBRARIES...]): the chapter's teaching figures (its figures.cpp),
+# a library STEP_figures that tools/figure_data links and ./ocean figures draws with gnuplot;
+# linked to the chapter's library when it has one, and to LINKS. The default build's only, as
+# the tools are.
+function(step_figures)
+  if(OCEAN_GL_PORTABLE OR EMSCRIPTEN)
+    return()
+  endif()
+  cmake_parse_arguments(ARG "" "" "LINKS" ${ARGN})
+  set(library ${OCEAN_STEP}_figures)
+  add_library(${library} STATIC ${ARG_UNPARSED_ARGUMENTS})
+  target_link_libraries(${library} PUBLIC ocean_figures ${ARG_LINKS})
+  if(TARGET ${OCEAN_STEP}_lib)
+    target_link_libraries(${library} PUBLIC ${OCEAN_STEP}_lib)
+  endif()
+  ocean_warnings(${library})
+endfunction()
+
 # step_bad_input(CASE EXPECT ARGS...): the chapter's own bad input (beyond the cases every step
 # gets): the step run with ARGS must exit non-zero, not crash, and print one "error:" line matching
 # the regular expression EXPECT (tests/cli/bad_input.sh). Refused before any GL, so the portable

@@ -1,6 +1,6 @@
 // The passes of one step06 frame, in the order they run, and the buffers and textures each reads
-// and writes: the lesson's map of the data's path. tools/figure_data draws
-// docs/figures/step06_frame.png from this table, and tools.frame_passes holds the table's timed
+// and writes: the lesson's map of the data's path. figures.cpp draws
+// step06_frame.png from this table, and tools.frame_passes holds the table's timed
 // passes to the ones --bench measures, in order, so the figure cannot drift from the code.
 #pragma once
 

@@ -427,8 +427,10 @@ def compare(args):
 
 
 def figures(args):
-    """tools/figure_data computes each figure's numbers with the chapters' code and writes a gnuplot
-    script beside them (in BUILD/figures); gnuplot draws the PNGs, copied into --out."""
+    """tools/figure_data computes each figure's numbers with its chapter's code (STEP/figures.cpp)
+    and writes a gnuplot script beside them, in BUILD/figures/FOLDER, FOLDER being where the
+    picture belongs in the repository (the chapter that shows it, or docs/figures for one several
+    chapters show); gnuplot draws the PNGs, copied into --out/FOLDER."""
     dry_run_stops(["figures", "--out", args.out])
     if not shutil.which("gnuplot"):
         raise Failure("gnuplot not found (Debian: apt-get install gnuplot-nox)")
@@ -438,15 +440,17 @@ def figures(args):
     data = make_folder(data)
     out = make_folder(args.out)
     run_quiet([build_dir() / "tools/figure_data", data], "figure_data failed")
-    scripts = sorted(data.glob("*.gp"))
+    scripts = sorted(data.rglob("*.gp"))
     if not scripts:
         raise Failure(f"figure_data wrote no gnuplot script in {data}")
     for script in scripts:
-        run_quiet(["gnuplot", script.name], f"gnuplot failed on {script}", cwd=data)
+        run_quiet(["gnuplot", script.name], f"gnuplot failed on {script}", cwd=script.parent)
+        into = out / script.parent.relative_to(data)
         try:
-            shutil.copy(script.with_suffix(".png"), out)
+            into.mkdir(parents=True, exist_ok=True)
+            shutil.copy(script.with_suffix(".png"), into)
         except OSError:
-            raise Failure(f"gnuplot drew no {script.with_suffix('.png')}, or {shown(args.out)} cannot take it") from None
+            raise Failure(f"gnuplot drew no {script.with_suffix('.png')}, or {shown(str(into))} cannot take it") from None
     print(f"figures: {len(scripts)} in {out}")
 
 
@@ -596,9 +600,11 @@ def parsers():
     p.add_argument("--out", metavar="DIR", type=tile_folder, default="build/compare", help="default build/compare")
     p.set_defaults(run=compare)
 
-    p = command("figures", "The teaching figures, drawn from the chapters' own code by gnuplot "
-                "(their numbers and scripts in BUILD/figures).")
-    p.add_argument("--out", metavar="DIR", type=folder, default="docs/figures", help="default docs/figures")
+    p = command("figures", "The teaching figures, drawn from the chapters' own code (STEP/figures.cpp) by "
+                "gnuplot into the chapters' folders (their numbers and scripts in BUILD/figures).")
+    p.add_argument("--out", metavar="DIR", type=folder, default=str(ROOT),
+                   help="the repository, or a copy of its layout (default: this repository; each figure "
+                        "goes to the chapter that shows it, or docs/figures)")
     p.set_defaults(run=figures)
 
     p = command("animations", f"Each step (or those named) in motion: --record's frames, {ANIMATION_FPS} a second "

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# whitecap_figure.sh BUILD_DIR OUT_DIR: docs/figures/whitecaps.png, step06's whitecap coverage
-# against the wind as a camera records it (step06_foam_sky/tests/whitecaps.sh's pictures from
-# 150 m, read by tests/picture_check) and on the active foam map (foam > 0.3, tests/physics_check),
-# beside Monahan and O'Muircheartaigh's and Callaghan et al.'s laws; and the picture's active
-# whitecaps (stage A) beside Monahan and Lu's share of them. About five minutes on llvmpipe.
+# whitecap_figure.sh BUILD_DIR OUT_DIR: OUT_DIR/whitecaps.png (step06_foam_sky/whitecaps.png, which
+# foam.md shows), step06's whitecap coverage against the wind as a camera records it
+# (step06_foam_sky/tests/whitecaps.sh's pictures from 150 m, read by step06's picture_check) and on
+# the active foam map (foam > 0.3, tests/physics_check), beside Monahan and O'Muircheartaigh's
+# and Callaghan et al.'s laws; and the picture's active whitecaps (stage A) beside Monahan and
+# Lu's share of them. About five minutes on llvmpipe.
 # A failure ends with one line "whitecap_figure: error: ...".
 set -euo pipefail
 die() { printf 'whitecap_figure: error: %s\n' "$*" >&2; exit 1; }
@@ -12,7 +13,7 @@ die() { printf 'whitecap_figure: error: %s\n' "$*" >&2; exit 1; }
 build=$(cd -- "$1" 2> /dev/null && pwd) || die "no build folder '$1'"
 out=$2
 root=$(cd "$(dirname "$0")/.." && pwd)
-for program in step06_foam_sky/step06_foam_sky tests/picture_check tests/physics_check; do
+for program in step06_foam_sky/step06_foam_sky step06_foam_sky/picture_check tests/physics_check; do
   [ -x "$build/$program" ] || die "$build/$program is not built"
 done
 command -v gnuplot > /dev/null || die "gnuplot not found (Debian: apt-get install gnuplot-nox)"
@@ -20,7 +21,7 @@ work="$build/figures/whitecaps"
 mkdir -p -- "$work" "$out" || die "cannot make $work or $out"
 winds=(4 6 8 10 12 14 16 18 20 22 24)
 # The laws' limits do not hold at every wind (whitecaps.sh then fails): the figure shows them all.
-bash "$root/step06_foam_sky/tests/whitecaps.sh" "$build/step06_foam_sky/step06_foam_sky" "$build/tests/picture_check" \
+bash "$root/step06_foam_sky/tests/whitecaps.sh" "$build/step06_foam_sky/step06_foam_sky" "$build/step06_foam_sky/picture_check" \
   "$work" "${winds[@]}" > "$work/picture.txt" || true
 echo "# U10  picture %  foam map %  active (stage A) in the picture %" > "$work/whitecaps.dat"
 for wind in "${winds[@]}"; do

@@ -106,7 +106,7 @@ writer image_panel 1 panel.png "image_panel: " '' -- "$tools/image_panel" panel.
 writer contact_sheet 1 sheet.png "contact_sheet: " '' -- "$tools/contact_sheet" sheet.png 32x18 "step01|$picture|$other"
 writer bench_chart 1 bench.png "bench_chart: " '' -- "$tools/bench_chart" "$out/bench.csv" bench.png
 # figure_data: directional_wave.dat (3 MB) is the only file over 100 KiB.
-writer figure_data 100 figures/directional_wave.dat "figure_data: " 'figures.* in ' -- "$tools/figure_data" figures
+writer figure_data 100 figures/step02_sine3d/directional_wave.dat "figure_data: " 'figures.* in ' -- "$tools/figure_data" figures
 
 echo "full_disk: $failures of $cases writers failed"
 [ "$failures" -eq 0 ]
