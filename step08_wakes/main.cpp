@@ -25,7 +25,7 @@ namespace {
 class Wakes : public step08::WakeProgram {
 public:
     Wakes()
-        : WakeProgram({"Wakes", "-",
+        : WakeProgram({"Wakes", "",
                        "The waves a boat makes, on step06's sea: a field of heights and potentials around step07's "
                        "boat, each wave turned at its own frequency sqrt(g k tanh kh), drawn with the sea, foaming "
                        "where it folds, rocking the buoy. Arrows: steer the boat; left click: drop a stone; plan: the "

@@ -168,7 +168,7 @@ constexpr double kDeepWater = std::numeric_limits<double>::infinity();
 class Radiation : public step08::WakeProgram {
 public:
     Radiation()
-        : WakeProgram({"Radiation", "-",
+        : WakeProgram({"Radiation", "",
                        "Bodies that make the waves that damp them, on step08's wake: the raft in contact with the wave "
                        "field (the water under it ends each step where its bottom is), the buoy as sources on its "
                        "wetted surface that radiate its heave away as rings. Arrows: steer the boat; left click: drop "
