@@ -45,21 +45,22 @@ function(step_test kind case)
 endfunction()
 
 # step_figures(SOURCES... [LINKS LIBRARIES...]): the chapter's teaching figures (its figures.cpp),
-# a library STEP_figures that tools/figure_data links and ./ocean figures draws with gnuplot;
-# linked to the chapter's library when it has one, and to LINKS. The default build's only, as
-# the tools are.
+# a program STEP_figures beside the step (BUILD/STEP/STEP_figures OUT_DIR writes them; its main is
+# tools/figure.hpp's run_main) that ./ocean figures runs and draws with gnuplot; linked to the
+# shared figure code, to the chapter's library when it has one, and to LINKS. The default build's
+# only, as the tools are.
 function(step_figures)
   if(OCEAN_GL_PORTABLE OR EMSCRIPTEN)
     return()
   endif()
   cmake_parse_arguments(ARG "" "" "LINKS" ${ARGN})
-  set(library ${OCEAN_STEP}_figures)
-  add_library(${library} STATIC ${ARG_UNPARSED_ARGUMENTS})
-  target_link_libraries(${library} PUBLIC ocean_figures ${ARG_LINKS})
+  set(program ${OCEAN_STEP}_figures)
+  add_executable(${program} ${ARG_UNPARSED_ARGUMENTS})
+  target_link_libraries(${program} PRIVATE ocean_figures ${ARG_LINKS})
   if(TARGET ${OCEAN_STEP}_lib)
-    target_link_libraries(${library} PUBLIC ${OCEAN_STEP}_lib)
+    target_link_libraries(${program} PRIVATE ${OCEAN_STEP}_lib)
   endif()
-  ocean_warnings(${library})
+  ocean_warnings(${program})
 endfunction()
 
 # step_bad_input(CASE EXPECT ARGS...): the chapter's own bad input (beyond the cases every step

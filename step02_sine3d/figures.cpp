@@ -44,7 +44,7 @@ Figure directional_wave() {
         for (double u : {-40.0, 40.0}) f.data << s * d.x - u * d.z << ' ' << s * d.z + u * d.x << '\n';
         f.data << "\n";
         if (std::abs(height({wave}, s * d.x, s * d.z, 0.0) - wave.amplitude) > 1e-9)
-            std::fprintf(stderr, "figure_data: directional_wave: a crest line misses the crest\n");
+            std::fprintf(stderr, "step02_sine3d_figures: directional_wave: a crest line misses the crest\n");
     }
     const double s0 = lambda * 0.25, side = -9.0;  // the wavelength's arrow, beside the origin
     f.data << "\n# x z dx dz: d (8 m long), then lambda between two crests\n"
@@ -179,3 +179,5 @@ Figure camera_frustum() {
 figures::FigureMakers teaching_figures() { return {directional_wave, camera_frustum}; }
 
 }  // namespace step02
+
+int main(int argc, char** argv) { return figures::run_main(argc, argv, step02::teaching_figures()); }

@@ -60,3 +60,5 @@ plot 'lighting_vectors.dat' index 0 using 1:2 with lines ls 1, \
 figures::FigureMakers teaching_figures() { return {lighting_vectors}; }
 
 }  // namespace step03
+
+int main(int argc, char** argv) { return figures::run_main(argc, argv, step03::teaching_figures()); }

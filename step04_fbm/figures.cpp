@@ -46,3 +46,5 @@ plot 'domain_warp.dat' using 1:2 with lines ls 5 title "warp 0: a plain sum of w
 figures::FigureMakers teaching_figures() { return {domain_warp}; }
 
 }  // namespace step04
+
+int main(int argc, char** argv) { return figures::run_main(argc, argv, step04::teaching_figures()); }

@@ -22,15 +22,6 @@
 
 namespace step05 {
 
-SpectrumParams figure_sea() {
-    SpectrumParams p;
-    p.wind_speed = 14;
-    p.fetch = 100000;
-    p.resolution = 256;
-    p.patch_size = 500;
-    return p;
-}
-
 namespace {
 
 using figures::Figure;
@@ -386,3 +377,8 @@ figures::FigureMakers teaching_figures() {
 }
 
 }  // namespace step05
+
+// step05_fft_figures OUT_DIR writes the figures; --timers prints what --bench must time.
+int main(int argc, char** argv) {
+    return figures::run_main(argc, argv, step05::teaching_figures(), figures::timed_passes(step05::kFramePasses));
+}

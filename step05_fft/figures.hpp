@@ -10,7 +10,15 @@ namespace step05 {
 
 figures::FigureMakers teaching_figures();
 
-// The sea the spectrum figures show: a 14 m/s wind over 100 km, 256 modes on a 500 m tile.
-SpectrumParams figure_sea();
+// The sea the spectrum figures show: a 14 m/s wind over 100 km, 256 modes on a 500 m tile. Inline,
+// so that a later chapter's figure program shows the same sea without linking this one's.
+inline SpectrumParams figure_sea() {
+    SpectrumParams p;
+    p.wind_speed = 14;
+    p.fetch = 100000;
+    p.resolution = 256;
+    p.patch_size = 500;
+    return p;
+}
 
 }  // namespace step05

@@ -117,3 +117,8 @@ Figure step06_frame() {
 figures::FigureMakers teaching_figures() { return {cascade_bands, glitter_slopes, fresnel, step06_frame}; }
 
 }  // namespace step06
+
+// step06_foam_sky_figures OUT_DIR writes the figures; --timers prints what --bench must time.
+int main(int argc, char** argv) {
+    return figures::run_main(argc, argv, step06::teaching_figures(), figures::timed_passes(step06::kFramePasses));
+}

@@ -84,3 +84,5 @@ Figure push_and_steer() {
 figures::FigureMakers teaching_figures() { return {push_and_steer}; }
 
 }  // namespace step07
+
+int main(int argc, char** argv) { return figures::run_main(argc, argv, step07::teaching_figures()); }

@@ -56,3 +56,5 @@ Figure kelvin_construction() {
 figures::FigureMakers teaching_figures() { return {kelvin_construction}; }
 
 }  // namespace step08
+
+int main(int argc, char** argv) { return figures::run_main(argc, argv, step08::teaching_figures()); }

@@ -1,8 +1,8 @@
 // A teaching figure as ./ocean figures makes it: the numbers (NAME.dat) and the gnuplot script that
 // draws NAME.png from them (NAME.gp), computed by the chapter's own code so that a figure cannot
-// drift from what the chapter does. Each chapter's figures.cpp makes its figures with this; the
-// figure tool (figure_data.cpp) writes them and gnuplot draws them. Shared by every chapter, it
-// names none.
+// drift from what the chapter does. Each chapter's figures.cpp makes its figures with this and is
+// its own small program (STEP_figures, whose main is run_main below); ./ocean figures runs every
+// chapter's program and gnuplot draws the scripts. Shared by every chapter, it names none.
 #pragma once
 
 #include <filesystem>
@@ -28,7 +28,16 @@ struct Figure {
     std::optional<std::string> write(const std::filesystem::path& dir) const;
 };
 
-// A chapter's figures, each made when the tool asks for it (figure_data.cpp lists the chapters).
+// A chapter's figures, each made when its program asks for it.
 using FigureMakers = std::vector<Figure (*)()>;
+
+// The main of a chapter's figure program, STEP_figures:
+//   STEP_figures OUT_DIR   makes every figure of `makers` in turn and writes it into OUT_DIR/FOLDER;
+//   STEP_figures --timers  prints `timers`, the timed passes of the chapter's pass table in the
+//                          order they first run (frame_path.hpp's timed_passes): what the step's
+//                          --bench must list (tests/smoke/frame_passes.sh). Only for a chapter
+//                          that has a pass table.
+// Its messages start with the program's name; the first file that cannot be written stops it.
+int run_main(int argc, char** argv, const FigureMakers& makers, const std::vector<std::string>& timers = {});
 
 }  // namespace figures

@@ -16,6 +16,17 @@ namespace figures {
 // The names in a ';'-separated list of resources.
 std::vector<std::string> split_resources(std::string_view list);
 
+// The timers of a pass table, in the order they first run, each once: what --bench lists (a timer
+// may time several passes, as step05's two fft passes).
+template <class Passes>
+std::vector<std::string> timed_passes(const Passes& passes) {
+    std::vector<std::string> timers;
+    for (const auto& pass : passes)
+        if (std::find(timers.begin(), timers.end(), std::string(pass.timer)) == timers.end())
+            timers.emplace_back(pass.timer);
+    return timers;
+}
+
 template <class Passes>
 Figure frame_path(const std::string& name, const std::string& folder, const std::string& title, const Passes& passes) {
     Figure f(name, folder);

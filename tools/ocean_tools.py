@@ -426,23 +426,32 @@ def compare(args):
     print(f"contact sheet: {out}/contact_sheet.png")
 
 
+def figure_programs():
+    """Each chapter with figures (a figures.cpp) has its own figure program, BUILD/STEP/STEP_figures."""
+    return [build_dir() / step / f"{step}_figures"
+            for step in all_steps() if (ROOT / step / "figures.cpp").is_file()]
+
+
 def figures(args):
-    """tools/figure_data computes each figure's numbers with its chapter's code (STEP/figures.cpp)
-    and writes a gnuplot script beside them, in BUILD/figures/FOLDER, FOLDER being where the
-    picture belongs in the repository (the chapter that shows it, or docs/figures for one several
-    chapters show); gnuplot draws the PNGs, copied into --out/FOLDER."""
+    """Each chapter's figure program (STEP_figures, from its figures.cpp) computes its figures'
+    numbers with the chapter's own code and writes a gnuplot script beside them, in
+    BUILD/figures/FOLDER, FOLDER being where the picture belongs in the repository (the chapter
+    that shows it, or docs/figures for one several chapters show); gnuplot draws the PNGs, copied
+    into --out/FOLDER."""
     dry_run_stops(["figures", "--out", args.out])
     if not shutil.which("gnuplot"):
         raise Failure("gnuplot not found (Debian: apt-get install gnuplot-nox)")
-    require_built(build_dir() / "tools/figure_data")
+    programs = figure_programs()
+    require_built(*programs)
     data = build_dir() / "figures"
     shutil.rmtree(data, ignore_errors=True)
     data = make_folder(data)
     out = make_folder(args.out)
-    run_quiet([build_dir() / "tools/figure_data", data], "figure_data failed")
+    for program in programs:
+        run_quiet([program, data], f"{program.name} failed")
     scripts = sorted(data.rglob("*.gp"))
     if not scripts:
-        raise Failure(f"figure_data wrote no gnuplot script in {data}")
+        raise Failure(f"the figure programs wrote no gnuplot script in {data}")
     for script in scripts:
         run_quiet(["gnuplot", script.name], f"gnuplot failed on {script}", cwd=script.parent)
         into = out / script.parent.relative_to(data)

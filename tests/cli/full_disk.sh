@@ -78,6 +78,7 @@ report() {
 }
 
 step01=$build/step01_sine2d/step01_sine2d
+step02_figures=$build/step02_sine3d/step02_sine3d_figures
 step05=$build/step05_fft/step05_fft
 step06=$build/step06_foam_sky/step06_foam_sky
 step07=$build/step07_buoyancy/step07_buoyancy
@@ -105,8 +106,9 @@ writer animate 1 out.webp "animate: " 'out.webp: [0-9]+ frames' -- "$tools/anima
 writer image_panel 1 panel.png "image_panel: " '' -- "$tools/image_panel" panel.png 160x90 1 "a|$picture"
 writer contact_sheet 1 sheet.png "contact_sheet: " '' -- "$tools/contact_sheet" sheet.png 32x18 "step01|$picture|$other"
 writer bench_chart 1 bench.png "bench_chart: " '' -- "$tools/bench_chart" "$out/bench.csv" bench.png
-# figure_data: directional_wave.dat (3 MB) is the only file over 100 KiB.
-writer figure_data 100 figures/step02_sine3d/directional_wave.dat "figure_data: " 'figures.* in ' -- "$tools/figure_data" figures
+# A chapter's figure program, step02's: directional_wave.dat (3 MB) is the only file over 100 KiB.
+writer step02_figures 100 figures/step02_sine3d/directional_wave.dat "step02_sine3d_figures: " 'figures.* in ' -- \
+  "$step02_figures" figures
 
 echo "full_disk: $failures of $cases writers failed"
 [ "$failures" -eq 0 ]

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # figures.sh REPO BUILD_DIR OUT IMAGE_COMPARE: ./ocean figures on what ctest built draws every
-# figure whose script figure_data wrote (at least the nine the READMEs show), each a PNG that is
-# not blank (image_compare refuses a blank picture, even compared with itself), in OUT/FOLDER as
-# figure_data's BUILD_DIR/figures/FOLDER holds its script (the chapter that shows it).
+# figure whose script the chapters' figure programs (STEP_figures) wrote (at least the nine the
+# READMEs show), each a PNG that is not blank (image_compare refuses a blank picture, even compared
+# with itself), in OUT/FOLDER as BUILD_DIR/figures/FOLDER holds its script (the chapter that shows
+# it).
 set -u
 repo=$1 build=$2 out=$3 compare=$4
 cd "$repo" || exit 1
