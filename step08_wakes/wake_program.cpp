@@ -45,11 +45,11 @@ void press(WakeScene& wake, const step07::FloatingBody& boat, double dt, const F
 WakeProgram::WakeProgram(ocean::StepInfo info, std::unique_ptr<BodiesAndField> bodies_and_field,
                          WakeProgramOptions options)
     : App(std::move(info)), bodies_and_field_(std::move(bodies_and_field)), options_(options) {
-    sea_.use_wind_speed(kBreeze);
     body_params_.boat_length = 6;  // Froude number 0.5 at 4 m/s: a Kelvin wake
     steering_.throttle = 0.5f;     // about 4 m/s (the thrust against the hull's drag)
     ocean::ParamRegistry& p = params();
     sea_.declare(p);
+    p.set_default("wind_speed", kBreeze);
     renderer_.declare(p);
     look_.declare(p);
     body_params_.declare(p);
@@ -148,7 +148,7 @@ void WakeProgram::sail(double dt) {
         bodies_and_field_->let_go(frame);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             if (b != step07::kBoat) bodies_[b].step(feed_.before(), feed_.now(), dt, feed_.interval());
-        sea_.add_local_waves(nullptr);
+        sea_.add_extra_waves(nullptr);
         stones_.clear();
         wake_ms_ = 0;
         return;
@@ -162,8 +162,8 @@ void WakeProgram::sail(double dt) {
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         if (b != step07::kBoat && bodies_and_field_->rides_the_wake(frame, b))
             bodies_[b].step(before, now, dt, feed_.interval());
-    local_waves_.upload(wake_now_);
-    sea_.add_local_waves(&local_waves_);
+    extra_waves_.upload(wake_now_);
+    sea_.add_extra_waves(&extra_waves_);
     wake_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 }
 

@@ -68,8 +68,8 @@ private:
     // The wake: its field, its maps last frame and now, and the textures step06's shaders read.
     std::unique_ptr<WakeScene> wake_;
     WaveFieldSettings wake_settings_;
-    step06::LocalWaveMaps wake_before_, wake_now_;
-    step06::LocalWaves local_waves_;
+    step06::ExtraWaveMaps wake_before_, wake_now_;
+    step06::ExtraWaves extra_waves_;
     PlanView plan_view_;
     bool plan_ = false, follow_boat_ = true, show_wake_ = true;
     float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;
