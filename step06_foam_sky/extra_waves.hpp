@@ -15,7 +15,7 @@
 
 namespace step06 {
 
-// One frame's local waves on the CPU: per cell (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz,
+// One frame's extra waves on the CPU: per cell (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz,
 // l dDx/dx, l dDz/dz), row (z) major, cell (0, 0)'s centre at `first_cell` (world x, z).
 struct ExtraWaveMaps {
     int n = 0;

@@ -66,7 +66,7 @@ public:
     // cascades from the next frame on; nullptr: none. The sea does not own them: they must outlive
     // it or be taken away first.
     void add_extra_waves(const ExtraWaves* waves) { extra_waves_ = waves; }
-    // The variant every program that reads the maps is compiled in: with or without local waves.
+    // The variant every program that reads the maps is compiled in: with or without extra waves.
     std::vector<std::string> shader_defines() const;
 
     const CascadeView& cascades() const { return cascade_view_; }

@@ -1,6 +1,8 @@
 // Chapter 8, the wake drawn on step06's sea. The renderer draws a sea as step05's two maps,
 // (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz): the wave field becomes the same
-// two maps over its own grid, and step06's shaders add them to the cascades (extra_waves.glsl).
+// two maps over its own grid, step06's extra waves, which its shaders add to the cascades
+// (extra_waves.glsl). They read nothing past the grid's edge: the absorbing layer has calmed the
+// field there, so the wake fades into the sea without a seam.
 //
 // The field holds heights only. Its horizontal motion follows from them as it does for every
 // linear wave (step05's choppy waves): a mode of height eta^(k) moves the water sideways by

@@ -62,7 +62,7 @@ TEST_F(Step08Gpu, TheShadersReadTheWakeAsTheCpuDoes) {
                 outside += which == 0 && want == glm::dvec4(0.0);
             }
     }
-    std::printf("local waves: worst |GPU - CPU| %.2g (values up to %.2f); points outside the grid: %d\n", worst, largest,
+    std::printf("wake as the shaders read it: worst |GPU - CPU| %.2g (values up to %.2f); points outside the grid: %d\n", worst, largest,
                 outside);
     EXPECT_GT(largest, 0.05);
     EXPECT_GT(outside, 1000) << "the points must reach past the grid";
