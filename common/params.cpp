@@ -310,6 +310,19 @@ void ParamRegistry::remove(const std::vector<std::string>& names) {
     }
 }
 
+void ParamRegistry::set_default(const std::string& name, const std::string& value) {
+    Param* p = find(name);
+    if (p == nullptr) throw std::logic_error("parameter '" + name + "' given a default but never declared");
+    ParamValue parsed = p->default_;
+    if (auto error = p->parse(value, parsed)) throw std::logic_error(*error);
+    p->default_ = parsed;
+    p->reset();
+    // What the variable holds, as a declaration takes it (a double bound to a float range: rounded).
+    if (p->get_) p->default_.number = p->get_();
+}
+
+void ParamRegistry::set_default(const std::string& name, double number) { set_default(name, format_double(number)); }
+
 std::string ParamRegistry::unknown_name_message(const std::string& name) const {
     std::string message = "unknown parameter '" + ellipsize(name, 40) + "'";
     const Param* closest = nullptr;

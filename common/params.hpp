@@ -165,6 +165,12 @@ public:
     // does not show (their variables keep their defaults). A name that is not declared is a
     // programming error (std::logic_error), so a renamed parameter cannot slip through.
     void remove(const std::vector<std::string>& names);
+    // Starts a parameter a part declared at the program's own default (a sea declared by its part,
+    // a calmer wind in this program): the value now, and the default that --list-params, the
+    // panel's tooltip and reset_all show. `value` is checked as --set checks it (a number: as its
+    // text). A name not declared or a value --set refuses is a programming error (std::logic_error).
+    void set_default(const std::string& name, const std::string& value);
+    void set_default(const std::string& name, double number);
 
     // "name=value" as given to --set. Returns an error message or nothing.
     std::optional<std::string> set_assignment(const std::string& assignment);

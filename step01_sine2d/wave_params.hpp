@@ -1,6 +1,6 @@
 // The parameters of one wave of a sum: waveN_wavelength, waveN_amplitude and waveN_speed, in the
-// panel group "wave N", shown while N < wave_count. step01 declares them for its plot; step02
-// (whose waves also have a direction) declares its own through the same function.
+// panel group "wave N", shown while N < wave_count. step01 declares them for its plot; a sea whose
+// waves also have a direction declares its own through the same function, with its own ranges.
 #pragma once
 
 #include "common/params.hpp"

@@ -20,7 +20,7 @@ public:
         : App({"A sum of sines, in 3D", "1.2.2",
                "A plane of (x_quads+1)(z_quads+1) vertices, each lifted in the vertex shader by "
                "h = sum of a_i sin(d_i.(x,z) w_i - t phi_i). Every wave has a direction d_i. "
-               "Shading is only height colour and flat facets: light comes in step03."}) {
+               "Shading is only height colour and flat facets: no light yet."}) {
         // The parameters: the waves (wave_params.hpp), the grid (common/grid.hpp), the view (here),
         // the camera (common/camera.cpp, by use_camera).
         waves_.declare(params());

@@ -1,5 +1,5 @@
-// The parameters of chapter 1.2.2's sea, declared once for every step that draws it (step02,
-// and step03 which lights the same waves).
+// The parameters of chapter 1.2.2's sea, declared once for every program that draws it (step02's,
+// and any that lights the same waves).
 #pragma once
 
 #include "common/app.hpp"

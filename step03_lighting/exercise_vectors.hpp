@@ -1,5 +1,5 @@
 // The exercise framework hands its checks' references GLM vectors (exercises/exercise.hpp); this
-// chapter's CPU reference, and step06's built on it, take their own Vec3 (normals.hpp).
+// chapter's CPU reference, and whatever is built on it, take their own Vec3 (normals.hpp).
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -1,5 +1,5 @@
-// The parameters of chapter 2's light, declared once for every step that uses it (step03, and
-// step04 which lights its fBm sea the same way).
+// The parameters of chapter 2's light, declared once for every program that uses it (step03's,
+// and any that lights another sea the same way).
 #pragma once
 
 #include "common/params.hpp"

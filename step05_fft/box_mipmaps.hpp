@@ -1,11 +1,11 @@
 // Mipmaps made by a compute shader (shaders/box_mip.comp): each texel of level l the mean of the
 // 2 x 2 texels it covers in level l - 1, which is what glGenerateMipmap makes of a power-of-two
 // texture. Drivers make glGenerateMipmap a draw or a blit per level and per layer: on llvmpipe it
-// took 3 of step06's sky pass's 3.5 ms (the cube's 6 faces x 7 levels) and about 2 ms of its foam
-// pass, and on an NVIDIA H100 or H200 0.67 of the 0.73 ms the GPU simulation took (its two maps' 4
-// layers x 8 levels). One dispatch makes up to four levels of every layer (a workgroup carries its
-// tile down in shared memory), since on a GPU a dispatch and its barrier cost more than the
-// averaging: two dispatches for 256 x 256, where a dispatch a level took eight (docs/performance.md).
+// took 3 of the 3.5 ms a sky cube map's pass took (6 faces x 7 levels), and on an NVIDIA H100 or
+// H200 0.67 of the 0.73 ms the GPU simulation took (its two maps' 4 layers x 8 levels). One
+// dispatch makes up to four levels of every layer (a workgroup carries its tile down in shared
+// memory), since on a GPU a dispatch and its barrier cost more than the averaging: two dispatches
+// for 256 x 256, where a dispatch a level took eight (docs/performance.md).
 #pragma once
 
 #include "common/gl_texture.hpp"
@@ -18,7 +18,7 @@ namespace step05 {
 // In place of glGenerateTextureMipmap(texture): levels 1 and below of a square, immutable
 // power-of-two texture, from level 0 down. The texture says what it is (a cube map, a 2D array or
 // a 2D texture; its size, layers and levels); its format must be GL_RGBA32F (the simulation's
-// maps), GL_RGBA16F, GL_RG32F or GL_R32F (step06's sky, combined levels and foam). Ends with the
+// maps), GL_RGBA16F, GL_RG32F or GL_R32F (a sky's cube map, other maps). Ends with the
 // barrier that lets texture fetches read the new levels.
 void make_box_mipmaps(const ocean::ProgramFactory& programs, GLuint texture);
 // Two textures of the same kind, size and format, in the same dispatches (three levels a dispatch

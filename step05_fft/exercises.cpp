@@ -161,7 +161,7 @@ std::vector<Exercise> chapter() {
          "    // TODO (exercise 1): the Jacobian of the choppy displacement.\n    return 1.0;\n",
          "Write jacobian. The water resting at x is drawn at x + l D(x). How much does that map stretch a small\n"
          "square around x? The factor is the determinant of the map's 2 x 2 matrix of derivatives: below 1 the\n"
-         "water is squeezed (crests), below 0 the surface has folded over itself (step06 puts foam there).\n"
+         "water is squeezed (crests), below 0 the surface has folded over itself (a breaking crest: foam).\n"
          "Derive the matrix from x + l D(x), then its determinant. The maps hold the derivatives of l D already:\n"
          "slopes.z = l dDx/dx, slopes.w = l dDz/dz, displacement.w = l dDx/dz (= l dDz/dx). view=jacobian shows J.",
          "Each diagonal entry is the derivative of one coordinate of x + l D along its own axis: it starts at 1. "

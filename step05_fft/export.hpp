@@ -17,7 +17,7 @@ void export_maps(const std::string& dir, unsigned displacement_texture, unsigned
                  int resolution, double patch_size, double time, double choppiness,
                  const ocean::ParamRegistry& params);
 
-// A map beyond the six above (step06: foam.pfm), n x n, rows z first.
+// A map beyond the six above (a foam map, say), n x n, rows z first.
 struct ExtraMap {
     std::string file, meaning;
     std::vector<float> values;
@@ -25,7 +25,7 @@ struct ExtraMap {
 
 // Writes the maps from texel arrays laid out as the textures are, 4 floats a texel:
 // (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz). `notes` are extra
-// `key = value` lines (step06: the grid's origin and spacing). Each file is written whole
+// `key = value` lines (a grid's origin and spacing, say). Each file is written whole
 // (ocean::write_file), the maps first and export.txt last; the first that cannot be written throws
 // ocean::Error naming it.
 void write_export(const std::string& dir, int n, const std::vector<float>& displacement,

@@ -40,8 +40,8 @@ constexpr std::array<std::array<Field, 2>, 4> kPacking{{{Height, DisplacementX},
                                                         {DDzDz, DDxDz}}};
 const char* field_name(Field f);  // "height", "displacement_x", ...
 // The maps a map view shows, in map_view.frag's order (its u_map): five of the fields, by their
-// names, and the Jacobian made from the derivatives. step05's `view` and step06's `debug_map`
-// list these.
+// names, and the Jacobian made from the derivatives. step05's `view` lists these, as any
+// program's map view can.
 std::vector<std::string> map_view_names();
 
 // The phase omega t reduced to [0, 2 pi) in double precision, as the GPU receives it (the

@@ -1,5 +1,5 @@
-// The parameters of chapter 4's spectrum, declared once for every step that simulates it
-// (step05, and step06's cascades), with the names the README and presets use. Each one is bound
+// The parameters of chapter 4's spectrum, declared once for every program that simulates it
+// (step05's, and any that splits it into cascades), with the names the README and presets use. Each one is bound
 // to the SpectrumParams field the math reads, so there is nothing to copy: the defaults are the
 // struct's own (a step that wants another sea sets the fields before declare()). Every one but
 // choppiness bumps `changes`: the step makes h0 again.

@@ -1,6 +1,6 @@
 // The FFT ocean's simulation: buffers, the compute passes (evolve, transform, assemble) and the two
 // textures the renderer samples. It simulates one or more cascades of the same resolution at
-// once (step05 uses one; step06 four), and transforms with one of three backends: the naive DFT
+// once (step05 uses one; a program may run several), and transforms with one of three backends: the naive DFT
 // and the FFT on the GPU, or FFTW on the CPU (CpuSimulation), whose maps it uploads.
 #pragma once
 
@@ -67,7 +67,7 @@ public:
     // The FFTW backend does all of it on the CPU (CpuSimulation), mipmaps included, and uploads
     // the finished textures.
     // With `timers`, each pass is timed on its own (evolve, fft, assemble); without, the caller
-    // may time the whole (step06's "simulation").
+    // may time the whole (one "simulation" timer).
     void simulate(double time, Backend backend, float choppiness, ocean::GpuTimers* timers = nullptr);
 
     // The passes one by one (simulate calls them; tests and the benchmark call them alone).
@@ -100,8 +100,8 @@ public:
     SimulationMaps maps() const { return {displacement_.id(), slopes_.id()}; }
     void bind_maps(const ocean::ShaderProgram& program) const { maps().bind(program); }
     // This frame's maps as the FFTW backend left them on the CPU (level 0 and mipmaps, layer
-    // major), when this frame's came from it; nullptr after a GPU transform (step07 then reads
-    // the textures back).
+    // major), when this frame's came from it; nullptr after a GPU transform (a reader on the CPU
+    // then reads the textures back).
     const CpuSimulation* maps_on_cpu() const { return maps_on_cpu_ ? cpu_.get() : nullptr; }
     // The fields of every cascade as 4 packed complex values per texel (tests, export).
     std::vector<float> read_fields() const;

@@ -1,7 +1,7 @@
 // The two maps a simulation leaves for the renderer (OceanSimulation's compute passes and
 // FragmentSimulation's fragment passes make the same two): 2D array textures, a layer a cascade,
 //   displacement (l Dx, h, l Dz, l dDx/dz) and slopes (dh/dx, dh/dz, l dDx/dx, l dDz/dz).
-// What reads them (the sea's draw, step06's foam, step07's queries) takes this, not the
+// What reads them (the sea's draw, a foam pass, height queries on the CPU) takes this, not the
 // simulation, so it reads the maps of either.
 #pragma once
 

@@ -54,7 +54,7 @@ struct SpectrumParams {
     std::uint64_t seed = 1;
     double amplitude_scale = 1;    // 1: heights in metres
     double low_cutoff = 0;         // rad/m: the band kept is low_cutoff <= |k| < high_cutoff, so
-    double high_cutoff = 1000;     // that step06's cascades can share a boundary without overlap
+    double high_cutoff = 1000;     // that bands cut from one spectrum (cascades) share a boundary without overlap
 };
 
 // The finite-depth dispersion relation omega^2 = g k tanh(k h), and its derivative. Used alike
@@ -101,8 +101,8 @@ double jonswap_variance_per_alpha(double peak_omega, double gamma);
 // observations"). Where the energy would pass PM's, gamma is lowered towards 1 (the peak's
 // enhancement is a young sea's overshoot, which the fully developed sea has lost), then alpha;
 // at F~_fd the fitted sea is PM's spectrum itself (alpha 0.0081, gamma 1). Lowering alpha alone
-// there would drop the short waves' level to 0.0053, below PM's 0.0081, and with it the slopes step06's
-// glitter is held to. Under the growth law the energy stays below PM's (0.90 of it at F~_fd).
+// there would drop the short waves' level to 0.0053, below PM's 0.0081, and with it the slopes a
+// sun's glitter is held to (Cox & Munk's). Under the growth law the energy stays below PM's (0.90 of it at F~_fd).
 struct JonswapShape {
     double alpha = 0;
     double gamma = 1;
@@ -188,7 +188,7 @@ void for_each_resolved_mode(const SpectrumParams& p, Visit&& visit) {
 // sum over resolved modes of Phi(k) dk^2: the expected variance of the height field, m^2.
 double resolved_variance(const SpectrumParams& p);
 // A bound on how far any point of the sea moves from rest, metres, for frustum culling (step05's
-// grid chunks, step06's patches): five standard deviations of the height, as much again times
+// grid chunks, or any mesh's patches): five standard deviations of the height, as much again times
 // the choppiness sideways (|D~| = |h~| mode by mode), and a metre.
 double largest_displacement(double height_variance, double choppiness);
 // sum over resolved modes of |k|^2 Phi(k) dk^2: the expected variance of the slope, summed over

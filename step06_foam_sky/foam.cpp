@@ -1,6 +1,6 @@
 #include "step06_foam_sky/foam.hpp"
 
-#include "step06_foam_sky/local_waves.hpp"
+#include "step06_foam_sky/extra_waves.hpp"
 
 #include "step05_fft/box_mipmaps.hpp"
 #include "step06_foam_sky/foam_pattern.hpp"
@@ -71,10 +71,10 @@ void FoamSimulation::fill(float value) {
 }
 
 void FoamSimulation::update(const step05::SimulationMaps& maps, const CascadeView& cascades, glm::dvec2 eye_xz,
-                            glm::dvec2 forward_xz, double dt, const FoamSettings& s, const LocalWaves* local) {
-    const bool with_local = local != nullptr && !local->empty();
+                            glm::dvec2 forward_xz, double dt, const FoamSettings& s, const ExtraWaves* extra) {
+    const bool with_extra = extra != nullptr && !extra->empty();
     ocean::ShaderProgram* p = programs_("foam.frag", {"common/shaders/fullscreen.vert", "step06_foam_sky/shaders/foam.frag"},
-                                        {"LOCAL_WAVES " + std::to_string(int(with_local))});
+                                        {"EXTRA_WAVES " + std::to_string(int(with_extra))});
     if (p == nullptr) throw ocean::Error("foam.frag does not build");
     const ocean::OffscreenPassState keep(no_vertices_.id());  // what was bound, put back at the end
     glUseProgram(p->id());
@@ -102,7 +102,7 @@ void FoamSimulation::update(const step05::SimulationMaps& maps, const CascadeVie
     p->set("u_n", n_);
     p->set("u_warm_start", int(first));
     maps.bind(*p);
-    if (with_local) local->bind(*p, origin_);
+    if (with_extra) extra->bind(*p, origin_);
     // Read last frame's foam, write each level of the other texture, then swap.
     const std::size_t next = 1 - current_;
     p->set("u_foam_before", UNIT_FOAM);

@@ -41,7 +41,7 @@
 
 namespace step06 {
 
-class LocalWaves;
+class ExtraWaves;
 
 struct FoamSettings {
     // J below which foam appears (the bias). One value for every sea: with it the whitecap
@@ -116,10 +116,10 @@ public:
     // One step of dt seconds around the camera (eye and view direction projected on x, z), from the
     // simulation's maps (OceanSimulation::maps or FragmentSimulation::maps): foam.frag drawn into
     // each level's layer of the texture it did not write last time, reading the other. The draw
-    // framebuffer, viewport, blending and program in use are put back. `local`: waves added to the
-    // cascades' (local_waves.hpp), or none.
+    // framebuffer, viewport, blending and program in use are put back. `extra`: waves added to the
+    // cascades' (extra_waves.hpp), or none.
     void update(const step05::SimulationMaps& maps, const CascadeView& cascades, glm::dvec2 eye_xz,
-                glm::dvec2 forward_xz, double dt, const FoamSettings& settings, const LocalWaves* local = nullptr);
+                glm::dvec2 forward_xz, double dt, const FoamSettings& settings, const ExtraWaves* extra = nullptr);
     // The windows and the texture, for the renderer (foam_map.glsl's uniforms) and --export.
     void bind(const ocean::ShaderProgram& program, int unit) const;
     // The pattern texture (u_foam_pattern, RGBA8: foam_pattern_texture; mipmapped, repeating), the

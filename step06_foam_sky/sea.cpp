@@ -93,17 +93,17 @@ void Sea::simulate(double time, glm::dvec3 eye) {
 
 void Sea::update_foam(double dt, glm::dvec3 eye, glm::vec3 forward) {
     foam_->update(simulation_->maps(), cascade_view_, {eye.x, eye.z}, {forward.x, forward.z}, dt, foam_settings_,
-                  local_waves_);
+                  extra_waves_);
 }
 
 std::vector<std::string> Sea::shader_defines() const {
-    return {"LOCAL_WAVES " + std::to_string(int(local_waves_ != nullptr && !local_waves_->empty()))};
+    return {"EXTRA_WAVES " + std::to_string(int(extra_waves_ != nullptr && !extra_waves_->empty()))};
 }
 
 void Sea::bind_maps(const ocean::ShaderProgram& p) const {
     cascade_view_.upload(p);
     simulation_->bind_maps(p);
-    if (local_waves_ != nullptr && !local_waves_->empty()) local_waves_->bind(p, cascade_view_.origin);
+    if (extra_waves_ != nullptr && !extra_waves_->empty()) extra_waves_->bind(p, cascade_view_.origin);
 }
 
 void Sea::bind_for_shading(const ocean::ShaderProgram& p) const {

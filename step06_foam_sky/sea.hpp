@@ -10,14 +10,10 @@
 #include "common/params.hpp"
 #include "common/shader.hpp"
 #include "step05_fft/ocean_params.hpp"
-#ifdef OCEAN_GL_PORTABLE
-#include "step05_fft/fragment_simulation.hpp"
-#else
-#include "step05_fft/ocean_simulation.hpp"
-#endif
+#include "step05_fft/sea_simulation.hpp"
 #include "step06_foam_sky/cascades.hpp"
+#include "step06_foam_sky/extra_waves.hpp"
 #include "step06_foam_sky/foam.hpp"
-#include "step06_foam_sky/local_waves.hpp"
 #include "step06_foam_sky/short_waves.hpp"
 
 #include <glm/vec2.hpp>
@@ -31,21 +27,13 @@
 
 namespace step06 {
 
-// The simulation the sea runs: step05's compute passes in the GL 4.5 profile (with its choice of
-// transform, timed), its fragment passes where there are no compute shaders (macOS's GL 4.1,
-// ES 3.0, WebGL 2). The same maps come out of both.
-#ifdef OCEAN_GL_PORTABLE
-using SeaSimulation = step05::FragmentSimulation;
-#else
-using SeaSimulation = step05::OceanSimulation;
-#endif
+// The simulation the sea runs: step05's, as the profile chose it (sea_simulation.hpp: compute
+// passes with a choice of transform in GL 4.5, fragment passes without compute shaders).
+using step05::SeaSimulation;
 
 class Sea {
 public:
     Sea();  // step06's sea: a near gale (14 m/s) over a 500 m first tile (use_default_sea)
-    // Another wind for a later chapter's default (step08's breeze, in which a wake shows): before
-    // declare(), so that it is the parameter's default.
-    void use_wind_speed(double metres_per_second) { params_.spectrum.wind_speed = metres_per_second; }
 
     // The sea state (wind, fetch, swell, choppiness, resolution), which cascades are drawn, and the
     // foam's two rates. The spectrum's shape (model, gamma, cut-offs, ...) is step05's lesson: its
@@ -65,11 +53,11 @@ public:
     // resolve (the slope variance per mip level, and the waves shorter than the last cascade).
     void bind_for_shading(const ocean::ShaderProgram& p) const;
     bool has_streaks() const { return foam_->streaks(); }  // the residual combed into streaks (Beaufort 7 and up)
-    // Waves a later chapter adds on a grid of its own (step08's wake; local_waves.hpp), drawn,
-    // shaded and foaming with the cascades from the next frame on; nullptr: none (step06). The
-    // sea does not own them: they must outlive it or be taken away first.
-    void add_local_waves(const LocalWaves* waves) { local_waves_ = waves; }
-    // The variant every program that reads the maps is compiled in: with or without local waves.
+    // Extra waves on a grid of their own (extra_waves.hpp), drawn, shaded and foaming with the
+    // cascades from the next frame on; nullptr: none. The sea does not own them: they must outlive
+    // it or be taken away first.
+    void add_extra_waves(const ExtraWaves* waves) { extra_waves_ = waves; }
+    // The variant every program that reads the maps is compiled in: with or without extra waves.
     std::vector<std::string> shader_defines() const;
 
     const CascadeView& cascades() const { return cascade_view_; }
@@ -112,7 +100,7 @@ private:
     std::vector<float> unresolved_by_level_;  // kMaxMipLevels per cascade
     SlopeVariance short_wave_slope_variance_;
     glm::dvec2 wind_heading_{1.0, 0.0};
-    const LocalWaves* local_waves_ = nullptr;
+    const ExtraWaves* extra_waves_ = nullptr;
     std::vector<std::string> description_;
 };
 

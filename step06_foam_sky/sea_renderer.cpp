@@ -60,7 +60,7 @@ void SeaRenderer::record(const Sea& sea, const SeaFrame& frame) {
 void SeaRenderer::draw_mesh(const std::string& name, const std::vector<std::string>& defines, const Sea& sea,
                             const SeaFrame& frame) {
     std::vector<std::string> variant = defines;
-    for (const std::string& d : sea.shader_defines()) variant.push_back(d);  // local waves or none
+    for (const std::string& d : sea.shader_defines()) variant.push_back(d);  // extra waves or none
     ocean::ShaderProgram* mesh = programs_(name, SeaPatches::mesh_shaders(), variant);
     if (mesh == nullptr) return;
     sea.bind_maps(*mesh);
@@ -88,7 +88,7 @@ std::vector<std::string> SeaRenderer::shading_defines(const Sea& sea, const Look
     std::vector<std::string> defines = {"MICROFACET " + std::to_string(look.microfacet), "DEBUG_VIEW " + std::to_string(view_),
                                         "ANISOTROPIC_TAPS " + std::to_string(anisotropy_),
                                         "STREAKS " + std::to_string(int(sea.has_streaks()))};
-    for (const std::string& d : sea.shader_defines()) defines.push_back(d);  // local waves or none
+    for (const std::string& d : sea.shader_defines()) defines.push_back(d);  // extra waves or none
     return defines;
 }
 

@@ -11,6 +11,6 @@
 #define UNIT_GBUFFER_WORLD 6  // the G-buffer's surface points (u_gbuffer_world)
 #define UNIT_GBUFFER_REST 7   // the G-buffer's rest positions and footprints (u_gbuffer_rest)
 #define UNIT_SKY_HORIZON 9    // the fog's colour around the horizon (sky_horizon.glsl's u_sky_horizon)
-#define UNIT_LOCAL_DISPLACEMENT 10  // a later chapter's local waves (local_waves.glsl): displacement
-#define UNIT_LOCAL_SLOPES 11        // and slopes
+#define UNIT_EXTRA_DISPLACEMENT 10  // the extra waves on a grid of their own (extra_waves.glsl): displacement
+#define UNIT_EXTRA_SLOPES 11        // and slopes
 #endif

@@ -1,6 +1,6 @@
 // The bodies drawn into step06's scene: each body's mesh (body_mesh.hpp) placed by its position and
-// orientation, lit as the sea is (the look's sun, the sky's reflection). step07's and step08's
-// programs both draw them so.
+// orientation, lit as the sea is (the look's sun, the sky's reflection). Any program that floats
+// step07's bodies draws them so.
 #pragma once
 
 #include "common/shader.hpp"

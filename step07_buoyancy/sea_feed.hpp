@@ -1,7 +1,8 @@
 // Chapter 7.5, as a program runs it: each frame, the sea the bodies read. The maps the renderer
 // draws reach the CPU from the FFTW backend directly (this frame's), or from the GPU through
 // map_readback.hpp (a frame late); the feed keeps the last two, so the bodies see the sea move
-// from one to the other over the frame. step07's and step08's programs both use it.
+// from one to the other over the frame. A part of its own, so that any program with bodies on
+// the sea uses it as step07's does.
 #pragma once
 
 #include "step06_foam_sky/sea.hpp"

@@ -4,7 +4,7 @@
 
 namespace step08 {
 
-step06::LocalWaveMaps BodiesAndField::drawn_wake(const WakeFrame& frame) const {
+step06::ExtraWaveMaps BodiesAndField::drawn_wake(const WakeFrame& frame) const {
     return step08::wake_maps(frame.wake.field(), frame.choppiness);
 }
 

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "common/params.hpp"
-#include "step06_foam_sky/local_waves.hpp"
+#include "step06_foam_sky/extra_waves.hpp"
 #include "step07_buoyancy/floating_body.hpp"
 #include "step07_buoyancy/sea_feed.hpp"
 #include "step08_wakes/wake_scene.hpp"
@@ -46,7 +46,7 @@ public:
     // step_field moved with the field.
     virtual bool rides_the_wake(const WakeFrame& /*frame*/, std::size_t /*body*/) const { return true; }
     // The field's maps as the sea draws them.
-    virtual step06::LocalWaveMaps drawn_wake(const WakeFrame& frame) const;
+    virtual step06::ExtraWaveMaps drawn_wake(const WakeFrame& frame) const;
     // The wake turned off (show_wake=false): the field waits, and the bodies (not the boat) float
     // on step07's sea after this.
     virtual void let_go(WakeFrame& /*frame*/) {}

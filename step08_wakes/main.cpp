@@ -5,7 +5,7 @@
 // sqrt(g k tanh kh)), pushed each frame by the boat's hull, a patch of pressure that displaces the
 // water the hull does (wake_scene.hpp), and by stones dropped with a click. The field becomes two
 // maps in step05's layout (wake_maps.hpp) that step06's shaders add to the cascades
-// (local_waves.glsl): the wake moves the mesh, shades the pixels and folds into foam; the buoy and
+// (extra_waves.glsl): the wake moves the mesh, shades the pixels and folds into foam; the buoy and
 // the raft float on the sea with the wake in it (wake_sea.hpp).
 // `plan` shows the wake alone from above, a boat at a set speed on still water (plan_view.hpp):
 // the lesson's laboratory, where Kelvin's angle is measured.

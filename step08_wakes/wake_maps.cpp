@@ -7,7 +7,7 @@
 
 namespace step08 {
 
-step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness, const std::vector<double>* heights_drawn) {
+step06::ExtraWaveMaps wake_maps(const WaveField& field, double choppiness, const std::vector<double>* heights_drawn) {
     const int n = field.n();
     const std::size_t cells = std::size_t(n) * std::size_t(n);
     const Fft2d& fft = field.fft();
@@ -43,7 +43,7 @@ step06::LocalWaveMaps wake_maps(const WaveField& field, double choppiness, const
         }
     for (auto* map : {&height_dx, &dz_cross, &slopes, &stretch}) fft.inverse(*map);
 
-    step06::LocalWaveMaps maps;
+    step06::ExtraWaveMaps maps;
     maps.n = n;
     maps.cell = field.settings().cell;
     maps.first_cell = field.cell_centre(0, 0);

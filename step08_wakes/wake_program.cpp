@@ -23,11 +23,11 @@ constexpr double kBreeze = 6;
 WakeProgram::WakeProgram(ocean::StepInfo info, std::unique_ptr<BodiesAndField> bodies_and_field,
                          WakeProgramOptions options)
     : App(std::move(info)), options_(options), boat_and_wake_(std::move(bodies_and_field)) {
-    scene_.sea().use_wind_speed(kBreeze);
     body_params_.boat_length = 6;  // Froude number 0.5 at 4 m/s: a Kelvin wake
     steering_.throttle = 0.5f;     // about 4 m/s (the thrust against the hull's drag)
     ocean::ParamRegistry& p = params();
     scene_.declare(p);
+    p.set_default("wind_speed", kBreeze);
     body_params_.declare(p);
     steering_.declare(p);
     {
@@ -94,7 +94,7 @@ void WakeProgram::sail(double dt) {
     stones_.clear();
     const glm::dvec3 boat = boat_and_wake_.bodies()[step07::kBoat].position();
     if (follow_boat_) camera().target += glm::dvec3(boat.x - boat_before.x, 0, boat.z - boat_before.z);
-    scene_.sea().add_local_waves(boat_and_wake_.drawn_wake());
+    scene_.sea().add_extra_waves(boat_and_wake_.drawn_wake());
 }
 
 // step07's bodies dropped in front of the camera; the boat already under way at the speed its

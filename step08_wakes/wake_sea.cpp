@@ -4,7 +4,7 @@
 
 namespace step08 {
 
-WakeSample wake_at(const step06::LocalWaveMaps& wake, glm::dvec2 rest) {
+WakeSample wake_at(const step06::ExtraWaveMaps& wake, glm::dvec2 rest) {
     WakeSample s;
     if (wake.n < 2) return s;
     const glm::dvec2 q = (rest - wake.first_cell) / wake.cell;

@@ -114,7 +114,7 @@ public:
 
     // The field's maps as the window shows it: beside the bodies in contact, their dents (the water
     // under a hull, which the hull hides) left out, their waves kept (contact_step.hpp's pressure).
-    step06::LocalWaveMaps drawn_wake(const step08::WakeFrame& frame) const override {
+    step06::ExtraWaveMaps drawn_wake(const step08::WakeFrame& frame) const override {
         if (contact_.pressure().empty()) return step08::wake_maps(frame.wake.field(), frame.choppiness);
         std::vector<double> heights = frame.wake.field().heights();
         for (std::size_t c = 0; c < heights.size(); ++c) heights[c] += contact_.pressure()[c] / ocean::kGravity;

@@ -1,8 +1,8 @@
 #version 450 core
 // Just enough shading to see the shape; light and true normals are the next chapter.
 // Colour follows height (deep troughs, pale crests). The optional facet shading takes each
-// triangle's normal from screen-space derivatives of its position: cheap, flat, and a
-// preview of why step03 computes normals properly.
+// triangle's normal from screen-space derivatives of its position: cheap, and flat (one
+// normal per triangle), where the waves' own derivatives would give every point its own.
 #include "facet.glsl"
 
 in vec3 v_world_position;

@@ -3,7 +3,7 @@
 // texels it covers in the level above, what glGenerateMipmap makes of a power-of-two texture, for
 // every layer (or cube face: z) at once, of one texture or of two alike (MAPS). glGenerateMipmap
 // would do, but drivers turn it into a draw or a blit per level and per layer: on llvmpipe 42
-// small draws for step06's sky cube, most of its sky pass; on an NVIDIA H100 or H200 nine tenths
+// small draws for a sky's cube map, most of the pass that draws it; on an NVIDIA H100 or H200 nine tenths
 // of the simulation's GPU time. A dispatch per level (this shader's first form) still cost a GPU
 // 5 to 7 microseconds each, most of them waiting on the barrier between levels, so a workgroup now
 // carries its tile down LEVELS levels in shared memory:

@@ -2,7 +2,7 @@
 // The debug view of one map: the chosen channel over the screen (one tile, 1:1 aspect), blue for
 // negative, white at zero, red for positive, scaled by u_range. The Jacobian has a scale of its
 // own, whatever u_range: white at J = 1 (untouched), red as the surface squeezes towards J = 0,
-// blue as it stretches towards J = 2, and black where J < 0 (the surface folds: step06's foam).
+// blue as it stretches towards J = 2, and black where J < 0 (the surface folds: a breaking crest).
 // The spectrum view shows log10 of each mode's energy.
 // Right of the tile, a legend: the colour bar with the values at its ends and middle.
 #include "ocean_maps.glsl"
@@ -16,7 +16,7 @@ uniform int u_map;           // MAP_* below
 uniform float u_range;       // value shown at full colour
 uniform vec2 u_resolution;   // pixels
 uniform sampler2D u_spectrum_image;  // log10 energy, already coloured (RGBA8)
-uniform int u_layer;                 // the cascade (step06; 0 in step05)
+uniform int u_layer;                 // the cascade (0: step05 runs one)
 
 const int MAP_HEIGHT = 0, MAP_DISPLACEMENT_X = 1, MAP_DISPLACEMENT_Z = 2, MAP_SLOPE_X = 3, MAP_SLOPE_Z = 4,
           MAP_JACOBIAN = 5, MAP_SPECTRUM = 6;

@@ -1,6 +1,6 @@
 // make_box_mipmaps (box_mipmaps.hpp, shaders/box_mip.comp) on the GPU, against the 2 x 2 mean it
-// claims and against glGenerateMipmap, whose place it takes: the simulation's maps here, step06's
-// sky, combined levels and foam there.
+// claims and against glGenerateMipmap, whose place it takes: the simulation's maps, and the other
+// kinds and formats it takes (a cube map, 2D maps of GL_RGBA16F, GL_RG32F, GL_R32F).
 #include <cmath>
 #include <cstdio>
 #include <random>

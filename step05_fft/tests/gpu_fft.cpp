@@ -287,7 +287,7 @@ TEST_F(FftTest, AssembledTexturesHoldTheChoppyMaps) {
 }
 
 // The FFTW backend filters its own mipmaps on the CPU, the GPU FFT backend by box_mip.comp (which
-// step06's box-mipmaps test holds to glGenerateMipmap): every level of both maps the same, to float rounding
+// gpu_box_mipmaps.cpp holds to glGenerateMipmap): every level of both maps the same, to float rounding
 // (relative to the map's largest value at level 0: the last level is the mean, near zero).
 TEST_F(FftTest, CpuMipmapsAreGlsMipmaps) {
     const InitialSpectrum s = sea(128);

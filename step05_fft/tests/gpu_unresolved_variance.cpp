@@ -1,8 +1,8 @@
 // What a mip level of the slope map averages away, predicted from the spectrum (step05's
 // unresolved_slope_variance_by_level: the box filter's response cos(k d 2^j / 2) per level), against
 // what the GPU's mipmaps actually keep: at level l the mean over texels of the mean slope squared
-// is the variance left, so the full-resolution variance less it is what step06 turns into
-// roughness. One sea's mipmaps against the expectation: within its luck.
+// is the variance left, so the full-resolution variance less it is what a shader that reads the
+// mipmaps must add back as roughness. One sea's mipmaps against the expectation: within its luck.
 #include "step05_fft/ocean_simulation.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"

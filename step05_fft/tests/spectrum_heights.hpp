@@ -1,5 +1,5 @@
-// Significant wave heights by hand, for the tests of step05 and of the chapters that use its
-// spectrum (step06's presets): independent of the code's sums over the grid.
+// Significant wave heights by hand, for the tests of step05 and of any program that uses its
+// spectrum (a preset's sea): independent of the code's sums over the grid.
 #pragma once
 
 #include "step05_fft/spectrum.hpp"

@@ -283,7 +283,7 @@ TEST(Step05Energy, HeightVarianceMatchesTheSpectrumIntegral) {
 
 TEST(Step05Energy, SlopeVarianceIsTheSecondMomentOfTheSpectrum) {
     // E[(dh/dx)^2 + (dh/dz)^2] = integral of |k|^2 Phi d^2k = integral of k^2 F(k) dk (D sums to
-    // 1): the grid's sum (which step06's roughness uses) against that 1D integral, over an annulus
+    // 1): the grid's sum (what a shader's roughness takes) against that 1D integral, over an annulus
     // the grid covers, as in the height test above.
     const SpectrumParams p = annulus_sea();
     double integral = 0;

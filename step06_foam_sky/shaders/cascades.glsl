@@ -1,7 +1,7 @@
 // The four cascades' textures (step05's simulation, one layer each) and what the surface is at a
 // rest position p: the sum of the cascades, each sampled at p over its own tile size.
 #include "step05_fft/shaders/ocean_maps.glsl"
-#include "local_waves.glsl"
+#include "extra_waves.glsl"
 
 const int CASCADES = 4;
 uniform float u_patch_sizes[CASCADES];  // metres
@@ -37,8 +37,8 @@ vec4 cascade_displacement_at(int c, vec2 p, float footprint) {
 vec4 displacement_at(vec2 p, float footprint) {
     vec4 sum = vec4(0.0);
     for (int c = 0; c < CASCADES; ++c) sum += cascade_displacement_at(c, p, footprint);
-#if LOCAL_WAVES
-    sum += local_displacement_at(p);
+#if EXTRA_WAVES
+    sum += extra_displacement_at(p);
 #endif
     return sum;
 }
@@ -59,8 +59,8 @@ void surface_at(vec2 p, float footprint, out vec4 displacement, out vec4 slopes)
         displacement += textureLod(u_displacement, cascade_uv(p, c), lod);
         slopes += textureLod(u_slopes, cascade_uv(p, c), lod);
     }
-#if LOCAL_WAVES
-    displacement += local_displacement_at(p);
-    slopes += local_slopes_at(p);
+#if EXTRA_WAVES
+    displacement += extra_displacement_at(p);
+    slopes += extra_slopes_at(p);
 #endif
 }

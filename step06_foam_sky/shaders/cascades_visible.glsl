@@ -144,8 +144,8 @@ SurfaceSample sample_surface(vec2 p, SurfaceFootprint f) {
     s.slopes = vec4(0.0);
     s.unresolved_slope_variance = 0.0;
     for (int c = 0; c < CASCADES; ++c) add_cascade(c, p, long_axis, long_length, short_length, s);
-#if LOCAL_WAVES
-    s.slopes += local_slopes_at(p);
+#if EXTRA_WAVES
+    s.slopes += extra_slopes_at(p);
 #endif
     return s;
 }

@@ -1,8 +1,8 @@
-// The wake as step06's shaders read it (local_waves.glsl, from the textures step06::LocalWaves
+// The wake as step06's shaders read it (extra_waves.glsl, from the textures step06::ExtraWaves
 // uploads) against wake_sea.hpp's wake_at, the CPU reference in double, on a grid of points over
 // the wake's grid and past its edges, from a world origin far from it (as the program's, which
 // sits near the camera).
-#include "step06_foam_sky/local_waves.hpp"
+#include "step06_foam_sky/extra_waves.hpp"
 #include "step08_wakes/wake_maps.hpp"
 #include "step08_wakes/wake_scene.hpp"
 #include "step08_wakes/wake_sea.hpp"
@@ -30,11 +30,11 @@ TEST_F(Step08Gpu, TheShadersReadTheWakeAsTheCpuDoes) {
     step08::BoatSettings boat;
     scene.place({10000.25, -20000.5}, {1, 0.3});  // far out: the positions go to the GPU from an origin near it
     scene.sail(8, boat, 0.3);
-    const step06::LocalWaveMaps maps = step08::wake_maps(scene.field(), 1.3);
-    step06::LocalWaves waves;
+    const step06::ExtraWaveMaps maps = step08::wake_maps(scene.field(), 1.3);
+    step06::ExtraWaves waves;
     waves.upload(maps);
     ocean::ShaderProgram* program =
-        cache("local_waves_at", {"common/shaders/fullscreen.vert", "step08_wakes/tests/local_waves_at.frag"}, {});
+        cache("extra_waves_at", {"common/shaders/fullscreen.vert", "step08_wakes/tests/extra_waves_at.frag"}, {});
     ASSERT_NE(program, nullptr);
     const glm::dvec2 origin = glm::floor(scene.boat_position());  // the world origin near the boat
     waves.bind(*program, origin);
@@ -62,7 +62,7 @@ TEST_F(Step08Gpu, TheShadersReadTheWakeAsTheCpuDoes) {
                 outside += which == 0 && want == glm::dvec4(0.0);
             }
     }
-    std::printf("local waves: worst |GPU - CPU| %.2g (values up to %.2f); points outside the grid: %d\n", worst, largest,
+    std::printf("wake as the shaders read it: worst |GPU - CPU| %.2g (values up to %.2f); points outside the grid: %d\n", worst, largest,
                 outside);
     EXPECT_GT(largest, 0.05);
     EXPECT_GT(outside, 1000) << "the points must reach past the grid";

@@ -47,7 +47,7 @@ OneWave one_wave() {
 // step05 draws them), to float's rounding: 1e-6 m on heights of 0.2 m, slopes of 0.1.
 TEST(Step08WakeMaps, OneWaveIsStep05sGerstnerWave) {
     const OneWave w = one_wave();
-    const step06::LocalWaveMaps maps = step08::wake_maps(w.field, 1.0);
+    const step06::ExtraWaveMaps maps = step08::wake_maps(w.field, 1.0);
     const step07::FlatSea still;
     const step08::SeaWithWake sea(still, maps);
     const step07::GerstnerSea gerstner({w.wave}, 0.0);
@@ -70,7 +70,7 @@ TEST(Step08WakeMaps, OneWaveIsStep05sGerstnerWave) {
 // the heights or their slopes.
 TEST(Step08WakeMaps, ChoppinessScalesOnlyTheSidewaysMotion) {
     const OneWave w = one_wave();
-    const step06::LocalWaveMaps full = step08::wake_maps(w.field, 1.0), half = step08::wake_maps(w.field, 0.5);
+    const step06::ExtraWaveMaps full = step08::wake_maps(w.field, 1.0), half = step08::wake_maps(w.field, 0.5);
     for (std::size_t c = 0; c < full.displacement.size(); c += 4) {
         EXPECT_NEAR(half.displacement[c + 1], full.displacement[c + 1], 1e-7);  // h
         EXPECT_NEAR(half.slopes[c], full.slopes[c], 1e-7);                      // dh/dx
@@ -92,7 +92,7 @@ TEST(Step08WakeMaps, TheWakeFoldsOnItsCrests) {
     step08::BoatSettings boat;
     boat.draft = 0.8;
     scene.sail(20, boat, 0);
-    const step06::LocalWaveMaps maps = step08::wake_maps(scene.field(), 1.0);
+    const step06::ExtraWaveMaps maps = step08::wake_maps(scene.field(), 1.0);
     const std::size_t cells = maps.displacement.size() / 4;
     std::vector<std::pair<double, double>> jacobian_height(cells);
     double rms = 0;
@@ -116,7 +116,7 @@ TEST(Step08WakeMaps, TheWakeFoldsOnItsCrests) {
 // Outside the grid the wake adds nothing; inside, exactly what the maps hold at a cell centre.
 TEST(Step08WakeMaps, NothingOutsideTheGrid) {
     const OneWave w = one_wave();
-    const step06::LocalWaveMaps maps = step08::wake_maps(w.field, 1.0);
+    const step06::ExtraWaveMaps maps = step08::wake_maps(w.field, 1.0);
     const double side = w.field.side();
     for (glm::dvec2 outside : {glm::dvec2(-side, 0), glm::dvec2(0, side), glm::dvec2(2 * side, -2 * side)})
         EXPECT_EQ(step08::wake_at(maps, outside).displacement, glm::dvec4(0.0));
@@ -191,7 +191,7 @@ TEST(Step08WakeOnTheSea, ABuoyRidesTheWake) {
     step07::FloatingBody buoy(buoy_settings, {0, 0, 8});
     for (int i = 0; i < 400; ++i) buoy.step(still, still, 0.05);
     const double rest = buoy.position().y;
-    step06::LocalWaveMaps before = step08::wake_maps(scene.field(), 1.0), now;
+    step06::ExtraWaveMaps before = step08::wake_maps(scene.field(), 1.0), now;
     double lowest = rest, highest = rest, water_low = 0, water_high = 0;
     for (int i = 0; i < 400; ++i) {  // 20 s: the boat from 40 m before the buoy to 40 m past it
         scene.sail(0.05, boat, 0);
@@ -222,7 +222,7 @@ TEST(Step08WakeOnTheSea, WithoutTheWakeTheBuoyStaysPut) {
     }();
     step07::FloatingBody buoy = afloat;
     const step07::FlatSea still;
-    const step06::LocalWaveMaps none;
+    const step06::ExtraWaveMaps none;
     for (int i = 0; i < 100; ++i) buoy.step(step08::SeaWithWake(still, none), step08::SeaWithWake(still, none), 0.05);
     EXPECT_NEAR(buoy.position().y, afloat.position().y, 1e-3);
 }

@@ -34,7 +34,7 @@ if(NOT OCEAN_SANITIZE)
   add_executable(portable_gpu_tests "${_tests}/gpu/gpu_main.cpp" "${_tests}/gpu/portable_gpu.cpp"
                  "${PROJECT_SOURCE_DIR}/step05_fft/fragment_fft.cpp" "${PROJECT_SOURCE_DIR}/step05_fft/fragment_simulation.cpp"
                  "${PROJECT_SOURCE_DIR}/step06_foam_sky/sky.cpp" "${PROJECT_SOURCE_DIR}/step06_foam_sky/foam.cpp"
-                 "${PROJECT_SOURCE_DIR}/step06_foam_sky/local_waves.cpp"
+                 "${PROJECT_SOURCE_DIR}/step06_foam_sky/extra_waves.cpp"
                  "${PROJECT_SOURCE_DIR}/step06_foam_sky/foam_pattern.cpp")
   if(NOT OCEAN_GL_PORTABLE)
     target_sources(portable_gpu_tests PRIVATE "${PROJECT_SOURCE_DIR}/step05_fft/box_mipmaps.cpp")  # the sky's mipmaps in 4.5

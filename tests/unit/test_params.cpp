@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace {
@@ -58,6 +59,36 @@ TEST_F(Fixture, RemovedParametersAreUnknownAndKeepTheirDefaults) {
     EXPECT_FALSE(params.set("amplitude", "2").has_value());  // the others as before
     EXPECT_EQ(params.list_text().find("wave_count"), std::string::npos);
     EXPECT_THROW(params.remove({"no_such_parameter"}), std::logic_error);
+}
+
+// A program starts a parameter a part declared at its own default (step08's sea in a breeze):
+// the value, the default --list-params prints and what every reset puts back; checked as --set
+// checks, and a name never declared is a programming error.
+TEST_F(Fixture, AProgramStartsADeclaredParameterAtItsOwnDefault) {
+    ocean::Generation changes;
+    double wind = 14;
+    params.add_float("wind_speed", &wind, 1, 30, "m/s").bumps(changes);
+    const unsigned before = changes.value;
+    params.set_default("wind_speed", 6.0);
+    params.set_default("camera_mode", "fly");
+    EXPECT_EQ(wind, 6.0);
+    EXPECT_EQ(mode, 1);
+    EXPECT_GT(changes.value, before);  // what was built for 14 m/s is built again
+    EXPECT_EQ(params.find("wind_speed")->default_text(), "6");
+    EXPECT_EQ(params.find("camera_mode")->default_text(), "fly");
+    const std::string list = params.list_text();
+    std::istringstream row(list.substr(list.find("\nwind_speed ") + 1));
+    std::string name, shown;
+    row >> name >> shown;
+    EXPECT_EQ(shown, "6") << list;
+    EXPECT_FALSE(params.set("wind_speed", "20").has_value());
+    params.reset_all();
+    EXPECT_EQ(wind, 6.0);
+    EXPECT_EQ(mode, 1);
+    EXPECT_THROW(params.set_default("wind_speed", 40.0), std::logic_error);  // outside [1, 30]
+    EXPECT_THROW(params.set_default("camera_mode", "drone"), std::logic_error);
+    EXPECT_THROW(params.set_default("no_such_parameter", 1.0), std::logic_error);
+    EXPECT_EQ(params.find("wind_speed")->default_text(), "6");
 }
 
 TEST_F(Fixture, SetsGoodValuesOfEveryType) {

@@ -1,8 +1,8 @@
 #version 450 core
-// Evaluates step06's local_waves.glsl (LOCAL_WAVES 1) on a grid of points around and beyond the
+// Evaluates step06's extra_waves.glsl (EXTRA_WAVES 1) on a grid of points around and beyond the
 // wake's grid, for the read-back test against wake_sea.hpp's wake_at (in double).
-#define LOCAL_WAVES 1
-#include "step06_foam_sky/shaders/local_waves.glsl"
+#define EXTRA_WAVES 1
+#include "step06_foam_sky/shaders/extra_waves.glsl"
 
 out vec4 out_map;
 uniform vec2 u_first;    // metres (x, z) from the world origin of pixel (0, 0)
@@ -11,5 +11,5 @@ uniform int u_slopes;    // 0: the displacement map; 1: the slopes
 
 void main() {
     vec2 p = u_first + (gl_FragCoord.xy - 0.5) * u_step;
-    out_map = u_slopes == 1 ? local_slopes_at(p) : local_displacement_at(p);
+    out_map = u_slopes == 1 ? extra_slopes_at(p) : extra_displacement_at(p);
 }

@@ -1,8 +1,9 @@
-// Waves a later chapter adds to the sea on a grid of its own (step08's wake around the boat): two
-// maps in step05's layout over n x n cells, placed in the world. The sea's shaders add them to
-// the cascades where LOCAL_WAVES is 1 (local_waves.glsl): the mesh's displacement, the pixels'
-// slopes, and the Jacobian that makes foam. step06 itself adds none (LOCAL_WAVES 0), so its
-// pictures do not change.
+// Extra waves on a grid of their own, added term by term to the cascades' maps: waves the spectrum
+// does not hold (made by something on the water, say), as two maps in step05's layout over n x n
+// cells placed anywhere in the world. Where EXTRA_WAVES is 1 the sea's shaders add them to the
+// cascades' sums (extra_waves.glsl): the mesh's displacement, the pixels' slopes, and through them
+// the normal and the Jacobian that makes foam. A sea given none compiles none of it (EXTRA_WAVES
+// 0): its shaders are the cascades' alone.
 #pragma once
 
 #include "common/gl_texture.hpp"
@@ -14,9 +15,9 @@
 
 namespace step06 {
 
-// One frame's local waves on the CPU: per cell (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz,
+// One frame's extra waves on the CPU: per cell (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz,
 // l dDx/dx, l dDz/dz), row (z) major, cell (0, 0)'s centre at `first_cell` (world x, z).
-struct LocalWaveMaps {
+struct ExtraWaveMaps {
     int n = 0;
     double cell = 0;  // metres
     glm::dvec2 first_cell{0.0};
@@ -25,9 +26,9 @@ struct LocalWaveMaps {
 
 // The same on the GPU: two RGBA32F textures read texel by texel (bilinear in the shader, as in
 // every profile float textures may be fetched but not always filtered).
-class LocalWaves {
+class ExtraWaves {
 public:
-    void upload(const LocalWaveMaps& maps);
+    void upload(const ExtraWaveMaps& maps);
     bool empty() const { return n_ == 0; }
     // The textures on their units (texture_units.h) and where the grid is from `world_origin`
     // (the sea's, Sea::world_origin: x, z).

@@ -1,10 +1,10 @@
-#include "step06_foam_sky/local_waves.hpp"
+#include "step06_foam_sky/extra_waves.hpp"
 
 #include "step06_foam_sky/texture_units.h"
 
 namespace step06 {
 
-void LocalWaves::upload(const LocalWaveMaps& maps) {
+void ExtraWaves::upload(const ExtraWaveMaps& maps) {
     if (maps.n <= 0) {
         n_ = 0;
         return;
@@ -20,12 +20,12 @@ void LocalWaves::upload(const LocalWaveMaps& maps) {
     first_cell_ = maps.first_cell;
 }
 
-void LocalWaves::bind(const ocean::ShaderProgram& p, glm::dvec2 world_origin) const {
-    ocean::bind_texture(UNIT_LOCAL_DISPLACEMENT, GL_TEXTURE_2D, displacement_.id());
-    ocean::bind_texture(UNIT_LOCAL_SLOPES, GL_TEXTURE_2D, slopes_.id());
+void ExtraWaves::bind(const ocean::ShaderProgram& p, glm::dvec2 world_origin) const {
+    ocean::bind_texture(UNIT_EXTRA_DISPLACEMENT, GL_TEXTURE_2D, displacement_.id());
+    ocean::bind_texture(UNIT_EXTRA_SLOPES, GL_TEXTURE_2D, slopes_.id());
     // From the world origin near the camera, in double, then float: small numbers anywhere.
-    p.set("u_local_first_cell", glm::vec2(first_cell_ - world_origin));
-    p.set("u_local_cell", float(cell_));
+    p.set("u_extra_first_cell", glm::vec2(first_cell_ - world_origin));
+    p.set("u_extra_cell", float(cell_));
 }
 
 }  // namespace step06
