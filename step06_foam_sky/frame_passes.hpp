@@ -15,7 +15,7 @@ using step05::FramePass;
 // A pass that reads one level of a texture to draw the next (the mipmaps, the bloom's chain), or
 // two textures in turn (the foam's ping-pong), both reads and writes it: RW in the figure.
 // The G-buffer's world target carries the mesh's l dDx/dz, so the shading reads the slopes only.
-// Texture units as main.cpp binds them (texture_units.h): 0-1 the cascades' maps, 3 foam, 4 sky,
+// Texture units as the SeaRenderer binds them (texture_units.h): 0-1 the cascades' maps, 3 foam, 4 sky,
 // 5 the bubble pattern, 6-7 the G-buffer, 9 the fog's horizon table (unit 8 is free).
 constexpr std::array<FramePass, 8> kFramePasses{{
     {"simulation", "step05's evolve.comp, fft.comp x 2, assemble.comp, box_mip.comp",
