@@ -101,7 +101,7 @@ void BoatAndWake::sail(const SailFrame& frame) {
     for (std::size_t b = 0; b < bodies_.size(); ++b)
         if (b != step07::kBoat && bodies_and_field_->rides_the_wake(field_frame, b))
             bodies_[b].step(before, now, dt, feed.interval());
-    local_waves_.upload(wake_now_);
+    extra_waves_.upload(wake_now_);
     wake_ms_ = milliseconds_since(started);
 }
 
