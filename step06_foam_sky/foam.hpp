@@ -45,7 +45,7 @@ class ExtraWaves;
 
 struct FoamSettings {
     // J below which foam appears (the bias). One value for every sea: with it the whitecap
-    // coverage follows the wind as observed (foam.md, "How much foam"; tests/physics_check whitecaps).
+    // coverage follows the wind as observed (foam.md, "How much foam"; tests/sea_check.cpp whitecaps).
     double threshold = 0.64;
     double injection = 16;    // active foam per second per unit of (threshold - J)
     double decay_rate = 1.6;  // 1/s: r_a, the active whitecap stops breaking as exp(-r_a t)

@@ -2,7 +2,7 @@
 # whitecap_figure.sh BUILD_DIR OUT_DIR: OUT_DIR/whitecaps.png (step06_foam_sky/whitecaps.png, which
 # foam.md shows), step06's whitecap coverage against the wind as a camera records it
 # (step06_foam_sky/tests/whitecaps.sh's pictures from 150 m, read by step06's picture_check) and on
-# the active foam map (foam > 0.3, tests/physics_check), beside Monahan and O'Muircheartaigh's
+# the active foam map (foam > 0.3, step06_foam_sky/sea_check), beside Monahan and O'Muircheartaigh's
 # and Callaghan et al.'s laws; and the picture's active whitecaps (stage A) beside Monahan and
 # Lu's share of them. About five minutes on llvmpipe.
 # A failure ends with one line "whitecap_figure: error: ...".
@@ -13,7 +13,7 @@ die() { printf 'whitecap_figure: error: %s\n' "$*" >&2; exit 1; }
 build=$(cd -- "$1" 2> /dev/null && pwd) || die "no build folder '$1'"
 out=$2
 root=$(cd "$(dirname "$0")/.." && pwd)
-for program in step06_foam_sky/step06_foam_sky step06_foam_sky/picture_check tests/physics_check; do
+for program in step06_foam_sky/step06_foam_sky step06_foam_sky/picture_check step06_foam_sky/sea_check; do
   [ -x "$build/$program" ] || die "$build/$program is not built"
 done
 command -v gnuplot > /dev/null || die "gnuplot not found (Debian: apt-get install gnuplot-nox)"
@@ -26,7 +26,7 @@ bash "$root/step06_foam_sky/tests/whitecaps.sh" "$build/step06_foam_sky/step06_f
 echo "# U10  picture %  foam map %  active (stage A) in the picture %" > "$work/whitecaps.dat"
 for wind in "${winds[@]}"; do
   picture=$(sed -n "s|.*150m_wind_$wind: U = *[0-9.]* m/s, whitecaps cover *\([0-9.]*\) %.*|\1|p" "$work/picture.txt")
-  map=$("$build/tests/physics_check" whitecaps "$work/150m_wind_$wind" | sed -n 's|.*whitecaps *\([0-9.]*\) % of the sea.*|\1|p' || true)
+  map=$("$build/step06_foam_sky/sea_check" whitecaps "$work/150m_wind_$wind" | sed -n 's|.*whitecaps *\([0-9.]*\) % of the sea.*|\1|p' || true)
   active=$(sed -n "s|.*150m_wind_$wind: U = *[0-9.]* m/s, whitecaps W .*active W_A *\([0-9.]*\) %.*|\1|p" "$work/picture.txt")
   echo "$wind ${picture:-nan} ${map:-nan} ${active:-nan}" >> "$work/whitecaps.dat"
 done

@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# far_sea.sh STEP_EXE PHYSICS_CHECK IMAGE_COMPARE OUT_DIR: the sea 1000 km out is the sea at the
+# far_sea.sh STEP_EXE SEA_CHECK IMAGE_COMPARE OUT_DIR: the sea 1000 km out is the sea at the
 # origin. A sailor crosses an ocean; float's steps there are 6 cm, and a tile's phase p / L computed
 # in float is off by as much, so the renderer works relative to a world origin near the camera
 # (step06_foam_sky/cascades.hpp) and the camera is kept in double.
-#   1. The same statistics (physics_check same_sea): the export 1000 km out (x = 1000123.4,
+#   1. The same statistics (sea_check same_sea): the export 1000 km out (x = 1000123.4,
 #      z = -987654.3) against four stretches within 2.5 km of the origin.
 #   2. No jitter: two frames 1/60 s apart differ only by the waves' motion, and a camera moved by
 #      1 cm moves the picture by 1 cm; out there as at the origin (picture RMSE within 1.5 times the
 #      origin's, plus half a level).
 set -u
-exe=$1 physics=$2 compare=$3 out=$4
+exe=$1 sea_check=$2 compare=$3 out=$4
 mkdir -p "$out"
 far=(--set camera_target_x=1000123.4 --set camera_target_z=-987654.3)
 run() { "$exe" --headless --frames 1 --size 320x180 "$@" > /dev/null || { echo "FAIL: the step did not run: $*"; exit 1; }; }
@@ -24,7 +24,7 @@ for place in "0 0" "700 -300" "-1500 900" "2300 1700"; do
 done
 rm -rf "$out/far"
 run --time 5 "${far[@]}" --export "$out/far"
-"$physics" same_sea "$out/far" "${near_dirs[@]}"
+"$sea_check" same_sea "$out/far" "${near_dirs[@]}"
 statistics=$?
 
 rmse() { "$compare" "$1" "$2" 2>&1 | sed -n 's/.*rmse \([0-9.]*\).*/\1/p' | head -1; }
