@@ -8,7 +8,7 @@
 #pragma once
 
 #include "common/params.hpp"
-#include "step06_foam_sky/local_waves.hpp"
+#include "step06_foam_sky/extra_waves.hpp"
 #include "step07_buoyancy/bodies.hpp"
 #include "step07_buoyancy/body_params.hpp"
 #include "step07_buoyancy/floating_body.hpp"
@@ -55,7 +55,7 @@ public:
     void sail(const SailFrame& frame);
 
     // The wake for the sea to draw after the last sail(), or none when the wake is off.
-    const step06::LocalWaves* drawn_wake() const { return drawing_ ? &local_waves_ : nullptr; }
+    const step06::ExtraWaves* drawn_wake() const { return drawing_ ? &local_waves_ : nullptr; }
     const std::vector<step07::FloatingBody>& bodies() const { return bodies_; }
     double wake_ms() const { return wake_ms_; }  // the last sail()'s, on the CPU
 
@@ -70,8 +70,8 @@ private:
     // The wake: its field, its maps last frame and now, and the textures step06's shaders read.
     std::unique_ptr<WakeScene> wake_;
     WaveFieldSettings wake_settings_;
-    step06::LocalWaveMaps wake_before_, wake_now_;
-    step06::LocalWaves local_waves_;
+    step06::ExtraWaveMaps wake_before_, wake_now_;
+    step06::ExtraWaves local_waves_;
     bool drawing_ = false;  // the last sail() showed the wake
     double wake_ms_ = 0;
 };
