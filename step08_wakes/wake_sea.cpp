@@ -14,7 +14,8 @@ step07::SurfaceAt SeaWithWake::at(glm::dvec2 rest) const {
 }
 
 glm::dvec3 SeaWithWake::displacement_below(glm::dvec2 rest, double depth) const {
-    return sea_.displacement_below(rest, depth) + glm::dvec3(step06::extra_waves_at(wake_, rest).displacement);
+    return sea_.displacement_below(rest, depth) +
+           glm::dvec3(step06::extra_waves_at(wake_, rest).displacement);
 }
 
 }  // namespace step08

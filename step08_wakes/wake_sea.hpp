@@ -1,8 +1,8 @@
 // Chapter 8.6: the sea the bodies float on, with the wake in it. step07's bodies ask a Surface for
 // the displacement of the point resting at x and its derivatives; here the answer is the sea's
 // (step07's MapSea) plus the wake's maps (wake_maps.hpp), read as step06's extra_waves.glsl reads
-// them (step06::extra_waves_at): bilinear between cell centres, nothing outside the grid. So a buoy rides the wake the
-// window shows.
+// them (step06::extra_waves_at): bilinear between cell centres, nothing outside the grid. So a buoy
+// rides the wake the window shows.
 #pragma once
 
 #include "step06_foam_sky/extra_waves.hpp"
