@@ -2,7 +2,34 @@
 
 #include "step06_foam_sky/texture_units.h"
 
+#include <glm/common.hpp>
+
+#include <cmath>
+#include <cstddef>
+
 namespace step06 {
+
+ExtraWaveSample extra_waves_at(const ExtraWaveMaps& maps, glm::dvec2 rest) {
+    ExtraWaveSample s;
+    if (maps.n < 2) return s;
+    const glm::dvec2 q = (rest - maps.first_cell) / maps.cell;
+    const double last = double(maps.n - 1);
+    if (q.x < 0 || q.y < 0 || q.x >= last || q.y >= last) return s;
+    const int i = int(std::floor(q.x)), j = int(std::floor(q.y));
+    const double fx = q.x - i, fz = q.y - j;
+    const auto texel = [&](const std::vector<float>& map, int di, int dj) {
+        const std::size_t c = 4 * (std::size_t(j + dj) * std::size_t(maps.n) + std::size_t(i + di));
+        return glm::dvec4(map[c], map[c + 1], map[c + 2], map[c + 3]);
+    };
+    const auto bilinear = [&](const std::vector<float>& map) {
+        const glm::dvec4 bottom = glm::mix(texel(map, 0, 0), texel(map, 1, 0), fx);
+        const glm::dvec4 top = glm::mix(texel(map, 0, 1), texel(map, 1, 1), fx);
+        return glm::mix(bottom, top, fz);
+    };
+    s.displacement = bilinear(maps.displacement);
+    s.slopes = bilinear(maps.slopes);
+    return s;
+}
 
 void ExtraWaves::upload(const ExtraWaveMaps& maps) {
     if (maps.n <= 0) {

@@ -10,6 +10,7 @@
 #include "common/shader.hpp"
 
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 
 #include <vector>
 
@@ -23,6 +24,16 @@ struct ExtraWaveMaps {
     glm::dvec2 first_cell{0.0};
     std::vector<float> displacement, slopes;  // n * n * 4 each
 };
+
+// The maps at rest position `rest` (world x, z) as extra_waves.glsl's extra_map_at reads them, in
+// double: bilinear between the four cell centres around it, zero outside the grid (and for a grid
+// of fewer than 2 x 2 cells). The CPU reference of that read, and the extra waves' part of the
+// surface for anything on the CPU that floats on it.
+struct ExtraWaveSample {
+    glm::dvec4 displacement{0.0};  // (l Dx, h, l Dz, l dDx/dz)
+    glm::dvec4 slopes{0.0};        // (dh/dx, dh/dz, l dDx/dx, l dDz/dz)
+};
+ExtraWaveSample extra_waves_at(const ExtraWaveMaps& maps, glm::dvec2 rest);
 
 // The same on the GPU: two RGBA32F textures read texel by texel (bilinear in the shader, as in
 // every profile float textures may be fetched but not always filtered).

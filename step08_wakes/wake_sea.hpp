@@ -1,21 +1,14 @@
 // Chapter 8.6: the sea the bodies float on, with the wake in it. step07's bodies ask a Surface for
 // the displacement of the point resting at x and its derivatives; here the answer is the sea's
 // (step07's MapSea) plus the wake's maps (wake_maps.hpp), read as step06's extra_waves.glsl reads
-// them: bilinear between cell centres, nothing outside the grid. So a buoy rides the wake the
-// window shows.
+// them (step06::extra_waves_at): bilinear between cell centres, nothing outside the grid. So a buoy
+// rides the wake the window shows.
 #pragma once
 
 #include "step06_foam_sky/extra_waves.hpp"
 #include "step07_buoyancy/sea_surface.hpp"
 
 namespace step08 {
-
-// The wake's maps at rest position `rest` (x, z), bilinear, as extra_waves.glsl's extra_map_at:
-// (l Dx, h, l Dz, l dDx/dz) and (dh/dx, dh/dz, l dDx/dx, l dDz/dz); zero outside the grid.
-struct WakeSample {
-    glm::dvec4 displacement{0.0}, slopes{0.0};
-};
-WakeSample wake_at(const step06::ExtraWaveMaps& wake, glm::dvec2 rest);
 
 class SeaWithWake : public step07::Surface {
 public:

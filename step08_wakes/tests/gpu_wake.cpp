@@ -1,5 +1,5 @@
 // The wake as step06's shaders read it (extra_waves.glsl, from the textures step06::ExtraWaves
-// uploads) against wake_sea.hpp's wake_at, the CPU reference in double, on a grid of points over
+// uploads) against step06's extra_waves_at, the CPU reference in double, on a grid of points over
 // the wake's grid and past its edges, from a world origin far from it (as the program's, which
 // sits near the camera).
 #include "step06_foam_sky/extra_waves.hpp"
@@ -34,7 +34,7 @@ TEST_F(Step08Gpu, TheShadersReadTheWakeAsTheCpuDoes) {
     step06::ExtraWaves waves;
     waves.upload(maps);
     ocean::ShaderProgram* program =
-        cache("extra_waves_at", {"common/shaders/fullscreen.vert", "step08_wakes/tests/extra_waves_at.frag"}, {});
+        cache("extra_waves_at", {"common/shaders/fullscreen.vert", "step06_foam_sky/tests/extra_waves_at.frag"}, {});
     ASSERT_NE(program, nullptr);
     const glm::dvec2 origin = glm::floor(scene.boat_position());  // the world origin near the boat
     waves.bind(*program, origin);
@@ -52,7 +52,7 @@ TEST_F(Step08Gpu, TheShadersReadTheWakeAsTheCpuDoes) {
         for (int j = 0; j < size; ++j)
             for (int i = 0; i < size; ++i) {
                 const glm::dvec2 p = first + glm::dvec2(i, j) * step;
-                const step08::WakeSample cpu = step08::wake_at(maps, p);
+                const step06::ExtraWaveSample cpu = step06::extra_waves_at(maps, p);
                 const glm::dvec4 want = which == 1 ? cpu.slopes : cpu.displacement;
                 const std::size_t texel = 4 * (std::size_t(j) * size + std::size_t(i));
                 for (int q = 0; q < 4; ++q) {

@@ -119,8 +119,8 @@ TEST(Step08WakeMaps, NothingOutsideTheGrid) {
     const step06::ExtraWaveMaps maps = step08::wake_maps(w.field, 1.0);
     const double side = w.field.side();
     for (glm::dvec2 outside : {glm::dvec2(-side, 0), glm::dvec2(0, side), glm::dvec2(2 * side, -2 * side)})
-        EXPECT_EQ(step08::wake_at(maps, outside).displacement, glm::dvec4(0.0));
-    const step08::WakeSample at = step08::wake_at(maps, w.field.cell_centre(10, 20));
+        EXPECT_EQ(step06::extra_waves_at(maps, outside).displacement, glm::dvec4(0.0));
+    const step06::ExtraWaveSample at = step06::extra_waves_at(maps, w.field.cell_centre(10, 20));
     EXPECT_DOUBLE_EQ(at.displacement.y, double(maps.displacement[4 * (20 * 64 + 10) + 1]));
 }
 
@@ -200,7 +200,7 @@ TEST(Step08WakeOnTheSea, ABuoyRidesTheWake) {
         before = now;
         lowest = std::min(lowest, buoy.position().y);
         highest = std::max(highest, buoy.position().y);
-        const double water = step08::wake_at(now, {buoy.position().x, buoy.position().z}).displacement.y;
+        const double water = step06::extra_waves_at(now, {buoy.position().x, buoy.position().z}).displacement.y;
         water_low = std::min(water_low, water);
         water_high = std::max(water_high, water);
     }

@@ -1,6 +1,6 @@
 #version 450 core
-// Evaluates step06's extra_waves.glsl (EXTRA_WAVES 1) on a grid of points around and beyond the
-// wake's grid, for the read-back test against wake_sea.hpp's wake_at (in double).
+// Evaluates extra_waves.glsl (EXTRA_WAVES 1) on a grid of points over the extra waves' grid and
+// past its edges, for the read-back tests against extra_waves.hpp's extra_waves_at (in double).
 #define EXTRA_WAVES 1
 #include "step06_foam_sky/shaders/extra_waves.glsl"
 
