@@ -111,7 +111,10 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
             o.screenshot = value;
         } else if (name == "--set" || name == "--carry") {
             if (!take_value("name=value")) return result;
-            if (value.find('=') == std::string::npos) return bad("name=value");
+            // An empty name is no parameter: --carry, which skips the names a step lacks, would
+            // otherwise take it without a word.
+            const std::size_t equals = value.find('=');
+            if (equals == std::string::npos || equals == 0) return bad("name=value");
             (name == "--set" ? o.sets : o.carries).push_back(value);
         } else if (const auto text = std::find_if(std::begin(texts), std::end(texts),
                                                   [&](const TextFlag& t) { return name == t.flag; });

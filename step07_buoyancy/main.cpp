@@ -15,6 +15,7 @@
 #include "step07_buoyancy/body_painter.hpp"
 #include "step07_buoyancy/body_params.hpp"
 #include "step07_buoyancy/floating_body.hpp"
+#include "step07_buoyancy/follow_camera.hpp"
 #include "step07_buoyancy/query_grid.hpp"
 #include "step07_buoyancy/sea_feed.hpp"
 #include "step07_buoyancy/sea_query.hpp"
@@ -45,6 +46,7 @@ public:
         scene_.declare(p);
         body_params_.declare(p);  // a change drops the bodies again
         steering_.declare(p);       // read each frame: drops nothing
+        follow_.declare(p);
         queries_.declare(p);
         use_camera(ocean::camera_view("low"), ocean::kOceanReach);
         offer_export([this](const std::string& dir) { export_all(dir); });
@@ -74,7 +76,10 @@ private:
             drop_bodies();
         }
         steer_boat();
+        const bool has_boat = bodies_.size() > step07::kBoat;
+        const glm::dvec3 boat_before = has_boat ? bodies_[step07::kBoat].position() : glm::dvec3(0.0);
         step07::advance_bodies(bodies_, feed_.before(), feed_.now(), dt, feed_.interval());
+        if (has_boat) follow_.follow(camera(), boat_before, bodies_[step07::kBoat].position());
         queries_.update(feed_.now(), scene_.sea(), camera().eye_world(), camera().forward(), time);
         for (std::size_t b = 0; b < bodies_.size(); ++b)
             trajectory_.push_back({time, int(b), bodies_[b].position(), bodies_[b].orientation()});
@@ -193,6 +198,9 @@ private:
     unsigned bodies_made_for_ = 0;
     step07::BodyParams body_params_;
     step07::Steering steering_;
+    // The camera kept on the boat, when asked: off at the start, so that the view a learner opens
+    // (and the golden picture) stays where the camera was put while the bodies settle.
+    step07::FollowCamera follow_{false};
     step07::Arrows arrows_;  // held this frame
     double bodies_ms_ = 0;
     step07::QueryGrid queries_;

@@ -39,7 +39,7 @@ WakeProgram::WakeProgram(ocean::StepInfo info, std::unique_ptr<BodiesAndField> b
         p.add_choice("cells", &cells_choice_, {"64", "128", "256"}, "the wave field's cells a side");
         p.add_float("cell", &cell_, 0.1f, 2, "the wave field's cell, metres");
         p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat has sailed before the first frame");
-        p.add_bool("follow_boat", &follow_boat_, "the camera keeps the boat where it is in the view");
+        follow_.declare(p);
         p.add_bool("show_wake", &show_wake_, "the wake added to the sea (off: step07's sea, which no body disturbs)");
         boat_and_wake_.declare(p);
     }
@@ -93,7 +93,7 @@ void WakeProgram::sail(double dt) {
     boat_and_wake_.sail({feed_, time(), dt, scene_.sea().choppiness(), steering_, arrows_, stones_, show_wake_});
     stones_.clear();
     const glm::dvec3 boat = boat_and_wake_.bodies()[step07::kBoat].position();
-    if (follow_boat_) camera().target += glm::dvec3(boat.x - boat_before.x, 0, boat.z - boat_before.z);
+    follow_.follow(camera(), boat_before, boat);
     scene_.sea().add_extra_waves(boat_and_wake_.drawn_wake());
 }
 
@@ -105,7 +105,7 @@ void WakeProgram::drop_bodies_and_warm_up() {
     const glm::dvec2 heading =
         boat_and_wake_.launch(step07::drop_bodies(body_params_, camera()), double(steering_.throttle),
                               field_settings(), double(warm_up_), feed_, scene_.sea().choppiness());
-    if (follow_boat_) look_from_behind(boat_and_wake_.bodies()[step07::kBoat].position(), heading);
+    if (follow_.on()) look_from_behind(boat_and_wake_.bodies()[step07::kBoat].position(), heading);
 }
 
 // The camera on the boat, from behind it and a little to port, high enough to see the wake's V

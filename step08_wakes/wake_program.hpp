@@ -12,6 +12,7 @@
 #include "step07_buoyancy/bodies.hpp"
 #include "step07_buoyancy/body_painter.hpp"
 #include "step07_buoyancy/body_params.hpp"
+#include "step07_buoyancy/follow_camera.hpp"
 #include "step07_buoyancy/sea_feed.hpp"
 #include "step08_wakes/boat_and_wake.hpp"
 #include "step08_wakes/bodies_and_field.hpp"
@@ -58,7 +59,8 @@ private:
     step07::Steering steering_;
     unsigned bodies_made_for_ = 0;
     PlanView plan_view_;
-    bool plan_ = false, follow_boat_ = true, show_wake_ = true;
+    step07::FollowCamera follow_{true};  // the camera kept on the boat, under way from the start
+    bool plan_ = false, show_wake_ = true;
     float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;
     int cells_choice_ = 1;
     step07::Arrows arrows_;           // held this frame

@@ -65,6 +65,8 @@ TEST(CommandLine, BadInputGetsOneLineNamingTheFlag) {
         {{"--dt", "inf"}, "--dt expects a time step"},
         {{"--screenshot", "a.jpg"}, "--screenshot expects a path ending in .png"},
         {{"--set", "amplitude"}, "--set expects name=value"},
+        {{"--carry", "=5"}, "--carry expects name=value, got '=5'"},
+        {{"--set", "=5"}, "--set expects name=value"},
         {{"--headless=yes"}, "--headless takes no value"},
         {{"--preset", ""}, "--preset expects a preset file"},
     };
