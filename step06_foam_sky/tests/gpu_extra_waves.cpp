@@ -5,7 +5,7 @@
 // grid's edges. And the sea compiles the sum in only when it is given some.
 #include "step06_foam_sky/extra_waves.hpp"
 #include "step06_foam_sky/sea.hpp"
-#include "tests/gpu/full_screen_draw.hpp"
+#include "step06_foam_sky/tests/extra_waves_read.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
@@ -72,22 +72,16 @@ TEST_F(Step06ExtraWaves, ThePlaneWaveIsReadAsItsClosedFormByTheCpuAndTheShaders)
     const int n = 64;
     const double cell = 0.5;
     const step06::ExtraWaveMaps maps = maps_of(wave, n, cell, {10000.25, 5000.75});  // far out
-    step06::ExtraWaves waves;
-    waves.upload(maps);
-    ocean::ShaderProgram* program = cache(
-        "extra_waves_at", {"common/shaders/fullscreen.vert", "step06_foam_sky/tests/extra_waves_at.frag"}, {});
-    ASSERT_NE(program, nullptr);
     // The world origin near the grid, as a program's sits near its camera.
     const glm::dvec2 origin = glm::floor(maps.first_cell + 0.5 * cell * (n - 1));
-    waves.bind(*program, origin);
     // 160 x 160 points 0.23 m apart (not a divisor of the cell), from 2.9 m before the first cell's
     // centre to 2.2 m past the last: no point within 0.2 cells of an edge, where a float position
     // and a double one might fall on either side of it.
     const int size = 160;
     const double step = 0.23;
     const glm::dvec2 first = maps.first_cell - glm::dvec2(2.9);
-    program->set("u_first", glm::vec2(first - origin));
-    program->set("u_step", float(step));
+    const auto gpu = step06_test::read_by_the_shaders(cache, maps, origin, first, step, size);
+    ASSERT_TRUE(gpu);
 
     // Bilinear interpolation of f misses it by at most cell^2/8 (|f_xx| + |f_zz|): for each term
     // A cos or A sin of k.x, A (|k| cell)^2 / 8; the maps' floats add 1e-7 A.
@@ -96,15 +90,9 @@ TEST_F(Step06ExtraWaves, ThePlaneWaveIsReadAsItsClosedFormByTheCpuAndTheShaders)
     double worst_closed = 0;  // of |CPU - closed form| / bound
     double worst_gpu = 0, largest = 0;
     int inside = 0, outside = 0, outside_not_zero = 0;
-    std::vector<float> gpu[2];
-    for (int which = 0; which < 2; ++which) {
-        program->set("u_slopes", which);
-        gpu[which] =
-            ocean_test::draw_full_screen<float>(*program, size, size, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4);
-    }
     for (int j = 0; j < size; ++j)
         for (int i = 0; i < size; ++i) {
-            const glm::dvec2 p = first + glm::dvec2(i, j) * step;
+            const glm::dvec2 p = gpu->point(i, j);
             // Inside the grid or not, decided here, not by the code under test.
             const glm::dvec2 q = (p - maps.first_cell) / cell;
             const bool in_grid = q.x >= 0 && q.y >= 0 && q.x < n - 1 && q.y < n - 1;
@@ -114,9 +102,9 @@ TEST_F(Step06ExtraWaves, ThePlaneWaveIsReadAsItsClosedFormByTheCpuAndTheShaders)
                 const glm::dvec4 want = which == 1 ? cpu.slopes : cpu.displacement;
                 const glm::dvec4 form = which == 1 ? closed.slopes : closed.displacement;
                 const glm::dvec4 amp = which == 1 ? amplitude.slopes : amplitude.displacement;
-                const std::size_t texel = 4 * (std::size_t(j) * size + std::size_t(i));
+                const glm::dvec4 shader = gpu->at(i, j, which == 1);
                 for (int c = 0; c < 4; ++c) {
-                    const double read = gpu[which][texel + std::size_t(c)];
+                    const double read = shader[c];
                     worst_gpu = std::max(worst_gpu, std::abs(read - want[c]));
                     largest = std::max(largest, std::abs(want[c]));
                     if (in_grid)

@@ -3,10 +3,10 @@
 // the wake's grid and past its edges, from a world origin far from it (as the program's, which
 // sits near the camera).
 #include "step06_foam_sky/extra_waves.hpp"
+#include "step06_foam_sky/tests/extra_waves_read.hpp"
 #include "step08_wakes/wake_maps.hpp"
 #include "step08_wakes/wake_scene.hpp"
 #include "step08_wakes/wake_sea.hpp"
-#include "tests/gpu/full_screen_draw.hpp"
 #include "tests/gpu/gl_test_context.hpp"
 #include "tests/gpu/program_cache.hpp"
 
@@ -31,37 +31,24 @@ TEST_F(Step08Gpu, TheShadersReadTheWakeAsTheCpuDoes) {
     scene.place({10000.25, -20000.5}, {1, 0.3});  // far out: the positions go to the GPU from an origin near it
     scene.sail(8, boat, 0.3);
     const step06::ExtraWaveMaps maps = step08::wake_maps(scene.field(), 1.3);
-    step06::ExtraWaves waves;
-    waves.upload(maps);
-    ocean::ShaderProgram* program =
-        cache("extra_waves_at", {"common/shaders/fullscreen.vert", "step06_foam_sky/tests/extra_waves_at.frag"}, {});
-    ASSERT_NE(program, nullptr);
     const glm::dvec2 origin = glm::floor(scene.boat_position());  // the world origin near the boat
-    waves.bind(*program, origin);
     // 160 x 160 points 0.23 m apart (not a divisor of the cell): over the 32 m grid and 2.8 m past it.
-    const int size = 160;
-    const double step = 0.23;
-    const glm::dvec2 first = maps.first_cell - glm::dvec2(3.0);
-    program->set("u_first", glm::vec2(first - origin));
-    program->set("u_step", float(step));
+    const auto gpu = step06_test::read_by_the_shaders(cache, maps, origin, maps.first_cell - glm::dvec2(3.0), 0.23, 160);
+    ASSERT_TRUE(gpu);
     double worst = 0, largest = 0;
     int outside = 0;
-    for (int which = 0; which < 2; ++which) {
-        program->set("u_slopes", which);
-        const std::vector<float> gpu = ocean_test::draw_full_screen<float>(*program, size, size, GL_RGBA32F, GL_RGBA, GL_FLOAT, 4);
-        for (int j = 0; j < size; ++j)
-            for (int i = 0; i < size; ++i) {
-                const glm::dvec2 p = first + glm::dvec2(i, j) * step;
-                const step06::ExtraWaveSample cpu = step06::extra_waves_at(maps, p);
+    for (int which = 0; which < 2; ++which)
+        for (int j = 0; j < gpu->size; ++j)
+            for (int i = 0; i < gpu->size; ++i) {
+                const step06::ExtraWaveSample cpu = step06::extra_waves_at(maps, gpu->point(i, j));
                 const glm::dvec4 want = which == 1 ? cpu.slopes : cpu.displacement;
-                const std::size_t texel = 4 * (std::size_t(j) * size + std::size_t(i));
+                const glm::dvec4 shader = gpu->at(i, j, which == 1);
                 for (int q = 0; q < 4; ++q) {
-                    worst = std::max(worst, std::abs(double(gpu[texel + std::size_t(q)]) - want[q]));
+                    worst = std::max(worst, std::abs(shader[q] - want[q]));
                     largest = std::max(largest, std::abs(want[q]));
                 }
                 outside += which == 0 && want == glm::dvec4(0.0);
             }
-    }
     std::printf("wake as the shaders read it: worst |GPU - CPU| %.2g (values up to %.2f); points outside the grid: %d\n", worst, largest,
                 outside);
     EXPECT_GT(largest, 0.05);
