@@ -103,31 +103,50 @@ inline double foam_streak_share(double wind_speed) {
     return std::clamp((wind_speed - kStreaksFrom) / (kDenseStreaksFrom - kStreaksFrom), 0.0, 1.0);
 }
 
-// A streak is a filament: narrow across the wind, meandering, broken along it. The renderer reads
-// the pattern texture three times in a frame that follows the wind:
+// A streak is a filament: narrow across the wind, long, wandering, merging with its neighbours
+// and splitting again, brightest just downwind of where a crest broke and fading along its length
+// (as photographs of a gale show them). The renderer reads the foam amounts three times and the
+// pattern texture three more, in a frame that follows the wind:
+//   - what the line gathers: the wind's cells sweep the foam of the water between the lines into
+//     them, and the surface drift carries it down the line; so a line holds the foam as a whole
+//     over metres around it (the amounts read over a footprint kStreakNear wide) and upwind of it,
+//     kStreakNear and kStreakFar metres (over footprints that wide), each faded by
+//     exp(-distance / kStreakFade) (streak_gathered): a line is brightest where crests broke and
+//     fades downwind of them;
 //   - the line: the bubble cells stretched kStreakLength times along the wind and kStreakSpacing
-//     times across (cells 1.8 m wide and 36 m long: their borders are lines a few tens of cm wide);
+//     times across (cells 54 m long and 3.6 m wide: their borders are lines tens of centimetres
+//     wide, which meet and part where three cells meet);
 //   - its meander: the point moved across the wind by up to kStreakMeander metres by the smooth
 //     noise read over tiles kMeanderLength metres along the wind and kMeanderWidth across, so each
 //     line wanders, and its neighbours a few metres away wander otherwise;
 //   - its breaks: the smooth noise read over tiles kBreakLength by kBreakWidth metres: where it is
-//     low the line stops, so lines have ends, segments of a few to a few tens of metres.
-constexpr double kStreakLength = 40, kStreakSpacing = 2;  // the pattern's stretch along and across the wind
-constexpr double kStreakMeander = 0.6, kMeanderLength = 160, kMeanderWidth = 24;  // metres
-constexpr double kBreakLength = 100, kBreakWidth = 8;  // metres per tile (4 noise cells: 25 m by 2 m)
-constexpr double kStreakLineFrom = 0.35, kStreakLineTo = 0.75;  // the pattern's values that make a line
-constexpr double kBreakFrom = 0.45, kBreakTo = 0.6;             // the noise's values where a line resumes
-// How much of a texel a streak covers: the residual amount (at most 1) where the line is (a linear
-// ramp of the line's pattern, so it can be averaged over a footprint as net_cover is) and the line
-// is not broken (smoothstep of the noise, which is smooth already).
-inline double filtered_streak_cover(double residual, double line_mean, double line_variance, double unbroken) {
+//     low the line stops, so lines have ends, segments of tens of metres.
+// The foam's thickness on the line (streak_thickness) is laid on the bubble cells as the lace is
+// (streak_cover), so a streak is flat foam with holes and ragged edges, not a solid bar.
+constexpr double kStreakLength = 60, kStreakSpacing = 4;  // the pattern's stretch along and across the wind
+constexpr double kStreakMeander = 2.5, kMeanderLength = 120, kMeanderWidth = 32;  // metres
+constexpr double kBreakLength = 200, kBreakWidth = 16;  // metres per tile (4 noise cells: 50 m by 4 m)
+constexpr double kStreakLineFrom = 0.5, kStreakLineTo = 0.8;   // the pattern's values that make a line
+constexpr double kBreakFrom = 0.3, kBreakTo = 0.45;            // the noise's values where a line resumes
+constexpr double kStreakNear = 6, kStreakFar = 18, kStreakFade = 15;  // metres upwind, metres of fading
+constexpr double kStreakMost = 0.8, kStreakHoles = 0.75;  // the line's greatest thickness, its lace's holes
+// What a line gathers: the most of the foam (0 to 1) about it and near and far upwind, faded.
+inline double streak_gathered(double here, double near, double far) {
+    return std::max(here, std::max(near * std::exp(-kStreakNear / kStreakFade), far * std::exp(-kStreakFar / kStreakFade)));
+}
+// How thick the foam on a streak is: three times what the line gathered (at most kStreakMost)
+// where the line is (a linear ramp of the line's pattern, so it can be averaged over a footprint
+// as net_cover is) and the line is not broken (smoothstep of the noise, which is smooth already).
+inline double filtered_streak_thickness(double gathered, double line_mean, double line_variance, double unbroken) {
     const double width = kStreakLineTo - kStreakLineFrom;
     const double t = std::clamp((unbroken - kBreakFrom) / (kBreakTo - kBreakFrom), 0.0, 1.0);
-    return std::clamp(residual, 0.0, 1.0) * mean_clamp(-kStreakLineFrom / width, 1.0 / width, line_mean, line_variance) *
-           t * t * (3 - 2 * t);
+    return std::clamp(3.0 * gathered, 0.0, kStreakMost) *
+           mean_clamp(-kStreakLineFrom / width, 1.0 / width, line_mean, line_variance) * t * t * (3 - 2 * t);
 }
-inline double streak_cover(double residual, double line, double unbroken) {
-    return filtered_streak_cover(residual, line, 0.0, unbroken);
+inline double streak_thickness(double gathered, double line, double unbroken) {
+    return filtered_streak_thickness(gathered, line, 0.0, unbroken);
 }
+// How much of a texel a streak covers: its thickness on the bubble cells, as the lace's.
+inline double streak_cover(double thickness, double pattern) { return net_cover(thickness, pattern, kStreakHoles); }
 
 }  // namespace step06

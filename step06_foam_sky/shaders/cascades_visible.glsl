@@ -240,15 +240,20 @@ vec2 pattern_statistics(vec4 texel) { return vec2(texel.r, max(texel.b - texel.r
 // Two patterns mixed with weights w and 1 - w (independent: the variances add, squared weights).
 vec2 mix_statistics(vec2 a, vec2 b, float w) { return vec2(w * a.x + (1.0 - w) * b.x, w * w * a.y + (1.0 - w) * (1.0 - w) * b.y); }
 
-// foam_pattern.hpp's streak_cover: the residual foam where the line is and is not broken; and
-// filtered, the line's ramp averaged over the footprint as the lace's is.
-const float STREAK_LINE_FROM = 0.35, STREAK_LINE_TO = 0.75, BREAK_FROM = 0.45, BREAK_TO = 0.6;
-float filtered_streak_cover(float residual, vec2 line, float unbroken) {  // line: (mean, variance)
+// foam_pattern.hpp's streaks: what a line gathers from upwind (streak_gathered), the foam's
+// thickness across the line where it is not broken (streak_thickness; filtered, the line's ramp
+// averaged over the footprint as the lace's is), laid on the bubble cells as lace is.
+const float STREAK_LINE_FROM = 0.5, STREAK_LINE_TO = 0.8, BREAK_FROM = 0.3, BREAK_TO = 0.45;
+const float STREAK_NEAR = 6.0, STREAK_FAR = 18.0, STREAK_FADE = 15.0, STREAK_MOST = 0.8, STREAK_HOLES = 0.75;
+float streak_gathered(float here, float near, float far) {
+    return max(here, max(near * exp(-STREAK_NEAR / STREAK_FADE), far * exp(-STREAK_FAR / STREAK_FADE)));
+}
+float filtered_streak_thickness(float gathered, vec2 line, float unbroken) {  // line: (mean, variance)
     float width = STREAK_LINE_TO - STREAK_LINE_FROM;
-    return clamp(residual, 0.0, 1.0) * mean_clamp(-STREAK_LINE_FROM / width, 1.0 / width, line.x, line.y) *
+    return clamp(3.0 * gathered, 0.0, STREAK_MOST) * mean_clamp(-STREAK_LINE_FROM / width, 1.0 / width, line.x, line.y) *
            smoothstep(BREAK_FROM, BREAK_TO, unbroken);
 }
-float streak_cover(float residual, float line, float unbroken) { return filtered_streak_cover(residual, vec2(line, 0.0), unbroken); }
+float streak_thickness(float gathered, float line, float unbroken) { return filtered_streak_thickness(gathered, vec2(line, 0.0), unbroken); }
 
 // How much of the pixel each stage of foam covers, and the active foam's brightness there: a
 // breaking crest is churned, bubbles and troughs of foam, not a flat sheet.
@@ -262,6 +267,18 @@ struct FoamCover {
 FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     float long_side = max(length(f.dx), length(f.dy));
     vec2 amounts = foam_at(p, long_side);    // (active foam, foam as a whole)
+#if STREAKS
+    // What a line gathers: the wind's cells sweep the foam of the water between the lines into
+    // them, so a line holds the foam of metres around it (the amounts read over a footprint
+    // STREAK_NEAR wide), and of the water upwind, which the surface drift carries down the line,
+    // fading with the distance it travelled: here, STREAK_NEAR and STREAK_FAR upwind.
+    vec2 downwind = normalize(u_streak_along);
+    float gathered = streak_gathered(foam_at(p, max(long_side, STREAK_NEAR)).y,
+                                     foam_at(p - STREAK_NEAR * downwind, max(long_side, STREAK_NEAR)).y,
+                                     foam_at(p - STREAK_FAR * downwind, max(long_side, STREAK_FAR)).y);
+#else
+    float gathered = 0.0;
+#endif
     amounts.y = max(amounts.y - amounts.x, 0.0);  // the residual: what the active part is not
     // Most of the sea holds no foam that shows: an active amount below 0.002 covers under 0.005 of
     // any texel, and a residual below 0.02 (its thin lace: at most 0.027 thick) under 0.002 of a
@@ -270,7 +287,7 @@ FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     // slowly (10 s), so much of the sea holds a trace of it: without its own threshold the
     // pattern's fetches ran over most of the sea. The fetches take the footprint's own
     // derivatives (textureGrad), so a pixel with foam needs no neighbour to take the branch with it.
-    if (amounts.x < 0.002 && amounts.y < 0.02) return FoamCover(0.0, 0.0, 1.0);
+    if (amounts.x < 0.002 && amounts.y < 0.02 && gathered < 0.02) return FoamCover(0.0, 0.0, 1.0);
     vec2 uv = p / u_foam_pattern_size, uv_dx = f.dx / u_foam_pattern_size, uv_dy = f.dy / u_foam_pattern_size;
     // Foam on a sea that has stretched and sheared it: the cells are read through a warp of up to
     // half a metre, the two smooth noises (g, a) over 30 m tiles, so no honeycomb shows. Then the
@@ -297,9 +314,11 @@ FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     vec2 across = normalize(u_streak_across);  // the meander moves the point across the wind
     vec2 q = p + across * (u_streak_meander * (2.0 * wander - 1.0));
     vec2 line = pattern_statistics(textureGrad(u_foam_pattern, to_lines * q, to_lines * f.dx, to_lines * f.dy));
-    // Three times the residual amount: a streak is foam gathered into a line, denser than the lace,
-    // which loses what the wind gathered (foam_pattern.hpp).
-    residual = max(residual * (1.0 - 0.8 * u_streak_share), u_streak_share * filtered_streak_cover(3.0 * amounts.y, line, unbroken));
+    // A streak is foam gathered into a line: three times what it gathered, thickest on the line,
+    // laid on the same bubble cells as the lace (flat foam with holes and ragged edges, not a
+    // solid bar); the lace loses what the wind gathered (foam_pattern.hpp).
+    float streak = filtered_net_cover(filtered_streak_thickness(gathered, line, unbroken), mix_statistics(coarse, fine, 0.55), STREAK_HOLES);
+    residual = max(residual * (1.0 - 0.8 * u_streak_share), u_streak_share * streak);
 #endif
     return FoamCover(active_cover, residual, 0.8 + 0.2 * fine.x);
 }

@@ -485,8 +485,9 @@ TEST_F(Step06Gpu, BothClocksFollowTheCpuOnAMovingSea) {
 
 // The renderer's cover functions (GLSL, through foam_cover.frag) against foam_pattern.hpp's, texel
 // by texel of the uploaded pattern texture (8 bits: the CPU is given the same quantised cells r and
-// noise g): net_cover with the active and the residual holes, residual_cover and streak_cover, at
-// a few amounts (streaks up to 2: twice the residual, clamped).
+// noise g): net_cover with the active and the residual holes, residual_cover, streak_thickness
+// (gathered foam up to 0.5: three times it, clamped) and streak_gathered (the cells and the noise
+// as the foam near and far upwind), at a few amounts.
 TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     step06::FoamSimulation foam(factory());
     ocean::ShaderProgram* program = foam_cover_program();
@@ -496,14 +497,15 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     const std::vector<std::uint8_t> cells = step06::to_r8(step06::foam_pattern(settings)),
                                     noise = step06::to_r8(step06::foam_noise(settings));
     struct Case {
-        int function;  // foam_cover.frag's u_function: 0 net_cover, 1 residual_cover, 2 streak_cover
+        int function;  // foam_cover.frag's u_function: 0 net_cover, 1 residual_cover, 2 streak_thickness, 5 streak_gathered
         float holes, amount;
     };
     const float active = float(step06::kActiveHoles), residual = float(step06::kResidualHoles);
     const Case cases[] = {{0, active, 1.0f},   {0, active, 0.6f},   {0, active, 0.3f},   {0, residual, 0.9f},
                           {0, residual, 0.5f}, {0, residual, 0.3f}, {1, 0, 1.0f},        {1, 0, 0.5f},
-                          {1, 0, 0.2f},        {2, 0, 1.6f},        {2, 0, 0.8f},        {2, 0, 0.3f}};
-    const char* names[] = {"net_cover", "residual_cover", "streak_cover"};
+                          {1, 0, 0.2f},        {2, 0, 0.5f},        {2, 0, 0.2f},        {2, 0, 0.08f},
+                          {5, 0, 0.7f},        {5, 0, 0.3f},        {5, 0, 0.0f}};
+    const char* names[] = {"net_cover", "residual_cover", "streak_thickness", "", "", "streak_gathered"};
     double worst_overall = 0;
     for (const Case& c : cases) {
         foam.bind_pattern(*program, 0);
@@ -516,7 +518,8 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
             const double r = cells[i] / 255.0, g = noise[i] / 255.0;
             const double cpu = c.function == 0   ? step06::net_cover(c.amount, r, c.holes)
                                : c.function == 1 ? step06::residual_cover(c.amount, r, g)
-                                                 : step06::streak_cover(c.amount, r, g);
+                               : c.function == 2 ? step06::streak_thickness(c.amount, r, g)
+                                                 : step06::streak_gathered(c.amount, r, g);
             worst = std::max(worst, std::abs(gpu[i] - cpu));
             covered += gpu[i];
         }
@@ -529,7 +532,7 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
 }
 
 // The filtered cover functions in the renderer (foam_cover.frag's 3 and 4: filtered_net_cover, and
-// filtered_streak_cover with the breaks' factor 1) on mip levels 0, 2 and 4 of the pattern texture,
+// filtered_streak_thickness with the breaks' factor 1) on mip levels 0, 2 and 4 of the pattern texture,
 // a pixel a texel of the level, through pattern_statistics. The CPU is given each texel's r and b
 // two ways, with the same 2/255 off the variance:
 //   - the level's own bytes, read back: only float arithmetic differs (limit 1e-4);
@@ -557,7 +560,7 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
         return std::pair{mean, std::max(b / 255.0 - mean * mean - 2.0 / 255.0, 0.0)};
     };
     struct Case {
-        int function;  // 3 filtered_net_cover, 4 filtered_streak_cover
+        int function;  // 3 filtered_net_cover, 4 filtered_streak_thickness
         float holes, amount;
     };
     const float active = float(step06::kActiveHoles), residual = float(step06::kResidualHoles);
@@ -603,7 +606,7 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
             const auto cpu = [&](double r, double b) {
                 const auto [mean, variance] = statistics(r, b);
                 return c.function == 3 ? step06::filtered_net_cover(c.amount, mean, variance, c.holes)
-                                       : step06::filtered_streak_cover(c.amount, mean, variance, 1.0);
+                                       : step06::filtered_streak_thickness(c.amount, mean, variance, 1.0);
             };
             double own_error = 0, box_error = 0, nearest_error = 0, covered = 0, box_covered = 0;
             for (std::size_t i = 0; i < gpu.size(); ++i) {
@@ -618,7 +621,7 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
             const double mean_error = (covered - box_covered) / double(gpu.size());
             std::printf("level %d, %-21s holes %.2f, amount %.2f: mean cover %.3f; worst |GPU - CPU| on the level's "
                         "bytes %.1e, on the box means %.3f (%.3f if rounded to the nearest byte), mean %+.4f\n",
-                        level, c.function == 3 ? "filtered_net_cover" : "filtered_streak_cover", double(c.holes),
+                        level, c.function == 3 ? "filtered_net_cover" : "filtered_streak_thickness", double(c.holes),
                         double(c.amount), covered / double(gpu.size()), own_error, box_error, nearest_error,
                         mean_error);
             EXPECT_LT(own_error, 1e-4) << "level " << level << ", function " << c.function << ", amount " << c.amount;

@@ -88,6 +88,7 @@
 //       across the view make it small (sea.md, "Filtering at grazing angles"). Only prints it, for
 //       measuring by hand (docs/performance.md): no test holds it to a value.
 // Prints the figures; exit 0 when they hold, 1 otherwise (and 2 on bad input).
+#include "step06_foam_sky/tests/streak_lines.hpp"
 #include "tests/picture_camera.hpp"
 
 #include <glm/glm.hpp>
@@ -532,9 +533,20 @@ int streaks(const std::vector<std::string>& args) {
         std::printf("  the faint foam's correlation length along the wind %.2f m, across it %.2f m (%.1f times; the view "
                     "%.0f m wide on the sea)%s\n",
                     along, across, along / across, width,
-                    storm ? ": broken streaks, along < a third of the view and >= 3 times across; narrow, across < 1.5 m" : "");
-        const bool lengths = !storm || (along < width / 3 && along >= 3 * across && across < 1.5);
-        return (wind >= 17.2 ? ratio >= 2 : wind < 13.9 ? ratio <= 1.3 : true) && lengths;
+                    storm ? ": along >= 3 times across; narrow, across < 1.5 m" : "");
+        const step06_test::StreakFigures lines =
+            step06_test::measure_streaks(pinhole(e, cover.width, cover.height), cover.width, cover.height, cover.cover,
+                                         along_wind(e), across_wind(e), width / (2 * std::sqrt(2.0)));
+        std::printf("  %d lines (%.0f m of line on 1000 m^2), %.1f degrees from the wind; median length %.1f m, width "
+                    "%.2f m, spacing %.1f m\n",
+                    lines.lines, lines.metres_per_area, lines.angle_deg, lines.length_m, lines.width_m, lines.spacing_m);
+        if (storm)
+            std::printf("  as observers report them: >= 20 lines, within 20 degrees of the wind, a few metres apart (spacing "
+                        ">= 3 m), narrow (width <= 1 m and <= a quarter of the spacing), long (>= 8 m)\n");
+        const bool lengths = !storm || (along >= 3 * across && across < 1.5);
+        const bool as_observed = !storm || (lines.lines >= 20 && lines.angle_deg <= 20 && lines.spacing_m >= 3 &&
+                                            lines.width_m <= 1 && lines.width_m <= lines.spacing_m / 4 && lines.length_m >= 8);
+        return (wind >= 17.2 ? ratio >= 2 : wind < 13.9 ? ratio <= 1.3 : true) && lengths && as_observed;
     });
 }
 

@@ -424,8 +424,9 @@ TEST(Step06FoamPattern, TilesSeamlesslyAndIsMostlyHoles) {
 // covered longest; and, being linear in the amount, its mean over the generated pattern follows
 // the amount (rising with it, within 0.1 from 0.4 to 0.8 for the active foam's holes), so a
 // patch's edge is as soft as the filtered amount. residual_cover: thin lace, at most net_cover(kResidualMost), so
-// some texels stay open even at amount 1, and none covered at 0. streak_cover: nothing where the
-// line or the break noise is low, the residual (at most 1) where both are high.
+// some texels stay open even at amount 1, and none covered at 0. streak_thickness: nothing where
+// the line or the break noise is low, three times what the line gathered (at most kStreakMost)
+// where both are high; streak_gathered: the most of the foam about the line and upwind, faded.
 TEST(Step06FoamPattern, CoverFollowsTheAmountAndTheLaceNeverCloses) {
     for (const double holes : {step06::kActiveHoles, step06::kResidualHoles})
         for (double pattern = 0; pattern <= 1.0; pattern += 0.125) {
@@ -475,15 +476,27 @@ TEST(Step06FoamPattern, CoverFollowsTheAmountAndTheLaceNeverCloses) {
         }
     }
 
-    using step06::streak_cover;
-    for (const double residual : {0.3, 0.8, 1.6}) {
-        EXPECT_NEAR(streak_cover(residual, step06::kStreakLineFrom, 1.0), 0.0, 1e-12) << "between the lines";
-        EXPECT_EQ(streak_cover(residual, 0.1, 1.0), 0.0);
-        EXPECT_NEAR(streak_cover(residual, 1.0, step06::kBreakFrom), 0.0, 1e-12) << "where the line is broken";
-        EXPECT_EQ(streak_cover(residual, 1.0, 0.1), 0.0);
-        EXPECT_DOUBLE_EQ(streak_cover(residual, step06::kStreakLineTo, step06::kBreakTo), std::min(residual, 1.0));
-        EXPECT_DOUBLE_EQ(streak_cover(residual, 1.0, 1.0), std::min(residual, 1.0));
+    // A streak: no foam between the lines or where a line is broken; three times what it gathered,
+    // at most kStreakMost, on the line. Laid on the cells, the thickest line still shows its
+    // bubbles (its cover is under 1 where the cells' middles are), and none at thickness 0.
+    using step06::streak_thickness;
+    for (const double gathered : {0.1, 0.2, 0.5}) {
+        const double on_line = std::min(3 * gathered, step06::kStreakMost);
+        EXPECT_NEAR(streak_thickness(gathered, step06::kStreakLineFrom, 1.0), 0.0, 1e-12) << "between the lines";
+        EXPECT_EQ(streak_thickness(gathered, 0.1, 1.0), 0.0);
+        EXPECT_NEAR(streak_thickness(gathered, 1.0, step06::kBreakFrom), 0.0, 1e-12) << "where the line is broken";
+        EXPECT_EQ(streak_thickness(gathered, 1.0, 0.1), 0.0);
+        EXPECT_DOUBLE_EQ(streak_thickness(gathered, step06::kStreakLineTo, step06::kBreakTo), on_line);
+        EXPECT_DOUBLE_EQ(streak_thickness(gathered, 1.0, 1.0), on_line);
     }
+    EXPECT_LT(step06::streak_cover(step06::kStreakMost, 0.0), 1.0) << "the bubbles show on the thickest line";
+    EXPECT_EQ(step06::streak_cover(0.0, 1.0), 0.0);
+    // What a line gathers: the foam about it, or what the drift brought from upwind, less the
+    // farther it came: exp(-6 / 15) of the foam 6 m upwind, exp(-18 / 15) of the foam 18 m upwind.
+    EXPECT_DOUBLE_EQ(step06::streak_gathered(0.4, 0.0, 0.0), 0.4);
+    EXPECT_NEAR(step06::streak_gathered(0.0, 1.0, 0.0), std::exp(-0.4), 1e-12);
+    EXPECT_NEAR(step06::streak_gathered(0.0, 0.0, 1.0), std::exp(-1.2), 1e-12);
+    EXPECT_DOUBLE_EQ(step06::streak_gathered(0.9, 1.0, 1.0), 0.9) << "the most of the three, not their sum";
 }
 
 // The smooth noise beside the cells (residual thickness, streaks' meander and breaks): values in
@@ -639,32 +652,32 @@ TEST(Step06FoamPattern, FilteredCoverKeepsTheBoxFilteredMean) {
     }
 }
 
-// filtered_streak_cover with no variance is streak_cover: the residual (at most 1) times the line's
-// ramp times the breaks' smoothstep, written out here. And over a footprint of many lines, its
-// mean over the image is the true mean of the streak's cover within 0.03 (measured 0.022 at 32 x
-// 32), as net_cover's is (the test above), where the ramp of the block's mean loses more than
-// twice as much (0.025 to 0.12). The blocks: square (a mip level) and 2 x 32 texels, what a square
-// on the water is in the lines' frame (the pattern's x along the wind, stretched 40 times, y
-// across, twice), and 32 x 2, a footprint long along the wind.
-TEST(Step06FoamPattern, FilteredStreakCoverKeepsTheBoxFilteredMean) {
+// filtered_streak_thickness with no variance is streak_thickness: three times what the line
+// gathered (at most kStreakMost) times the line's ramp times the breaks' smoothstep, written out
+// here. And over a footprint of many lines, its mean over the image is the true mean of the
+// streak's thickness within 0.03, as net_cover's is (the test above), where the ramp of the
+// block's mean loses more than twice as much. The blocks: square (a mip level) and 2 x 32 texels,
+// what a square on the water is in the lines' frame (the pattern's x along the wind, stretched 60
+// times, y across, 4 times), and 32 x 2, a footprint long along the wind.
+TEST(Step06FoamPattern, FilteredStreakThicknessKeepsTheBoxFilteredMean) {
     const double width = step06::kStreakLineTo - step06::kStreakLineFrom;
-    for (const double residual : {0.3, 0.8, 1.6})
+    for (const double gathered : {0.1, 0.2, 0.5})
         for (double line = 0; line <= 1.0; line += 0.05)
             for (double unbroken = 0; unbroken <= 1.0; unbroken += 0.05) {
                 const double t =
                     std::clamp((unbroken - step06::kBreakFrom) / (step06::kBreakTo - step06::kBreakFrom), 0.0, 1.0);
                 const double ramp = std::clamp((line - step06::kStreakLineFrom) / width, 0.0, 1.0);
-                const double expected = std::min(residual, 1.0) * ramp * t * t * (3 - 2 * t);
-                EXPECT_NEAR(step06::filtered_streak_cover(residual, line, 0.0, unbroken), expected, 1e-12);
-                EXPECT_EQ(step06::filtered_streak_cover(residual, line, 0.0, unbroken),
-                          step06::streak_cover(residual, line, unbroken));
+                const double expected = std::min(3 * gathered, step06::kStreakMost) * ramp * t * t * (3 - 2 * t);
+                EXPECT_NEAR(step06::filtered_streak_thickness(gathered, line, 0.0, unbroken), expected, 1e-12);
+                EXPECT_EQ(step06::filtered_streak_thickness(gathered, line, 0.0, unbroken),
+                          step06::streak_thickness(gathered, line, unbroken));
             }
 
     const step06::FoamPatternSettings settings;
     const std::vector<float> cells = step06::foam_pattern(settings);
     const int n = settings.size;
-    const double residual = 0.8;  // the breaks' factor is 1: they multiply, unfiltered
-    const auto streak = [&](double p) { return step06::streak_cover(residual, p, 1.0); };
+    const double gathered = 0.3;  // the breaks' factor is 1: they multiply, unfiltered
+    const auto streak = [&](double p) { return step06::streak_thickness(gathered, p, 1.0); };
     const std::pair<int, int> shapes[] = {{8, 8}, {16, 16}, {32, 32}, {2, 32}, {32, 2}};
     for (const auto& [w, h] : shapes) {
         const PatternBlocks b = pattern_blocks(cells, n, w, h, streak);
@@ -672,7 +685,7 @@ TEST(Step06FoamPattern, FilteredStreakCoverKeepsTheBoxFilteredMean) {
         for (std::size_t i = 0; i < b.means.size(); ++i) {
             truth += b.true_covers[i];
             old += streak(b.means[i]);
-            filtered += step06::filtered_streak_cover(residual, b.means[i], b.variances[i], 1.0);
+            filtered += step06::filtered_streak_thickness(gathered, b.means[i], b.variances[i], 1.0);
         }
         const double count = double(b.means.size());
         truth /= count, old /= count, filtered /= count;
