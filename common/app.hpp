@@ -113,8 +113,8 @@ protected:
     void show_message(std::string message) { panel_message_ = std::move(message); }
     // Every step of the repository, in order (CMake's list of stepNN_* folders).
     const std::vector<std::string>& all_steps() const { return all_steps_; }
-    // Ends this step after the frame and starts `step` at the same time, size, camera and split
-    // (the panel's Previous/Next buttons).
+    // Ends this step after the frame and starts `step` at the same time, size, camera, split and
+    // pause (the panel's Previous/Next buttons).
     void hand_over_to(const std::string& step);
 
     ParamRegistry& params() { return params_; }
