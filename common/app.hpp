@@ -47,6 +47,7 @@
 namespace ocean {
 
 class PanelState;  // panel_state.hpp
+class PanelFit;
 
 struct StepInfo {
     std::string title;          // "Sum of sines in 3D"
@@ -206,6 +207,7 @@ private:
     bool paused_ = false;
     bool panel_visible_ = true;
     std::unique_ptr<PanelState> panel_state_;  // windowed runs only: headless pictures stay reproducible
+    std::unique_ptr<PanelFit> panel_fit_;      // the panel's size, frame by frame
     bool panel_overflow_reported_ = false;    // panel.cpp's check, once a run
     bool imgui_ready_ = false;
     bool imgui_renderer_ready_ = false;  // ImGui's OpenGL 3 backend, only where the panel is drawn
