@@ -233,7 +233,7 @@ void App::draw_panel(float frame_ms) {
     const std::string top = "top " + format_number(double(ceiling)) + " ms";
     // ImGui 1.86's plots take no negative width ("fill"): pass the width that is left.
     ImGui::PlotLines("##frame_ms", history.data(), kHistory, cursor % kHistory, top.c_str(), 0, ceiling,
-                     ImVec2(ImGui::GetContentRegionAvail().x, 2.5f * ImGui::GetFrameHeight()));
+                     ImVec2(ImGui::GetContentRegionAvail().x, 3 * ImGui::GetTextLineHeight()));
     row();
     ImGui::Text("t = %.3f s", time_);
     ImGui::SameLine();
