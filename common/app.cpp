@@ -73,6 +73,7 @@ int App::run(const std::vector<std::string>& args, const StepLocation& where) {
     if (!options.camera.empty())
         if (auto error = apply_camera_preset(params_, options.camera)) return fail(kExitUsage, *error);
     split_view_ = options.split;
+    paused_ = options.paused;
     for (const auto& assignment : options.sets)
         if (auto error = params_.set_assignment(assignment)) return fail(kExitUsage, *error);
     for (const auto& assignment : options.carries)  // only what this step has (Previous/Next)

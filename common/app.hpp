@@ -47,6 +47,7 @@
 namespace ocean {
 
 class PanelState;  // panel_state.hpp
+class PanelFit;
 
 struct StepInfo {
     std::string title;          // "Sum of sines in 3D"
@@ -113,8 +114,8 @@ protected:
     void show_message(std::string message) { panel_message_ = std::move(message); }
     // Every step of the repository, in order (CMake's list of stepNN_* folders).
     const std::vector<std::string>& all_steps() const { return all_steps_; }
-    // Ends this step after the frame and starts `step` at the same time, size, camera and split
-    // (the panel's Previous/Next buttons).
+    // Ends this step after the frame and starts `step` at the same time, size, camera, split and
+    // pause (the panel's Previous/Next buttons).
     void hand_over_to(const std::string& step);
 
     ParamRegistry& params() { return params_; }
@@ -206,6 +207,7 @@ private:
     bool paused_ = false;
     bool panel_visible_ = true;
     std::unique_ptr<PanelState> panel_state_;  // windowed runs only: headless pictures stay reproducible
+    std::unique_ptr<PanelFit> panel_fit_;      // the panel's size, frame by frame
     bool panel_overflow_reported_ = false;    // panel.cpp's check, once a run
     bool imgui_ready_ = false;
     bool imgui_renderer_ready_ = false;  // ImGui's OpenGL 3 backend, only where the panel is drawn

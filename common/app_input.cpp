@@ -58,9 +58,9 @@ void App::read_input() {
             frame_input_.presses.push_back(event);
     }
     frame_input_.cursor = cursor_;
-    const bool was_dragging = drag_.dragging();
     frame_input_.drag = glm::vec2(drag_.frame(events, frame_input_.cursor, io.WantCaptureMouse));
-    frame_input_.drag_ended = was_dragging && !drag_.dragging();
+    // From the events, not from dragging() before and after: a whole drag within one frame ends too.
+    frame_input_.drag_ended = drag_.ended();
     frame_input_.scroll = std::exchange(scroll_accumulated_, 0.0f);
 }
 

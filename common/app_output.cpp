@@ -58,7 +58,7 @@ void App::hand_over_to(const std::string& step) {
         show_message(step + " is not built next to this step");
         return;
     }
-    next_step_command_ = hand_over_command(executable, time_, framebuffer_size_, params_, split_view_);
+    next_step_command_ = hand_over_command(executable, time_, framebuffer_size_, params_, split_view_, paused_);
     context_->request_close();
 }
 

@@ -72,7 +72,7 @@ ParseResult parse_command_line(const std::vector<std::string>& args) {
         static const std::pair<const char*, bool Options::*> switches[] = {
             {"--help", &Options::help}, {"-h", &Options::help}, {"--headless", &Options::headless},
             {"--list-params", &Options::list_params}, {"--bench", &Options::bench}, {"--ui", &Options::show_ui},
-            {"--no-ui", &Options::hide_ui},
+            {"--no-ui", &Options::hide_ui}, {"--paused", &Options::paused},
             {"--simulate-minimise", &Options::simulate_minimise}, {"--split", &Options::split}};
         const auto a_switch = std::find_if(std::begin(switches), std::end(switches),
                                            [&](const auto& s) { return name == s.first; });
@@ -147,6 +147,8 @@ usage: )" + step + R"( [flags]
   --time T              start the clock at T seconds and keep it fixed (see --dt)
   --dt S                fixed time step: the clock advances S seconds per frame
   --start-at T          a real clock that starts at T seconds (Prev/Next use it)
+  --paused              start with the clock paused, as the panel's pause does (Prev/Next
+                        carry the pause with it)
   --screenshot FILE.png write the last frame to FILE.png
                         (headless default: screenshots/<step>.png)
   --set name=value      set a parameter (repeatable; applied after --preset and --camera)

@@ -19,6 +19,7 @@ struct Options {
     std::optional<double> start_time;  // --time T: start the clock at T (and make it fixed)
     std::optional<double> fixed_dt;    // --dt S: advance S seconds per frame (a fixed clock)
     std::optional<double> start_at;    // --start-at T: a real clock that starts at T (Prev/Next)
+    bool paused = false;            // --paused: the clock starts paused (the panel's pause; Prev/Next)
     std::string screenshot;         // --screenshot FILE.png, written after the last frame
     std::vector<std::string> sets;  // --set name=value, in order
     std::vector<std::string> carries;  // --carry name=value: set only where the step has `name`

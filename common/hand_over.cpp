@@ -32,7 +32,7 @@ std::string step_executable(const std::string& step) {
 }
 
 std::vector<std::string> hand_over_command(const std::string& executable, double time, glm::ivec2 size,
-                                         const ParamRegistry& params, bool split) {
+                                         const ParamRegistry& params, bool split, bool paused) {
     std::vector<std::string> command = {executable, "--start-at", std::to_string(time), "--size",
                                         std::to_string(size.x) + "x" + std::to_string(size.y)};
     for (const auto& p : params.all())
@@ -41,6 +41,7 @@ std::vector<std::string> hand_over_command(const std::string& executable, double
             command.push_back(p->name() + "=" + p->value_text());
         }
     if (split) command.push_back("--split");
+    if (paused) command.push_back("--paused");  // a paused moment stays paused in the next chapter
     return command;
 }
 

@@ -22,6 +22,7 @@ void App::init_imgui(bool draw_panel) {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini files left in the working directory
     ImGui::StyleColorsDark();
+    panel_fit_ = std::make_unique<PanelFit>();
     imgui_ready_ = true;
     if (GLFWwindow* window = context_->window()) {
         glfwSetWindowUserPointer(window, this);
@@ -56,6 +57,9 @@ void App::begin_imgui_frame(double dt) {
         ImGui::GetIO().DisplaySize = ImVec2(float(framebuffer_size_.x), float(framebuffer_size_.y));
         ImGui::GetIO().DeltaTime = float(dt > 0 ? dt : 1.0 / 60.0);
     }
+    // The panel's text grows with a large display (panel_state.hpp).
+    ImGuiIO& io = ImGui::GetIO();
+    io.FontGlobalScale = panel_font_scale(io.DisplaySize.x, io.DisplaySize.y);
     ImGui::NewFrame();
 }
 
@@ -72,6 +76,7 @@ void App::shutdown_imgui() {
     }
     if (panel_state_) panel_state_->flush(std::cerr);  // a change made in the last second before closing, too
     panel_state_.reset();
+    panel_fit_.reset();
     ImGui::DestroyContext();
     imgui_ready_ = false;
 }

@@ -58,9 +58,13 @@ public:
     // `mouse_captured` (ImGui's panel under it) starts no drag.
     glm::dvec2 frame(const std::vector<InputEvent>& events, glm::dvec2 cursor, bool mouse_captured);
     bool dragging() const { return dragging_; }
+    // Whether a drag ended within the last frame's events: one that started in an earlier frame,
+    // or a press, move and release all between two frames (common at 3 to 10 frames a second),
+    // which was never dragging() at a frame.
+    bool ended() const { return ended_; }
 
 private:
-    bool dragging_ = false;
+    bool dragging_ = false, ended_ = false;
     glm::dvec2 last_{0.0};
 };
 
@@ -91,6 +95,7 @@ inline KeyAction key_action(const InputEvent& event, bool keyboard_captured) {
 
 inline glm::dvec2 DragTracker::frame(const std::vector<InputEvent>& events, glm::dvec2 cursor, bool mouse_captured) {
     glm::dvec2 drag(0.0);
+    ended_ = false;
     for (const InputEvent& e : events) {
         if (e.kind != InputEvent::MouseButton || e.code != input::kMouseLeft) continue;
         if (e.pressed) {
@@ -100,6 +105,7 @@ inline glm::dvec2 DragTracker::frame(const std::vector<InputEvent>& events, glm:
         } else if (dragging_) {
             drag += e.at - last_;
             dragging_ = false;
+            ended_ = true;
         }
     }
     if (dragging_) {

@@ -5,6 +5,7 @@
 #include "common/panel_state.hpp"
 #include "common/panel_widgets.hpp"
 #include "common/param_groups.hpp"
+#include "common/text.hpp"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <iostream>
 
 namespace ocean {
@@ -89,7 +91,7 @@ bool param_widget(Param& p) {
     return changed;
 }
 
-bool param_widgets(ParamRegistry& params) {
+bool param_widgets(ParamRegistry& params, const std::function<void()>& after_each_row) {
     bool changed = false;
     // One header per group, in the order the groups first appear, with every parameter of the
     // group under it wherever it was declared (param_groups.hpp).
@@ -99,9 +101,14 @@ bool param_widgets(ParamRegistry& params) {
                                              [](const Param* p) { return p->visible(); });
         if (!any_visible) continue;
         // Ungrouped parameters are always shown; groups start folded to keep the panel short.
-        if (!group.name.empty() && !ImGui::CollapsingHeader(group.name.c_str())) continue;
-        for (Param* p : group.params)
-            if (p->visible() && param_widget(*p)) changed = true;
+        const bool open = group.name.empty() || ImGui::CollapsingHeader(group.name.c_str());
+        if (!group.name.empty() && after_each_row) after_each_row();
+        if (!open) continue;
+        for (Param* p : group.params) {
+            if (!p->visible()) continue;
+            if (param_widget(*p)) changed = true;
+            if (after_each_row) after_each_row();
+        }
     }
     return changed;
 }
@@ -159,7 +166,8 @@ void App::draw_panel(float frame_ms) {
     // pictures stay reproducible).
     PanelState* state = panel_state_.get();
     if (state != nullptr) state->load(std::cerr);
-    const bool expanded = begin_panel_window(step_name());
+    PanelFit& fit = *panel_fit_;
+    const bool expanded = fit.begin(step_name());
     const ImVec2 panel_pos = ImGui::GetWindowPos(), panel_size = ImGui::GetWindowSize();
     if (!expanded) {
         ImGui::End();
@@ -173,7 +181,10 @@ void App::draw_panel(float frame_ms) {
         if (context_->window() == nullptr && !panel_overflow_reported_)
             panel_overflow_reported_ = report_overflow(part);
     };
+    // The rows noted as they are drawn are the places the panel may end (PanelFit), never across one.
+    const auto row = [&fit] { fit.note_row(); };
     ImGui::TextDisabled("%s", kPanelHint);
+    row();
     // Widgets leave room for their labels (snake_case names up to 15 characters or so).
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);
     // Previous / next chapter, at the same moment and with the same view (bgfx's example dialog).
@@ -191,14 +202,20 @@ void App::draw_panel(float frame_ms) {
         if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + next_width <=
             ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
             ImGui::SameLine();
+        else
+            row();
         if (!has_next) ImGui::BeginDisabled();
         if (ImGui::Button(next_label.c_str())) hand_over_to(*(here + 1));
         if (!has_next) ImGui::EndDisabled();
+        row();
     }
     ImGui::TextUnformatted(info_.title.c_str());
+    row();
     ImGui::TextDisabled("%s", info_.notes_label().c_str());
+    row();
     ImGui::PushTextWrapPos(0);
     ImGui::TextUnformatted(info_.description.c_str());
+    fit.note_text_lines();
     ImGui::PopTextWrapPos();
     check("the chapter's buttons and description");
     ImGui::Separator();
@@ -209,29 +226,40 @@ void App::draw_panel(float frame_ms) {
     history[std::size_t(cursor++ % kHistory)] = frame_ms;
     ImGui::TextWrapped("%.2f ms/frame (%.0f fps), %dx%d", double(frame_ms),
                        frame_ms > 0 ? 1000.0 / double(frame_ms) : 0.0, framebuffer_size_.x, framebuffer_size_.y);
+    fit.note_text_lines();
+    // The plot's top follows the frames it shows (a slow machine's 500 ms frames are not a flat
+    // line along a fixed top), and says what it is.
+    const float ceiling = frame_time_ceiling_ms(*std::max_element(history.begin(), history.end()));
+    const std::string top = "top " + format_number(double(ceiling)) + " ms";
     // ImGui 1.86's plots take no negative width ("fill"): pass the width that is left.
-    ImGui::PlotLines("##frame_ms", history.data(), kHistory, cursor % kHistory, nullptr, 0, 50,
-                     ImVec2(ImGui::GetContentRegionAvail().x, 40));
+    ImGui::PlotLines("##frame_ms", history.data(), kHistory, cursor % kHistory, top.c_str(), 0, ceiling,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 3 * ImGui::GetTextLineHeight()));
+    row();
     ImGui::Text("t = %.3f s", time_);
     ImGui::SameLine();
     ImGui::Checkbox("pause", &paused_);
+    row();
 
     if (split_variants_) {
         const SplitVariants variants = split_variants_();
         ImGui::Checkbox("split view", &split_view_);
+        row();
         if (split_view_) {
             ImGui::PushTextWrapPos(0);
             ImGui::TextDisabled("left: %s | right: %s", variants.left_label.c_str(), variants.right_label.c_str());
+            fit.note_text_lines();
             ImGui::PopTextWrapPos();
         }
     }
     check("the frame line or the split view's labels");
     ImGui::Separator();
-    param_widgets(params_);
+    param_widgets(params_, row);
     if (ImGui::Button("reset to defaults")) params_.reset_all();
+    row();
     std::array<char, 256> path{};
     preset_path_.copy(path.data(), path.size() - 1);
     if (ImGui::InputText("preset file", path.data(), path.size())) preset_path_ = path.data();
+    row();
     if (ImGui::Button("load preset")) {
         const auto error = params_.load_preset(preset_path_);
         show_message(error ? *error : "loaded " + preset_path_);
@@ -241,11 +269,13 @@ void App::draw_panel(float frame_ms) {
         const auto error = params_.save_preset(preset_path_, step_name() + " preset");
         show_message(error ? *error : "saved " + preset_path_);
     }
+    row();
 
     check("the parameters or the preset buttons");
     ImGui::PushTextWrapPos(0);  // the step's lines wrap at the panel's edge, however narrow it is
     ui();
     ImGui::PopTextWrapPos();
+    row();  // the step's lines as one block: the panel ends above them or below them all
     check("the step's own lines (its ui())");
 
     // Two channels: the shaders' build problems (ProgramLibrary's own state, cleared when they
@@ -255,10 +285,12 @@ void App::draw_panel(float frame_ms) {
         ImGui::Separator();
         ImGui::PushTextWrapPos(0);
         ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s", message->c_str());
+        fit.note_text_lines();
         ImGui::PopTextWrapPos();
     }
     check("a message");
     ImGui::PopItemWidth();
+    fit.end();
     ImGui::End();
     if (state != nullptr) state->save_if_wanted(std::cerr);
     if (split_view_ && split_variants_)

@@ -4,9 +4,13 @@
 
 #include "common/params.hpp"
 
+#include <functional>
+
 namespace ocean {
 
 bool param_widget(Param& param);        // one parameter; true when it changed
-bool param_widgets(ParamRegistry& all); // every visible parameter, grouped; marks changes
+// Every visible parameter, grouped; marks changes. `after_each_row` runs after each group's header
+// and each widget (the panel notes where it may end: PanelFit).
+bool param_widgets(ParamRegistry& all, const std::function<void()>& after_each_row = {});
 
 }  // namespace ocean

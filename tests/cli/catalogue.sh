@@ -30,6 +30,7 @@ rows=(
   "positional|fail|unknown flag|stray"
   "flag_without_value|fail|--frames needs a value|--frames"
   "flag_with_stray_value|fail|--headless takes no value|--headless=1"
+  "paused_with_a_value|fail|--paused takes no value|--paused=yes"
   "unknown_param|fail|unknown parameter 'nope'|--set nope=1"
   "no_equals|fail|--set expects name=value|--set $number"
   "not_a_number|fail|expects a number|--set $number=abc"

@@ -2,7 +2,9 @@
 # taps shorter than a frame act (F1 toggles the panel on every tap, Esc quits), a drag turns the
 # camera from where the button went down, step01's mouse pans and zooms its plot, step07's arrows
 # leave F1 working and a right click pushes the raft, step01's Next button hands over to step02
-# with both steps' lines in a log file, step04's --split names both variants. Skipped (77) without
+# with both steps' lines in a log file, step04's --split names both variants, a drag within one
+# frame prints its line of flags (step01's plot:, step04's camera:), Next from a paused step01
+# starts step02 paused. Skipped (77) without
 # xvfb-run or xdotool.
 set(_window_input "${CMAKE_CURRENT_SOURCE_DIR}/smoke/window_input.sh")
 # Every chapter's keys (step07's through steer_push, which taps them too), then what users do most.
@@ -13,7 +15,8 @@ foreach(_step IN LISTS OCEAN_STEPS)
   endif()
 endforeach()
 foreach(_case IN LISTS _cases ITEMS "step07_buoyancy;steer_push" "step04_fbm;drag" "step01_sine2d;plot"
-                                    "step01_sine2d;next" "step04_fbm;split")
+                                    "step01_sine2d;next" "step04_fbm;split"
+                                    "step01_sine2d;quick_drag" "step04_fbm;quick_drag" "step01_sine2d;next_paused")
   list(GET _case 0 _step)
   list(GET _case 1 _kind)
   set(_flags)
@@ -21,6 +24,8 @@ foreach(_case IN LISTS _cases ITEMS "step07_buoyancy;steer_push" "step04_fbm;dra
     set(_flags --set camera_yaw=0 --set camera_pitch=20)
   elseif(_kind STREQUAL "split")
     set(_flags --split)
+  elseif(_kind STREQUAL "next_paused")
+    set(_flags --paused)
   endif()
   set(_name ${_step}.window_input.${_kind})
   add_test(NAME ${_name} COMMAND bash "${_window_input}" ${_kind} $<TARGET_FILE:${_step}> ${_flags})

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace fs = std::filesystem;
@@ -120,6 +121,30 @@ TEST(App, NextStepStartsAtTheSameTimeSizeAndView) {
     EXPECT_NE(args.find("--size 48x32"), std::string::npos) << args;
     EXPECT_NE(args.find("--split"), std::string::npos) << args;
     EXPECT_EQ(ocean::run_next_step(3, {}), 3) << "no neighbour chosen: the status passes through";
+}
+
+// The panel's pause travels too: a paused step starts its neighbour with --paused, and --paused
+// holds the clock from the first frame (a fixed --dt would otherwise advance it).
+TEST(App, APausedStepStartsItsNeighbourPaused) {
+    // One App at a time (each holds ImGui's context and a GL context): one block each.
+    const auto carries_pause = [](std::vector<std::string> args) {
+        ProbeStep step;
+        step.hand_over_after_first_frame = "step02_sine3d";
+        EXPECT_EQ(step.run(args, kWhere), 0);
+        const auto& next = step.next_step_command();
+        EXPECT_FALSE(next.empty());
+        return std::find(next.begin(), next.end(), "--paused") != next.end();
+    };
+    EXPECT_TRUE(carries_pause({"--headless", "--size", "16x16", "--frames", "3", "--start-at", "2", "--paused"}))
+        << "a paused step starts its neighbour paused";
+    EXPECT_FALSE(carries_pause({"--headless", "--size", "16x16", "--frames", "2"}))
+        << "a running step starts its neighbour running";
+    {
+        ProbeStep paused;
+        ASSERT_EQ(paused.run({"--headless", "--size", "16x16", "--frames", "3", "--time", "1", "--dt", "0.1",
+                              "--paused"}, kWhere), 0);
+        EXPECT_EQ(paused.times, (std::vector<double>{1, 1, 1})) << "the clock does not advance";
+    }
 }
 
 TEST(App, CarriedParametersApplyOnlyWhereTheStepHasThem) {

@@ -20,6 +20,11 @@
 #          process becomes step02 (exec, same pid) in a 640x360 window. The log (stdout and stderr to
 #          a file) holds step01's renderer line, then step02's (lost before the streams were flushed
 #          before exec); F1 in step02 hides its panel, Esc quits with 0.
+#   quick_drag  (step01, or a 3D step) press, move 64 px left and release, all within one frame (as
+#          at 3 to 10 frames a second): the view moves and the line of flags that starts there
+#          follows (step01's "plot:", a 3D step's "camera:"), as after a drag over several frames.
+#   next_paused  (step01, --paused) next, from a paused step01: step02 starts with --paused (its
+#          command line, /proc/PID/cmdline: the exec keeps the pid), so its clock stays where it was.
 #   split  (step04, --split) the split view's line names both variants ("left sine | right
 #          exp(sin - 1)"), before F1 tapped within one frame hides the panel; Esc quits with 0.
 # What reaches the step within one frame must show within FRAME_WAIT_S seconds (default 10; 30
@@ -52,7 +57,7 @@ fi
 out=$(mktemp -d)
 pid=
 # next clicks the panel where it first shows: no state remembered from an earlier run moves it.
-[ "$case_name" = next ] && export XDG_CONFIG_HOME="$out/config"
+case "$case_name" in next | next_paused) export XDG_CONFIG_HOME="$out/config" ;; esac
 cleanup() {
   [ -n "$pid" ] && kill -CONT "$pid" 2> /dev/null && kill -TERM "$pid" 2> /dev/null
   rm -rf "$out"
@@ -223,7 +228,16 @@ case "$case_name" in
       fail "a wheel step at the middle gave x_min $x_min, span $span, not 0.8 and 28.8"
     echo "ok: drag pans the plot, the wheel zooms it about the cursor"
     ;;
-  next)
+  quick_drag)
+    [ -z "$(line_of "^(plot|camera): ")" ] || fail "a view line before any drag"
+    within_one_frame xdotool mousemove --window "$window" 560 200 mousedown 1 mousemove --window "$window" 496 200 mouseup 1
+    line=$(wait_for "^(plot|camera): " "$frame_wait") ||
+      fail "a press, move and release within one frame printed no line of flags (plot: or camera:)"
+    echo "$line"
+    quit_with_esc
+    echo "ok: a drag within one frame printed the flags that start where it left the view"
+    ;;
+  next | next_paused)
     [ "$(basename "$exe")" = step01_sine2d ] || fail "the next case is step01's (its Next is step02_sine3d)"
     # The Next button: panel at (10, 10), title bar 13 + 2 x 3 = 19, window padding 8, the hint
     # line 13, item spacing 4: the first row's buttons span y 54-72; "< (first)" spans x 18-89,
@@ -243,6 +257,11 @@ case "$case_name" in
     [ -n "$window2" ] || fail "a click on Next (150, 63) showed no step02_sine3d window in 30 s"
     geometry=$(xdotool getwindowgeometry "$window2" | grep -oE '[0-9]+x[0-9]+$')
     [ "$geometry" = 640x360 ] || fail "step02's window is $geometry, not step01's 640x360"
+    if [ "$case_name" = next_paused ]; then  # the same process, step02's command line now
+      command_line=$(tr '\0' ' ' < "/proc/$pid/cmdline")
+      echo "step02's command line: $command_line"
+      case " $command_line " in *" --paused "*) ;; *) fail "step01 was paused, step02 did not start with --paused" ;; esac
+    fi
     xdotool mousemove --window "$window2" 520 200 windowfocus --sync "$window2" 2> /dev/null ||
       xdotool mousemove --window "$window2" 520 200
     sleep 0.3

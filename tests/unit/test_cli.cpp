@@ -36,6 +36,14 @@ TEST(CommandLine, NoUiHidesThePanelAndContradictsUi) {
     EXPECT_NE(both.error->find("--ui and --no-ui"), std::string::npos) << *both.error;
 }
 
+TEST(CommandLine, PausedStartsTheClockPausedAndTakesNoValue) {
+    EXPECT_FALSE(parse({}).options.paused);
+    EXPECT_TRUE(parse({"--paused"}).options.paused);
+    const auto valued = parse({"--paused=1"});
+    ASSERT_TRUE(valued.error);
+    EXPECT_EQ(*valued.error, "--paused takes no value");
+}
+
 TEST(CommandLine, OtherFlags) {
     const auto r = parse({"--dt", "0.02", "--bench", "--list-params", "--preset", "p.txt",
                           "--save-preset", "q.txt", "--ui", "--shader-dir", "/tmp/s", "--export", "out", "--help"});
@@ -81,7 +89,8 @@ TEST(CommandLine, BadInputGetsOneLineNamingTheFlag) {
 TEST(CommandLine, UsageListsEveryFlag) {
     const std::string usage = ocean::usage_text("step", "desc");
     for (const char* flag : {"--headless", "--size", "--frames", "--time", "--dt", "--screenshot", "--set",
-                             "--preset", "--save-preset", "--list-params", "--bench", "--help"})
+                             "--preset", "--save-preset", "--list-params", "--bench", "--help", "--start-at",
+                             "--paused", "--split", "--carry", "--no-ui"})
         EXPECT_NE(usage.find(flag), std::string::npos) << flag;
 }
 

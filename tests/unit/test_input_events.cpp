@@ -97,7 +97,9 @@ TEST(DragTracker, FirstFrameMovesFromThePress) {
     queue.mouse_button(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, {540, 310});
     EXPECT_EQ(drag.frame(queue.take(), {900, 700}, false), glm::dvec2(10, 0));  // up at 540: no further
     EXPECT_FALSE(drag.dragging());
+    EXPECT_TRUE(drag.ended()) << "the frame of the release";
     EXPECT_EQ(drag.frame(queue.take(), {0, 0}, false), glm::dvec2(0));
+    EXPECT_FALSE(drag.ended()) << "once";
 }
 
 TEST(DragTracker, WholeDragBetweenTwoFrames) {
@@ -107,6 +109,7 @@ TEST(DragTracker, WholeDragBetweenTwoFrames) {
     queue.mouse_button(GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, {160, 90});
     EXPECT_EQ(drag.frame(queue.take(), {400, 400}, false), glm::dvec2(60, -10));
     EXPECT_FALSE(drag.dragging());
+    EXPECT_TRUE(drag.ended()) << "a drag that never was dragging() at a frame still ends (its flags line)";
 }
 
 TEST(DragTracker, PressOnThePanelStartsNoDrag) {

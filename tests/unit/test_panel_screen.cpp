@@ -1,7 +1,7 @@
 // The panel as a headless run draws it (--ui), measured on the screenshot: a step that clears to
-// one grey, run with and without the panel; the pixels that differ are the panel's. Its first
-// rectangle at 960x540 and 640x360 covers at most a third of the window, lies inside it, and is
-// the one default_panel_rect gives. (Its own executable: App makes its own context.)
+// one grey, run with and without the panel; the pixels that differ are the panel's. Its rectangle
+// at 960x540 and 640x360 covers at most a quarter of the window, lies inside it, and is as wide as
+// default_panel_rect and no taller. (Its own executable: App makes its own context.)
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -77,7 +77,7 @@ Box differing(const ocean::Image& a, const ocean::Image& b) {
     return box;
 }
 
-TEST(PanelScreen, DefaultPanelCoversAtMostAThirdOfTheWindowAndLiesInside) {
+TEST(PanelScreen, DefaultPanelCoversAtMostAQuarterOfTheWindowAndLiesInside) {
     for (const auto& [size, width, height] :
          {std::tuple{"960x540", 960, 540}, std::tuple{"640x360", 640, 360}}) {
         SCOPED_TRACE(size);
@@ -90,7 +90,7 @@ TEST(PanelScreen, DefaultPanelCoversAtMostAThirdOfTheWindowAndLiesInside) {
         std::cout << size << ": the panel covers " << box.x1 - box.x0 + 1 << "x" << box.y1 - box.y0 + 1
                   << " at (" << box.x0 << ", " << box.y0 << "), " << int(share * 1000 + 0.5) / 10.0
                   << " % of the window\n";
-        EXPECT_LE(share, 1.0 / 3.0) << "most of the picture stays visible";
+        EXPECT_LE(share, 0.25) << "most of the picture stays visible";
         EXPECT_GT(box.x0, 0);
         EXPECT_GT(box.y0, 0);
         EXPECT_LT(box.x1, width - 1) << "not cut off at the right";
@@ -99,7 +99,7 @@ TEST(PanelScreen, DefaultPanelCoversAtMostAThirdOfTheWindowAndLiesInside) {
         EXPECT_NEAR(box.x0, want.x, 2);
         EXPECT_NEAR(box.y0, want.y, 2);
         EXPECT_NEAR(box.x1 - box.x0 + 1, want.width, 3);
-        EXPECT_NEAR(box.y1 - box.y0 + 1, want.height, 3);
+        EXPECT_LE(box.y1 - box.y0 + 1, want.height + 1) << "its rows' height at most (PanelFit)";
     }
 }
 
@@ -151,7 +151,7 @@ TEST(PanelScreen, SplitLineAtTheMiddleOfWhatThePanelLeavesFree) {
         return white;
     };
     const ocean::Image plain = screenshot("960x540", false, true), panel = screenshot("960x540", true, true);
-    // A row below the panel (it ends at 10 + 432) and above the labels (at the bottom).
+    // A row below the panel (it ends at 10 + 432 at most) and above the labels (at the bottom).
     EXPECT_EQ(line_at(plain, 470), (std::vector<int>{479, 480})) << "no panel: the middle";
     const ocean::PanelRect r = ocean::default_panel_rect(960, 540);
     const int free_middle = int((r.x + r.width + 960) / 2 + 0.5f);  // 619

@@ -24,7 +24,8 @@ Placed place(ocean::Param& param) {
     io.Fonts->Build();
     ImGui::NewFrame();
     Placed placed;
-    ocean::begin_panel_window("probe");
+    ocean::PanelFit fit;
+    fit.begin("probe");
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 8.5f);
     placed.top = ImGui::GetCursorScreenPos().y;
     ocean::param_widget(param);
