@@ -1,5 +1,5 @@
 # add_step(NAME SOURCES ... [LIBRARY ...] SHADERS ... [LINKS ...] [TESTS ...] [GPU_TESTS ...]
-#          [TEST_SHADERS ...] [EXERCISES ...] [GOLDEN file])
+#          [TEST_SHADERS ...] [EXERCISES ...] [GOLDEN file] [SMOKE_FLAGS ...])
 # declares one step, the program of a chapter, with what it is made of and tested by:
 #  - the executable NAME (folder, target and window title share the name),
 #  - with LIBRARY, a static library NAME_lib of the chapter's technique, which the step, the
@@ -13,6 +13,7 @@
 #  - with TEST_SHADERS, the shaders only its GPU tests load (in the lists every shader must pass),
 #  - with EXERCISES, the chapter's exercise list (STEP/exercises.cpp), compiled into exercises/exercise,
 #  - its smoke test: a headless run compared with GOLDEN (default the folder's golden.png), core,
+#    with SMOKE_FLAGS given to the program (a parameter the golden picture holds still),
 #  - its windowed run under Xvfb (not in the sanitizer build),
 #  - OCEAN_STEP set to NAME in the chapter's CMakeLists.txt, for step_test() below,
 #  - its entry in the lists the shader, bad-input and catalogue tests walk (OCEAN_STEPS,
@@ -25,7 +26,7 @@ include(GoogleTests)  # ocean_gtests()
 set(OCEAN_TESTS_DIR "${CMAKE_CURRENT_LIST_DIR}/../tests")
 
 function(add_step name)
-  cmake_parse_arguments(ARG "" "GOLDEN" "SOURCES;LIBRARY;SHADERS;LINKS;TESTS;GPU_TESTS;TEST_SHADERS;EXERCISES" ${ARGN})
+  cmake_parse_arguments(ARG "" "GOLDEN" "SOURCES;LIBRARY;SHADERS;LINKS;TESTS;GPU_TESTS;TEST_SHADERS;EXERCISES;SMOKE_FLAGS" ${ARGN})
   list(TRANSFORM ARG_SHADERS PREPEND "${CMAKE_CURRENT_SOURCE_DIR}/")
   # Every file in the chapter's shaders/ folder is listed: the shader tests walk the lists, and a
   # file left out (a shader a change stopped using, say) would never be compiled by any of them.
@@ -143,7 +144,7 @@ function(add_step name)
 
   add_test(NAME ${name}.smoke
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/smoke.sh" $<TARGET_FILE:${name}>
-            $<TARGET_FILE:image_compare> "${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke/${name}")
+            $<TARGET_FILE:image_compare> "${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke/${name}" ${ARG_SMOKE_FLAGS})
   set_tests_properties(${name}.smoke PROPERTIES LABELS "smoke;gpu;core;${name}" TIMEOUT 300)
 
   if(OCEAN_SANITIZE)

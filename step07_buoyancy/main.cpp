@@ -198,9 +198,8 @@ private:
     unsigned bodies_made_for_ = 0;
     step07::BodyParams body_params_;
     step07::Steering steering_;
-    // The camera kept on the boat, when asked: off at the start, so that the view a learner opens
-    // (and the golden picture) stays where the camera was put while the bodies settle.
-    step07::FollowCamera follow_{false};
+    // The camera kept on the boat from the start: a boat under way leaves a still view in seconds.
+    step07::FollowCamera follow_{true};
     step07::Arrows arrows_;  // held this frame
     double bodies_ms_ = 0;
     step07::QueryGrid queries_;

@@ -4,7 +4,8 @@
 # end (export.txt) has moved from where it started (--save-preset) as the boat moved along the
 # water (trajectories.csv, from its first row to its last), within 5 cm: the first row is the boat
 # after its first step, which the camera followed too (a boat starting from rest moves about 2 cm
-# in it). The boat has gone more than 10 m. With follow_boat=false the target has not moved at all.
+# in it). The boat has gone more than 10 m. It follows by default (follow_boat is on from the
+# start); with follow_boat=false the target has not moved at all.
 set -u
 exe=$1 out=$2
 rm -rf "$out" && mkdir -p "$out"
@@ -16,7 +17,7 @@ run() {  # run NAME FLAGS...: the start's parameters, then 60 frames and their e
     "$exe" --headless --frames 60 "${flags[@]}" "$@" --export "$out/$name" >> "$out/$name.log" 2>&1 ||
     { cat "$out/$name.log"; echo "FAIL: $name exited with an error"; exit 1; }
 }
-run following --set follow_boat=true
+run following  # the default: a learner's first view follows the boat
 run still --set follow_boat=false
 python3 - "$out" <<'PY'
 import csv, sys
