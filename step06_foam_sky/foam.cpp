@@ -123,6 +123,13 @@ FoamSimulation::FoamSimulation(ocean::ProgramFactory programs) : programs_(std::
     const FoamPatternSettings settings;
     const std::vector<std::uint8_t> texels = foam_pattern_texture(settings);  // r p, g noise, b p^2, a noise
     pattern_ = ocean::make_tiling_colour_texture_2d(settings.size, settings.size, texels.data());
+    const std::vector<std::uint8_t> lines = streak_lines_texture(settings);
+    streak_lines_ = ocean::make_tiling_colour_texture_2d(settings.size, settings.size, lines.data());
+}
+
+void FoamSimulation::bind_streak_lines(const ocean::ShaderProgram& program, int unit) const {
+    program.set("u_streak_lines", unit);
+    ocean::bind_texture(GLuint(unit), GL_TEXTURE_2D, streak_lines_.id());
 }
 
 void FoamSimulation::bind_pattern(const ocean::ShaderProgram& program, int unit) const {

@@ -126,6 +126,8 @@ public:
     // metres one tile of it covers (u_foam_pattern_size), and the streaks' frames (u_streak_*,
     // u_meander_*, u_break_*: world x, z to the pattern's coordinates, stretched along the wind).
     void bind_pattern(const ocean::ShaderProgram& program, int unit) const;
+    // The streaks' line cover (u_streak_lines, RGBA8: streak_lines_texture; mipmapped, repeating).
+    void bind_streak_lines(const ocean::ShaderProgram& program, int unit) const;
     // The wind the streaks lie along: its heading (unit x, z: short_waves.hpp's wind_heading) and
     // speed (m/s: the share of the residual foam drawn as streaks, foam_streak_share).
     void set_wind(glm::dvec2 heading, double speed);
@@ -156,6 +158,7 @@ private:
     std::size_t current_ = 0;
     ocean::VertexArray no_vertices_;  // the full-screen triangle's corners come from gl_VertexID
     ocean::Texture pattern_;
+    ocean::Texture streak_lines_;
     int n_ = 0;
     bool warm_start_ = true;
     glm::vec2 wind_along_{1.0f, 0.0f};  // the wind's heading (x, z): the streaks' frame follows it

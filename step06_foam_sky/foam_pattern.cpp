@@ -94,4 +94,13 @@ std::vector<std::uint8_t> foam_pattern_texture(const FoamPatternSettings& settin
     return rgba;
 }
 
+std::vector<std::uint8_t> streak_lines_texture(const FoamPatternSettings& settings) {
+    std::vector<float> lines = foam_pattern(settings);
+    for (float& value : lines) value = float(streak_line(value));
+    const std::vector<std::uint8_t> r = to_r8(lines);
+    std::vector<std::uint8_t> rgba(4 * lines.size(), 0);
+    for (std::size_t i = 0; i < lines.size(); ++i) rgba[4 * i] = r[i];
+    return rgba;
+}
+
 }  // namespace step06

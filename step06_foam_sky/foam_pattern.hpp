@@ -115,13 +115,14 @@ inline double foam_streak_share(double wind_speed) {
 //     fades downwind of them;
 //   - the line: the bubble cells stretched kStreakLength times along the wind and kStreakSpacing
 //     times across (cells 54 m long and 3.6 m wide: their borders are lines tens of centimetres
-//     wide, which meet and part where three cells meet);
+//     wide, which meet and part where three cells meet), read from a texture of its own that holds
+//     the line's cover (streak_line of the cells' pattern) rather than the pattern;
 //   - its meander: the point moved across the wind by up to kStreakMeander metres by the smooth
 //     noise read over tiles kMeanderLength metres along the wind and kMeanderWidth across, so each
 //     line wanders, and its neighbours a few metres away wander otherwise;
 //   - its breaks: the smooth noise read over tiles kBreakLength by kBreakWidth metres: where it is
 //     low the line stops, so lines have ends, segments of tens of metres.
-// The foam's thickness on the line (streak_thickness) is laid on the bubble cells as the lace is
+// The foam on the line (streak_thickness) is laid on the bubble cells as the lace is
 // (streak_cover), so a streak is flat foam with holes and ragged edges, not a solid bar.
 constexpr double kStreakLength = 60, kStreakSpacing = 4;  // the pattern's stretch along and across the wind
 constexpr double kStreakMeander = 2.5, kMeanderLength = 120, kMeanderWidth = 32;  // metres
@@ -134,19 +135,31 @@ constexpr double kStreakMost = 0.8, kStreakHoles = 0.75;  // the line's greatest
 inline double streak_gathered(double here, double near, double far) {
     return std::max(here, std::max(near * std::exp(-kStreakNear / kStreakFade), far * std::exp(-kStreakFar / kStreakFade)));
 }
-// How thick the foam on a streak is: three times what the line gathered (at most kStreakMost)
-// where the line is (a linear ramp of the line's pattern, so it can be averaged over a footprint
-// as net_cover is) and the line is not broken (smoothstep of the noise, which is smooth already).
-inline double filtered_streak_thickness(double gathered, double line_mean, double line_variance, double unbroken) {
-    const double width = kStreakLineTo - kStreakLineFrom;
+// The line's cover at a value of the cells' pattern: a linear ramp from kStreakLineFrom to
+// kStreakLineTo. It is applied to each texel before any filtering and uploaded as a texture of its
+// own (streak_lines_texture), so the texture filter averages the cover itself, which is exact over
+// any footprint. A thin line is the high tail of the pattern's values: the ramp of the pattern's
+// mean and variance over a footprint (mean_clamp, as the lace is filtered) assumes them spread
+// evenly and lost half the lines a deck camera saw 30 to 60 m away.
+inline double streak_line(double pattern) {
+    return std::clamp((pattern - kStreakLineFrom) / (kStreakLineTo - kStreakLineFrom), 0.0, 1.0);
+}
+// The texture the renderer reads the lines from, RGBA8: r the line's cover at each texel of
+// foam_pattern (the other channels 0).
+std::vector<std::uint8_t> streak_lines_texture(const FoamPatternSettings& settings);
+
+// How thick the foam on a streak's line is: three times what the line gathered (at most
+// kStreakMost) where the line is not broken (smoothstep of the noise, which is smooth already).
+inline double streak_thickness(double gathered, double unbroken) {
     const double t = std::clamp((unbroken - kBreakFrom) / (kBreakTo - kBreakFrom), 0.0, 1.0);
-    return std::clamp(3.0 * gathered, 0.0, kStreakMost) *
-           mean_clamp(-kStreakLineFrom / width, 1.0 / width, line_mean, line_variance) * t * t * (3 - 2 * t);
+    return std::clamp(3.0 * gathered, 0.0, kStreakMost) * t * t * (3 - 2 * t);
 }
-inline double streak_thickness(double gathered, double line, double unbroken) {
-    return filtered_streak_thickness(gathered, line, 0.0, unbroken);
+// How much of a texel a streak covers: the line's cover (filtered: the share of the footprint the
+// line takes) times its foam laid on the bubble cells as the lace is. Linear in the line's cover,
+// so the filtered cover is exact; applying the bubbles' threshold to a footprint's mean thickness
+// instead would drop a thin line seen from afar.
+inline double streak_cover(double line_cover, double thickness, double pattern) {
+    return line_cover * net_cover(thickness, pattern, kStreakHoles);
 }
-// How much of a texel a streak covers: its thickness on the bubble cells, as the lace's.
-inline double streak_cover(double thickness, double pattern) { return net_cover(thickness, pattern, kStreakHoles); }
 
 }  // namespace step06

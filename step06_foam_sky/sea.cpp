@@ -110,6 +110,7 @@ void Sea::bind_for_shading(const ocean::ShaderProgram& p) const {
     bind_maps(p);
     foam_->bind(p, UNIT_FOAM);
     foam_->bind_pattern(p, UNIT_FOAM_PATTERN);
+    foam_->bind_streak_lines(p, UNIT_STREAK_LINES);
     p.set("u_unresolved_slope_variance", unresolved_by_level_);
     p.set("u_short_wave_slope_variance",
           glm::vec2(float(short_wave_slope_variance_.upwind), float(short_wave_slope_variance_.crosswind)));

@@ -10,6 +10,7 @@
 #define UNIT_FOAM_PATTERN 5   // the bubble pattern (u_foam_pattern)
 #define UNIT_GBUFFER_WORLD 6  // the G-buffer's surface points (u_gbuffer_world)
 #define UNIT_GBUFFER_REST 7   // the G-buffer's rest positions and footprints (u_gbuffer_rest)
+#define UNIT_STREAK_LINES 8   // the streaks' line cover (u_streak_lines)
 #define UNIT_SKY_HORIZON 9    // the fog's colour around the horizon (sky_horizon.glsl's u_sky_horizon)
 #define UNIT_EXTRA_DISPLACEMENT 10  // the extra waves on a grid of their own (extra_waves.glsl): displacement
 #define UNIT_EXTRA_SLOPES 11        // and slopes

@@ -197,6 +197,7 @@ vec2 foam_at(vec2 p, float long_side) {
 
 // foam_pattern.hpp: r 1 on the borders of bubble cells; g a smooth noise; b r^2; a another noise
 layout(binding = UNIT_FOAM_PATTERN) uniform sampler2D u_foam_pattern;
+layout(binding = UNIT_STREAK_LINES) uniform sampler2D u_streak_lines;  // r: the streaks' line cover (foam_pattern.hpp's streak_line)
 uniform float u_foam_pattern_size;  // metres one tile of it covers
 // World (x, z) to the pattern's coordinates for the streaks: stretched along the wind.
 uniform vec2 u_streak_along, u_streak_across;
@@ -240,20 +241,20 @@ vec2 pattern_statistics(vec4 texel) { return vec2(texel.r, max(texel.b - texel.r
 // Two patterns mixed with weights w and 1 - w (independent: the variances add, squared weights).
 vec2 mix_statistics(vec2 a, vec2 b, float w) { return vec2(w * a.x + (1.0 - w) * b.x, w * w * a.y + (1.0 - w) * (1.0 - w) * b.y); }
 
-// foam_pattern.hpp's streaks: what a line gathers from upwind (streak_gathered), the foam's
-// thickness across the line where it is not broken (streak_thickness; filtered, the line's ramp
-// averaged over the footprint as the lace's is), laid on the bubble cells as lace is.
+// foam_pattern.hpp's streaks: what a line gathers from about and upwind of it
+// (streak_gathered), the line's cover at a value of the cells' pattern (streak_line; the renderer
+// reads it filtered from u_streak_lines), the foam's thickness on the line where it is not broken
+// (streak_thickness), and the cover: the line's times its foam laid on the bubble cells as lace is
+// (linear in the line's cover, so exact filtered).
 const float STREAK_LINE_FROM = 0.5, STREAK_LINE_TO = 0.8, BREAK_FROM = 0.3, BREAK_TO = 0.45;
 const float STREAK_NEAR = 6.0, STREAK_FAR = 18.0, STREAK_FADE = 15.0, STREAK_MOST = 0.8, STREAK_HOLES = 0.75;
 float streak_gathered(float here, float near, float far) {
     return max(here, max(near * exp(-STREAK_NEAR / STREAK_FADE), far * exp(-STREAK_FAR / STREAK_FADE)));
 }
-float filtered_streak_thickness(float gathered, vec2 line, float unbroken) {  // line: (mean, variance)
-    float width = STREAK_LINE_TO - STREAK_LINE_FROM;
-    return clamp(3.0 * gathered, 0.0, STREAK_MOST) * mean_clamp(-STREAK_LINE_FROM / width, 1.0 / width, line.x, line.y) *
-           smoothstep(BREAK_FROM, BREAK_TO, unbroken);
+float streak_line(float pattern) { return clamp((pattern - STREAK_LINE_FROM) / (STREAK_LINE_TO - STREAK_LINE_FROM), 0.0, 1.0); }
+float streak_thickness(float gathered, float unbroken) {
+    return clamp(3.0 * gathered, 0.0, STREAK_MOST) * smoothstep(BREAK_FROM, BREAK_TO, unbroken);
 }
-float streak_thickness(float gathered, float line, float unbroken) { return filtered_streak_thickness(gathered, vec2(line, 0.0), unbroken); }
 
 // How much of the pixel each stage of foam covers, and the active foam's brightness there: a
 // breaking crest is churned, bubbles and troughs of foam, not a flat sheet.
@@ -303,9 +304,9 @@ FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     // as a raft of foam tears.
     float residual = filtered_net_cover(residual_thickness(amounts.y, noise.g), mix_statistics(coarse, fine, 0.55), RESIDUAL_HOLES);
 #if STREAKS
-    // The streaks: the line's pattern stretched along the wind, its across coordinate shifted by
+    // The streaks: the line's cover stretched along the wind, its across coordinate shifted by
     // the meander (the smooth noise), cut where the smooth noise is low. (Rows of each matrix:
-    // along, across.) The line's ramp is averaged over the footprint as the lace's is.
+    // along, across.) The texture filter averages the line's cover itself over the footprint.
     mat2 to_meander = transpose(mat2(u_meander_along, u_meander_across));
     mat2 to_breaks = transpose(mat2(u_break_along, u_break_across));
     mat2 to_lines = transpose(mat2(u_streak_along, u_streak_across));
@@ -313,11 +314,11 @@ FoamCover foam_cover(vec2 p, SurfaceFootprint f) {
     float unbroken = textureGrad(u_foam_pattern, to_breaks * p, to_breaks * f.dx, to_breaks * f.dy).g;
     vec2 across = normalize(u_streak_across);  // the meander moves the point across the wind
     vec2 q = p + across * (u_streak_meander * (2.0 * wander - 1.0));
-    vec2 line = pattern_statistics(textureGrad(u_foam_pattern, to_lines * q, to_lines * f.dx, to_lines * f.dy));
-    // A streak is foam gathered into a line: three times what it gathered, thickest on the line,
-    // laid on the same bubble cells as the lace (flat foam with holes and ragged edges, not a
-    // solid bar); the lace loses what the wind gathered (foam_pattern.hpp).
-    float streak = filtered_net_cover(filtered_streak_thickness(gathered, line, unbroken), mix_statistics(coarse, fine, 0.55), STREAK_HOLES);
+    float line = textureGrad(u_streak_lines, to_lines * q, to_lines * f.dx, to_lines * f.dy).r;  // the line's cover
+    // A streak is foam gathered into a line: three times what it gathered, laid on the same
+    // bubble cells as the lace (flat foam with holes, not a solid bar), over the share of the
+    // footprint the line covers; the lace loses part of what the wind gathered (foam_pattern.hpp).
+    float streak = line * filtered_net_cover(streak_thickness(gathered, unbroken), mix_statistics(coarse, fine, 0.55), STREAK_HOLES);
     residual = max(residual * (1.0 - 0.8 * u_streak_share), u_streak_share * streak);
 #endif
     return FoamCover(active_cover, residual, 0.8 + 0.2 * fine.x);

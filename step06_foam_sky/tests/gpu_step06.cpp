@@ -486,7 +486,7 @@ TEST_F(Step06Gpu, BothClocksFollowTheCpuOnAMovingSea) {
 // The renderer's cover functions (GLSL, through foam_cover.frag) against foam_pattern.hpp's, texel
 // by texel of the uploaded pattern texture (8 bits: the CPU is given the same quantised cells r and
 // noise g): net_cover with the active and the residual holes, residual_cover, streak_thickness
-// (gathered foam up to 0.5: three times it, clamped) and streak_gathered (the cells and the noise
+// (gathered foam up to 0.5: three times it, clamped; the noise as the breaks) and streak_gathered (the cells and the noise
 // as the foam near and far upwind), at a few amounts.
 TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     step06::FoamSimulation foam(factory());
@@ -518,7 +518,7 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
             const double r = cells[i] / 255.0, g = noise[i] / 255.0;
             const double cpu = c.function == 0   ? step06::net_cover(c.amount, r, c.holes)
                                : c.function == 1 ? step06::residual_cover(c.amount, r, g)
-                               : c.function == 2 ? step06::streak_thickness(c.amount, r, g)
+                               : c.function == 2 ? step06::streak_thickness(c.amount, g)
                                                  : step06::streak_gathered(c.amount, r, g);
             worst = std::max(worst, std::abs(gpu[i] - cpu));
             covered += gpu[i];
@@ -531,9 +531,8 @@ TEST_F(Step06Gpu, FoamCoverMatchesTheCpuOnTheUploadedPattern) {
     std::printf("the cover functions on the uploaded pattern: worst |GPU - CPU| %.2g (limit 1e-5)\n", worst_overall);
 }
 
-// The filtered cover functions in the renderer (foam_cover.frag's 3 and 4: filtered_net_cover, and
-// filtered_streak_thickness with the breaks' factor 1) on mip levels 0, 2 and 4 of the pattern texture,
-// a pixel a texel of the level, through pattern_statistics. The CPU is given each texel's r and b
+// The filtered cover in the renderer (foam_cover.frag's 3: filtered_net_cover) on mip levels 0, 2
+// and 4 of the pattern texture, a pixel a texel of the level, through pattern_statistics. The CPU is given each texel's r and b
 // two ways, with the same 2/255 off the variance:
 //   - the level's own bytes, read back: only float arithmetic differs (limit 1e-4);
 //   - the mean of the 2^L x 2^L uploaded bytes it averages, what the level should hold. But
@@ -560,12 +559,11 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
         return std::pair{mean, std::max(b / 255.0 - mean * mean - 2.0 / 255.0, 0.0)};
     };
     struct Case {
-        int function;  // 3 filtered_net_cover, 4 filtered_streak_thickness
+        int function;  // 3 filtered_net_cover
         float holes, amount;
     };
     const float active = float(step06::kActiveHoles), residual = float(step06::kResidualHoles);
-    const Case cases[] = {{3, active, 0.3f},   {3, active, 0.65f},   {3, residual, 0.2f},
-                          {3, residual, 0.4f}, {3, residual, 0.65f}, {4, 0, 0.8f}};
+    const Case cases[] = {{3, active, 0.3f}, {3, active, 0.65f}, {3, residual, 0.2f}, {3, residual, 0.4f}, {3, residual, 0.65f}};
     double worst_own = 0, worst_box = 0, worst_mean = 0;
     for (const int level : {0, 2, 4}) {
         const int m = n >> level, box = 1 << level;
@@ -605,8 +603,7 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
                 ocean_test::draw_full_screen<float>(*program, m, m, GL_R32F, GL_RED, GL_FLOAT, 1);
             const auto cpu = [&](double r, double b) {
                 const auto [mean, variance] = statistics(r, b);
-                return c.function == 3 ? step06::filtered_net_cover(c.amount, mean, variance, c.holes)
-                                       : step06::filtered_streak_thickness(c.amount, mean, variance, 1.0);
+                return step06::filtered_net_cover(c.amount, mean, variance, c.holes);
             };
             double own_error = 0, box_error = 0, nearest_error = 0, covered = 0, box_covered = 0;
             for (std::size_t i = 0; i < gpu.size(); ++i) {
@@ -621,7 +618,7 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
             const double mean_error = (covered - box_covered) / double(gpu.size());
             std::printf("level %d, %-21s holes %.2f, amount %.2f: mean cover %.3f; worst |GPU - CPU| on the level's "
                         "bytes %.1e, on the box means %.3f (%.3f if rounded to the nearest byte), mean %+.4f\n",
-                        level, c.function == 3 ? "filtered_net_cover" : "filtered_streak_thickness", double(c.holes),
+                        level, "filtered_net_cover", double(c.holes),
                         double(c.amount), covered / double(gpu.size()), own_error, box_error, nearest_error,
                         mean_error);
             EXPECT_LT(own_error, 1e-4) << "level " << level << ", function " << c.function << ", amount " << c.amount;
@@ -636,6 +633,60 @@ TEST_F(Step06Gpu, FilteredFoamCoverMatchesTheCpuOnTheMipLevels) {
     std::printf("the filtered cover on mip levels 0, 2, 4: worst |GPU - CPU| %.1e on the level's bytes (limit "
                 "1e-4); on the box means of level 0 %.3f a texel (limit 0.15), %.4f over a level (limit 0.02)\n",
                 worst_own, worst_box, worst_mean);
+}
+
+// The streaks' lines are read from a texture of the line's cover (foam_pattern.hpp's
+// streak_lines_texture), so the texture filter averages the cover itself: level 0 is what was
+// uploaded, each texel of levels 2 and 4 is the mean of the level-0 bytes it covers within a byte
+// a level (glGenerateTextureMipmap rounds each level it makes from the one above), and the mean
+// over a level is level 0's within half a byte a level. The renderer reads each level's bytes
+// (foam_cover.frag's 4) as they are.
+TEST_F(Step06Gpu, StreakLinesAreTheLineCoverAveraged) {
+    step06::FoamSimulation foam(factory());
+    ocean::ShaderProgram* program = foam_cover_program();
+    ASSERT_NE(program, nullptr);
+    const step06::FoamPatternSettings settings;
+    const int n = settings.size;
+    const std::vector<std::uint8_t> uploaded = step06::streak_lines_texture(settings);
+    foam.bind_pattern(*program, 0);
+    foam.bind_streak_lines(*program, 1);
+    GLint texture = 0;
+    glActiveTexture(GL_TEXTURE1);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+    double level0_mean = 0;
+    for (std::size_t i = 0; i < uploaded.size(); i += 4) level0_mean += uploaded[i];
+    level0_mean /= double(n * n);
+    for (const int level : {0, 2, 4}) {
+        const int m = n >> level, box = 1 << level;
+        std::vector<std::uint8_t> own(std::size_t(4 * m * m));
+        glGetTextureImage(GLuint(texture), level, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(own.size()), own.data());
+        if (level == 0) {
+            ASSERT_EQ(own, uploaded) << "level 0 is streak_lines_texture";
+        }
+        double off = 0, mean = 0;
+        for (int j = 0; j < m; ++j)
+            for (int i = 0; i < m; ++i) {
+                double sum = 0;
+                for (int y = j * box; y < (j + 1) * box; ++y)
+                    for (int x = i * box; x < (i + 1) * box; ++x) sum += uploaded[std::size_t(4 * (y * n + x))];
+                const double texel = own[std::size_t(4 * (j * m + i))];
+                off = std::max(off, std::abs(texel - sum / (box * box)));
+                mean += texel;
+            }
+        mean /= double(m * m);
+        program->set("u_function", 4);
+        program->set("u_lod", float(level));
+        const std::vector<float> gpu = ocean_test::draw_full_screen<float>(*program, m, m, GL_R32F, GL_RED, GL_FLOAT, 1);
+        double worst = 0;
+        for (std::size_t i = 0; i < gpu.size(); ++i)
+            worst = std::max(worst, std::abs(gpu[i] - own[4 * i] / 255.0));
+        std::printf("streak lines, level %d: texels up to %.2f bytes from the box means of level 0, the level's mean "
+                    "%.2f against level 0's %.2f; read by the renderer, worst |GPU - bytes| %.1e\n",
+                    level, off, mean, level0_mean, worst);
+        EXPECT_LE(off, double(level)) << "level " << level;
+        EXPECT_LE(std::abs(mean - level0_mean), 0.5 * level + 1e-9) << "level " << level;
+        EXPECT_LT(worst, 1e-5) << "level " << level;
+    }
 }
 
 TEST_F(Step06Gpu, FoamStaysInTheWorldWhenTheCameraMoves) {

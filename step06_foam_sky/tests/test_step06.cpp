@@ -476,21 +476,21 @@ TEST(Step06FoamPattern, CoverFollowsTheAmountAndTheLaceNeverCloses) {
         }
     }
 
-    // A streak: no foam between the lines or where a line is broken; three times what it gathered,
-    // at most kStreakMost, on the line. Laid on the cells, the thickest line still shows its
-    // bubbles (its cover is under 1 where the cells' middles are), and none at thickness 0.
+    // A streak: no foam between the lines (the line's cover 0) or where a line is broken; three
+    // times what it gathered, at most kStreakMost, on the line. Laid on the cells, the thickest
+    // line still shows its bubbles (its cover is under 1 where the cells' middles are).
     using step06::streak_thickness;
     for (const double gathered : {0.1, 0.2, 0.5}) {
         const double on_line = std::min(3 * gathered, step06::kStreakMost);
-        EXPECT_NEAR(streak_thickness(gathered, step06::kStreakLineFrom, 1.0), 0.0, 1e-12) << "between the lines";
-        EXPECT_EQ(streak_thickness(gathered, 0.1, 1.0), 0.0);
-        EXPECT_NEAR(streak_thickness(gathered, 1.0, step06::kBreakFrom), 0.0, 1e-12) << "where the line is broken";
-        EXPECT_EQ(streak_thickness(gathered, 1.0, 0.1), 0.0);
-        EXPECT_DOUBLE_EQ(streak_thickness(gathered, step06::kStreakLineTo, step06::kBreakTo), on_line);
-        EXPECT_DOUBLE_EQ(streak_thickness(gathered, 1.0, 1.0), on_line);
+        EXPECT_EQ(step06::streak_line(step06::kStreakLineFrom), 0.0) << "between the lines";
+        EXPECT_EQ(step06::streak_cover(0.0, on_line, 1.0), 0.0) << "between the lines";
+        EXPECT_NEAR(streak_thickness(gathered, step06::kBreakFrom), 0.0, 1e-12) << "where the line is broken";
+        EXPECT_EQ(streak_thickness(gathered, 0.1), 0.0);
+        EXPECT_DOUBLE_EQ(streak_thickness(gathered, step06::kBreakTo), on_line);
+        EXPECT_DOUBLE_EQ(streak_thickness(gathered, 1.0), on_line);
     }
-    EXPECT_LT(step06::streak_cover(step06::kStreakMost, 0.0), 1.0) << "the bubbles show on the thickest line";
-    EXPECT_EQ(step06::streak_cover(0.0, 1.0), 0.0);
+    EXPECT_EQ(step06::streak_line(step06::kStreakLineTo), 1.0);
+    EXPECT_LT(step06::streak_cover(1.0, step06::kStreakMost, 0.0), 1.0) << "the bubbles show on the thickest line";
     // What a line gathers: the foam about it, or what the drift brought from upwind, less the
     // farther it came: exp(-6 / 15) of the foam 6 m upwind, exp(-18 / 15) of the foam 18 m upwind.
     EXPECT_DOUBLE_EQ(step06::streak_gathered(0.4, 0.0, 0.0), 0.4);
@@ -652,47 +652,42 @@ TEST(Step06FoamPattern, FilteredCoverKeepsTheBoxFilteredMean) {
     }
 }
 
-// filtered_streak_thickness with no variance is streak_thickness: three times what the line
-// gathered (at most kStreakMost) times the line's ramp times the breaks' smoothstep, written out
-// here. And over a footprint of many lines, its mean over the image is the true mean of the
-// streak's thickness within 0.03, as net_cover's is (the test above), where the ramp of the
-// block's mean loses more than twice as much. The blocks: square (a mip level) and 2 x 32 texels,
-// what a square on the water is in the lines' frame (the pattern's x along the wind, stretched 60
-// times, y across, 4 times), and 32 x 2, a footprint long along the wind.
-TEST(Step06FoamPattern, FilteredStreakThicknessKeepsTheBoxFilteredMean) {
-    const double width = step06::kStreakLineTo - step06::kStreakLineFrom;
-    for (const double gathered : {0.1, 0.2, 0.5})
-        for (double line = 0; line <= 1.0; line += 0.05)
-            for (double unbroken = 0; unbroken <= 1.0; unbroken += 0.05) {
-                const double t =
-                    std::clamp((unbroken - step06::kBreakFrom) / (step06::kBreakTo - step06::kBreakFrom), 0.0, 1.0);
-                const double ramp = std::clamp((line - step06::kStreakLineFrom) / width, 0.0, 1.0);
-                const double expected = std::min(3 * gathered, step06::kStreakMost) * ramp * t * t * (3 - 2 * t);
-                EXPECT_NEAR(step06::filtered_streak_thickness(gathered, line, 0.0, unbroken), expected, 1e-12);
-                EXPECT_EQ(step06::filtered_streak_thickness(gathered, line, 0.0, unbroken),
-                          step06::streak_thickness(gathered, line, unbroken));
-            }
-
+// The line's cover is read from its own texture (streak_lines_texture: the ramp of the cells'
+// pattern applied texel by texel), and a streak's cover is linear in it, so the mean over any block
+// of texels, what a filter gives a footprint, is exact: the cover of the block's mean line cover is
+// the mean of the texels' covers. The ramp of the pattern's block mean instead (the lace's way,
+// mean_clamp from the mean and variance) loses the thin lines, more the larger the block.
+TEST(Step06FoamPattern, TheLinesCoverIsFilteredExactly) {
     const step06::FoamPatternSettings settings;
     const std::vector<float> cells = step06::foam_pattern(settings);
+    const std::vector<std::uint8_t> lines = step06::streak_lines_texture(settings);
     const int n = settings.size;
-    const double gathered = 0.3;  // the breaks' factor is 1: they multiply, unfiltered
-    const auto streak = [&](double p) { return step06::streak_thickness(gathered, p, 1.0); };
-    const std::pair<int, int> shapes[] = {{8, 8}, {16, 16}, {32, 32}, {2, 32}, {32, 2}};
+    for (std::size_t k = 0; k < cells.size(); ++k)
+        ASSERT_NEAR(lines[4 * k] / 255.0, step06::streak_line(cells[k]), 0.5 / 255 + 1e-9) << "texel " << k;
+    const double thickness = step06::streak_thickness(0.2, 1.0), bubbles = 0.5;
+    const std::pair<int, int> shapes[] = {{8, 8}, {32, 32}, {2, 32}, {32, 2}};
     for (const auto& [w, h] : shapes) {
-        const PatternBlocks b = pattern_blocks(cells, n, w, h, streak);
-        double truth = 0, old = 0, filtered = 0;
-        for (std::size_t i = 0; i < b.means.size(); ++i) {
-            truth += b.true_covers[i];
-            old += streak(b.means[i]);
-            filtered += step06::filtered_streak_thickness(gathered, b.means[i], b.variances[i], 1.0);
-        }
-        const double count = double(b.means.size());
-        truth /= count, old /= count, filtered /= count;
-        std::printf("streaks over %2d x %2d texels: image mean true %.3f, old %.3f, filtered %.3f\n", w, h, truth,
-                    old, filtered);
-        EXPECT_NEAR(filtered, truth, 0.03) << w << " x " << h;
-        EXPECT_GT(std::abs(old - truth), 2 * std::abs(filtered - truth)) << w << " x " << h;
+        double truth = 0, filtered = 0, ramp_of_mean = 0;
+        int blocks = 0;
+        for (int j = 0; j + h <= n; j += h)
+            for (int i = 0; i + w <= n; i += w) {
+                double cover = 0, pattern = 0, sum = 0;
+                for (int y = j; y < j + h; ++y)
+                    for (int x = i; x < i + w; ++x) {
+                        const std::size_t k = std::size_t(y * n + x);
+                        cover += lines[4 * k] / 255.0, pattern += cells[k];
+                        sum += step06::streak_cover(lines[4 * k] / 255.0, thickness, bubbles);
+                    }
+                const double texels = double(w * h);
+                truth += sum / texels;
+                filtered += step06::streak_cover(cover / texels, thickness, bubbles);
+                ramp_of_mean += step06::streak_cover(step06::streak_line(pattern / texels), thickness, bubbles);
+                ++blocks;
+            }
+        truth /= blocks, filtered /= blocks, ramp_of_mean /= blocks;
+        std::printf("streak lines over %2d x %2d texels: mean cover %.4f, filtered %.4f, ramp of the pattern's mean %.4f\n",
+                    w, h, truth, filtered, ramp_of_mean);
+        EXPECT_NEAR(filtered, truth, 1e-9) << w << " x " << h;
     }
 }
 
