@@ -1,6 +1,6 @@
 // The program's boat and stones, as a learner would check them: the boat goes where it is steered,
 // its wake lies behind it (none ahead), the grid keeps up with it, and a stone makes rings around
-// where it fell.
+// where it fell, high enough for the default camera to show.
 #include "step08_wakes/wake_scene.hpp"
 
 #include "common/constants.hpp"
@@ -87,6 +87,56 @@ TEST(Step08WakeScene, AStoneMakesRingsAroundWhereItFell) {
     at_3m = std::max(north, east);
     EXPECT_GT(at_3m, 1e-4) << "the rings reached 2 to 4 m in 2 s";
     EXPECT_NEAR(north / east, 1, 0.02) << "round rings";
+}
+
+// The default stone (a click's) on the program's default grid (128 cells of 0.5 m) shows from the
+// program's default camera: 45 m from the boat, 50 degrees of view over 720 rows, where one pixel
+// spans 2 x 45 tan 25 / 720 = 5.8 cm. A second after it, the heap where it fell and the trough
+// around it span two pixels from top to bottom; two seconds after, the ring beyond 1.5 m spans one.
+// And it stays a wave linear theory can carry: its slopes below 0.44, where a Stokes wave of
+// k A = 0.44 breaks (the steepest, 0.29, is the crater's rim 0.3 s after the splash).
+TEST(Step08WakeScene, TheDefaultStonesRingsShowFromTheDefaultCamera) {
+    step08::WakeScene scene(step08::WaveFieldSettings{});
+    step08::BoatSettings still;  // a boat at rest that does not touch the water: only the stone
+    still.speed = 0;
+    still.draft = 0;
+    scene.sail(0.1, still, 0);
+    const glm::dvec2 stone = scene.field().cell_centre(64, 64);
+    scene.drop_stone(stone);
+    const double pixel = 2 * 45 * std::tan(25 * ocean::kPi / 180) / 720;
+    const step08::WaveField& f = scene.field();
+    // The span (highest minus lowest) of the cells `from` to `to` metres from the stone.
+    const auto span = [&](double from, double to) {
+        double high = 0, low = 0;
+        for (int j = 0; j < f.n(); ++j)
+            for (int i = 0; i < f.n(); ++i) {
+                const double r = glm::length(f.cell_centre(i, j) - stone), h = f.heights()[std::size_t(j * f.n() + i)];
+                if (r >= from && r <= to) high = std::max(high, h), low = std::min(low, h);
+            }
+        return high - low;
+    };
+    double steepest = 0;
+    for (int frame = 1; frame <= 180; ++frame) {  // 3 s
+        scene.sail(1.0 / 60, still, 0);
+        const int n = f.n();
+        for (int j = 1; j + 1 < n; ++j)
+            for (int i = 1; i + 1 < n; ++i) {
+                const auto h = [&](int a, int b) { return f.heights()[std::size_t(b * n + a)]; };
+                const double cell = f.settings().cell;
+                steepest = std::max(steepest, std::hypot(h(i + 1, j) - h(i - 1, j), h(i, j + 1) - h(i, j - 1)) / (2 * cell));
+            }
+        if (frame == 60) {
+            std::cout << "1 s after the stone, within 3 m: " << span(0, 3) << " m crest to trough (a pixel: " << pixel
+                      << " m)" << std::endl;
+            EXPECT_GT(span(0, 3), 2 * pixel) << "the splash's heap and trough, 1 s on";
+        }
+        if (frame == 120) {
+            std::cout << "2 s after the stone, 1.5 to 4 m out: " << span(1.5, 4) << " m crest to trough" << std::endl;
+            EXPECT_GT(span(1.5, 4), pixel) << "the ring, 2 s on";
+        }
+    }
+    std::cout << "the steepest slope over 3 s: " << steepest << std::endl;
+    EXPECT_LT(steepest, 0.44) << "steeper than a wave can stand";
 }
 
 }  // namespace
