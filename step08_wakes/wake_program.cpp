@@ -48,8 +48,8 @@ WakeProgram::WakeProgram(ocean::StepInfo info, std::unique_ptr<BodiesAndField> b
         p.add_choice("cells", &cells_choice_, {"64", "128", "256"}, "the wave field's cells a side");
         p.add_float("cell", &cell_, 0.1f, 2, "the wave field's cell, metres");
         p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat has sailed before the first frame");
-        p.add_float("stone_impulse", &stone_impulse_, 0.01f, 3,
-                    "a clicked stone's impulse, its momentum over the water's density, m^4/s (1: a 100 kg boulder at 10 m/s)")
+        p.add_float("stone_impulse", &stone_impulse_, 0.01f, 4,
+                    "a clicked stone's impulse, its momentum over the water's density, m^4/s (2: a 200 kg boulder at 10 m/s)")
             .logarithmic();
         follow_.declare(p);
         p.add_bool("show_wake", &show_wake_, "the wake added to the sea (off: step07's sea, which no body disturbs)");

@@ -20,12 +20,13 @@ struct BoatSettings {
 };
 
 // A stone, as a click drops it: an impulse (the integral of p / rho over the splash's time and
-// area, m^4/s: its momentum over the water's density) spread as a Gaussian of kStoneRadius. The
-// default is a 100 kg boulder falling 5 m, at 10 m/s: 1000 kg m/s over 1000 kg/m^3. On the
-// default grid (0.5 m cells, no wave shorter than 1 m) it lifts a 12 cm heap a second later and
-// sends out rings a few centimetres high, which the default camera shows (how_we_know.md); the
-// splash's radius, a cell, keeps their steepest slope near 0.17, well inside linear theory.
-inline constexpr double kStoneImpulse = 1;   // m^4/s
+// area, m^4/s: its momentum over the water's density) spread as a Gaussian of kStoneRadius, one
+// cell of the default grid (a narrower splash would be waves shorter than the grid holds). The
+// default is a 200 kg boulder at 10 m/s (dropped from 5 m): 2000 kg m/s over 1000 kg/m^3, the
+// smallest that the default camera shows in step06's breeze: its splash is steeper than a wave
+// can stand, and foams, within the first second, and its rings are linear waves a few
+// centimetres high (how_we_know.md).
+inline constexpr double kStoneImpulse = 2;   // m^4/s
 inline constexpr double kStoneRadius = 0.5;  // m
 
 // Where the patch's pressure is: p / rho = g draft exp(-(a^2 / (2 (L/4)^2) + b^2 / (2 (B/4)^2)))

@@ -282,7 +282,7 @@ case "$case_name" in
       case "$line" in *"not made yet"*) sleep 1 ;; *) break ;; esac  # the field waits for the first sea
     done
     echo "$line"
-    echo "$line" | grep -qE "^stone: dropped at \([-0-9.]+, [-0-9.]+\) m, 1 m\^4/s$" ||
+    echo "$line" | grep -qE "^stone: dropped at \([-0-9.]+, [-0-9.]+\) m, 2 m\^4/s$" ||
       fail "a left click on the sea in front of the camera dropped no stone"
     within_one_frame xdotool mousemove --window "$window" 420 40 click 1
     line=$(nth_line "^stone: " $((clicks + 1)) "$frame_wait") && echo "$line" | grep -q "outside the wave field" ||
