@@ -189,7 +189,7 @@ void WakeProgram::drop_stone(glm::dvec2 at) {
         return;
     }
     if (!wake->field().covers(at)) {
-        std::cout << "stone: " << point_text(at) << " is outside the wave field (the " << wake->field().side()
+        std::cout << "stone: " << point_text(at) << " m is outside the wave field (the " << wake->field().side()
                   << " m square around the boat); not dropped" << std::endl;
         return;
     }

@@ -23,7 +23,7 @@ struct BoatSettings {
 // area, m^4/s: its momentum over the water's density) spread as a Gaussian of kStoneRadius, one
 // cell of the default grid (a narrower splash would be waves shorter than the grid holds). The
 // default is a 200 kg boulder at 10 m/s (dropped from 5 m): 2000 kg m/s over 1000 kg/m^3, the
-// smallest that the default camera shows in step06's breeze: its splash is steeper than a wave
+// smallest that the default camera shows in the program's 6 m/s breeze: its splash is steeper than a wave
 // can stand, and foams, within the first second, and its rings are linear waves a few
 // centimetres high (how_we_know.md).
 inline constexpr double kStoneImpulse = 2;   // m^4/s

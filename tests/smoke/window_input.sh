@@ -272,8 +272,8 @@ case "$case_name" in
     ;;
   stone)
     # The default camera looks down 22 degrees, its field of view 50 degrees high: in a 640x360
-    # window the horizon is at row 24. Row 200 is sea about 60 m from the camera, near the boat;
-    # row 40 is sea about 700 m out, far beyond the field; row 5 is sky.
+    # window the horizon is at row 24. Row 200 is sea about 36 m from the camera, a few metres
+    # short of the boat (42 m); row 40 is sea about 470 m out, far beyond the field; row 5 is sky.
     clicks=0
     for _ in $(seq 1 60); do
       within_one_frame xdotool mousemove --window "$window" 420 200 click 1
