@@ -94,7 +94,7 @@ void BoatAndWake::sail(const SailFrame& frame) {
         return;
     }
     bodies_and_field_->step_field(field_frame, [&](const FieldStep& step) { press(*wake_, boat, dt, step); });
-    for (const glm::dvec2& stone : frame.stones) wake_->drop_stone(stone);
+    for (const glm::dvec2& stone : frame.stones) wake_->drop_stone(stone, frame.stone_impulse);
     wake_before_ = std::move(wake_now_);
     wake_now_ = bodies_and_field_->drawn_wake(field_frame);
     const SeaWithWake before(feed.before(), wake_before_), now(feed.now(), wake_now_);

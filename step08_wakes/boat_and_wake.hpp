@@ -33,6 +33,7 @@ struct SailFrame {
     step07::Arrows arrows;        // and the arrows held
     const std::vector<glm::dvec2>& stones;  // dropped this frame (x, z)
     bool show_wake = true;  // false: step07's sea, the field waiting where the boat is
+    double stone_impulse = kStoneImpulse;  // each stone's, m^4/s (wake_scene.hpp)
 };
 
 class BoatAndWake {
@@ -57,6 +58,7 @@ public:
     // The wake for the sea to draw after the last sail(), or none when the wake is off.
     const step06::ExtraWaves* drawn_wake() const { return drawing_ ? &extra_waves_ : nullptr; }
     const std::vector<step07::FloatingBody>& bodies() const { return bodies_; }
+    const WakeScene* wake() const { return wake_.get(); }  // none before launch()
     double wake_ms() const { return wake_ms_; }  // the last sail()'s, on the CPU
 
     // --bench: the CPU milliseconds of 15 frames of 1/60 s, each the boat going straight on and

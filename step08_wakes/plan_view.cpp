@@ -33,12 +33,8 @@ void PlanView::update(double dt, const WaveFieldSettings& field, double boat_len
     scene_->sail(dt, boat_, double(rudder_) + extra_rudder);
 }
 
-void PlanView::drop_stone(glm::dvec2 at) {
-    if (scene_) scene_->drop_stone(at);
-}
-
-void PlanView::drop_stone_ahead() {
-    if (scene_) scene_->drop_stone(scene_->boat_position() + 10.0 * scene_->boat_heading());
+void PlanView::drop_stone(glm::dvec2 at, double impulse) {
+    if (scene_) scene_->drop_stone(at, impulse);
 }
 
 glm::dvec2 PlanView::view_centre() const {

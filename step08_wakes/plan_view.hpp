@@ -28,9 +28,8 @@ public:
     // A new scene when the field's settings change (sailing `warm_up` seconds first, so the view
     // opens on a wake), then `dt` seconds of sailing, the rudder plus `extra_rudder` (the arrows).
     void update(double dt, const WaveFieldSettings& field, double boat_length, double warm_up, double extra_rudder);
-    // A stone at the world point (x, z).
-    void drop_stone(glm::dvec2 at);
-    void drop_stone_ahead();
+    // A stone of `impulse` m^4/s at the world point (x, z) (outside the grid it pushes on nothing).
+    void drop_stone(glm::dvec2 at, double impulse);
 
     // The view, `aspect` wide for 1 high, into the bound framebuffer.
     void draw(float aspect, int pixels_high, GLuint fullscreen_vao);

@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <limits>
+#include <string>
 
 namespace step08 {
 namespace {
@@ -17,6 +19,13 @@ namespace {
 // A moderate breeze (Beaufort 4): waves a metre high, a few whitecaps, and a wake that shows in
 // them. step06's near gale would hide it.
 constexpr double kBreeze = 6;
+
+// A point on the water (x, z) as the stone lines print it: "(12.3, -4.5)".
+std::string point_text(glm::dvec2 at) {
+    char text[64];
+    std::snprintf(text, sizeof text, "(%.1f, %.1f)", at.x, at.y);
+    return text;
+}
 
 }  // namespace
 
@@ -39,6 +48,9 @@ WakeProgram::WakeProgram(ocean::StepInfo info, std::unique_ptr<BodiesAndField> b
         p.add_choice("cells", &cells_choice_, {"64", "128", "256"}, "the wave field's cells a side");
         p.add_float("cell", &cell_, 0.1f, 2, "the wave field's cell, metres");
         p.add_float("warm_up", &warm_up_, 0, 120, "seconds the boat has sailed before the first frame");
+        p.add_float("stone_impulse", &stone_impulse_, 0.01f, 4,
+                    "a clicked stone's impulse, its momentum over the water's density, m^4/s (2: a 200 kg boulder at 10 m/s)")
+            .logarithmic();
         follow_.declare(p);
         p.add_bool("show_wake", &show_wake_, "the wake added to the sea (off: step07's sea, which no body disturbs)");
         boat_and_wake_.declare(p);
@@ -73,7 +85,7 @@ void WakeProgram::update(double time, double dt) {
     read_input();
     if (plan_) {
         plan_view_.update(dt, field_settings(), body_params_.boat_length, warm_up_, arrows_.rudder);
-        for (const glm::dvec2& stone : stones_) plan_view_.drop_stone(stone);
+        for (const glm::dvec2& stone : stones_) plan_view_.drop_stone(stone, double(stone_impulse_));
         stones_.clear();
         return;
     }
@@ -90,7 +102,8 @@ void WakeProgram::update(double time, double dt) {
 // the wake given to the sea to draw.
 void WakeProgram::sail(double dt) {
     const glm::dvec3 boat_before = boat_and_wake_.bodies()[step07::kBoat].position();
-    boat_and_wake_.sail({feed_, time(), dt, scene_.sea().choppiness(), steering_, arrows_, stones_, show_wake_});
+    boat_and_wake_.sail({feed_, time(), dt, scene_.sea().choppiness(), steering_, arrows_, stones_, show_wake_,
+                         double(stone_impulse_)});
     stones_.clear();
     const glm::dvec3 boat = boat_and_wake_.bodies()[step07::kBoat].position();
     follow_.follow(camera(), boat_before, boat);
@@ -141,7 +154,9 @@ ocean::App::BenchFigures WakeProgram::bench_figures() {
     return figures;
 }
 
-// The arrows (held) steer the boat; a left click drops a stone where the cursor meets the sea.
+// The arrows (held) steer the boat; a left click drops a stone where the cursor meets the sea. Each
+// click says on stdout what became of it: a stone too small to see, or a click beside the field,
+// would otherwise look like a click that did nothing.
 void WakeProgram::read_input() {
     arrows_ = step07::held_arrows();
     const bool on_the_panel = ImGui::GetIO().WantCaptureMouse;
@@ -153,14 +168,37 @@ void WakeProgram::drop_stone_at(glm::dvec2 cursor) {
     const glm::dvec2 window(ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);
     if (window.x <= 0 || window.y <= 0) return;
     if (plan_) {
-        stones_.push_back(plan_view_.to_world({cursor.x / window.x, 1 - cursor.y / window.y}, aspect()));
+        drop_stone(plan_view_.to_world({cursor.x / window.x, 1 - cursor.y / window.y}, aspect()));
         return;
     }
     // The cursor's ray (common/camera.hpp), to where it meets the mean level (y = 0).
     const auto ray = ocean::cursor_ray(camera(), aspect(), scene_.sea().world_origin(), cursor, window);
-    if (!ray || !(ray->direction.y < 0)) return;  // above the horizon: no sea there
+    if (!ray || !(ray->direction.y < 0)) {
+        std::cout << "stone: the click is above the horizon, on the sky; not dropped" << std::endl;
+        return;
+    }
     const glm::dvec3 hit = ray->from - (ray->from.y / ray->direction.y) * ray->direction;
-    stones_.push_back({hit.x, hit.z});
+    drop_stone({hit.x, hit.z});
+}
+
+// A stone at `at` (x, z) for this frame's step, if the wave field is there to take it.
+void WakeProgram::drop_stone(glm::dvec2 at) {
+    const WakeScene* wake = plan_ ? plan_view_.scene() : boat_and_wake_.wake();
+    if (wake == nullptr) {
+        std::cout << "stone: the wave field is not made yet (it waits for the first sea); not dropped" << std::endl;
+        return;
+    }
+    if (!wake->field().covers(at)) {
+        std::cout << "stone: " << point_text(at) << " m is outside the wave field (the " << wake->field().side()
+                  << " m square around the boat); not dropped" << std::endl;
+        return;
+    }
+    if (!plan_ && !show_wake_) {
+        std::cout << "stone: the wake is off (show_wake=false); not dropped" << std::endl;
+        return;
+    }
+    stones_.push_back(at);
+    std::cout << "stone: dropped at " << point_text(at) << " m, " << stone_impulse_ << " m^4/s" << std::endl;
 }
 
 void WakeProgram::render() {
@@ -194,7 +232,8 @@ void WakeProgram::ui() {
                        froude, step08::transverse_wavelength(speed));
     ImGui::TextWrapped("%s", froude < 0.5 ? "a Kelvin wake: its edge at 19.5 degrees"
                                           : "fast: the largest waves at a narrower angle, about 1 / Fr");
-    if (plan_ && ImGui::Button("drop a stone ahead")) plan_view_.drop_stone_ahead();
+    if (plan_ && plan_view_.scene() != nullptr && ImGui::Button("drop a stone ahead"))
+        drop_stone(plan_view_.scene()->boat_position() + 10.0 * plan_view_.scene()->boat_heading());
 }
 
 }  // namespace step08

@@ -48,6 +48,7 @@ private:
     BenchFigures bench_figures();
     void read_input();
     void drop_stone_at(glm::dvec2 cursor);
+    void drop_stone(glm::dvec2 at);
 
     const WakeProgramOptions options_;
     step06::SeaScene scene_;  // step06's frame
@@ -62,9 +63,10 @@ private:
     step07::FollowCamera follow_{true};  // the camera kept on the boat, under way from the start
     bool plan_ = false, show_wake_ = true;
     float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;
+    float stone_impulse_ = float(kStoneImpulse);  // m^4/s
     int cells_choice_ = 1;
     step07::Arrows arrows_;           // held this frame
-    std::vector<glm::dvec2> stones_;  // clicked, for the next frame
+    std::vector<glm::dvec2> stones_;  // clicked on the field, for this frame's step
 };
 
 }  // namespace step08

@@ -19,6 +19,16 @@ struct BoatSettings {
     double turn_rate = 20;  // degrees a second with the rudder hard over
 };
 
+// A stone, as a click drops it: an impulse (the integral of p / rho over the splash's time and
+// area, m^4/s: its momentum over the water's density) spread as a Gaussian of kStoneRadius, one
+// cell of the default grid (a narrower splash would be waves shorter than the grid holds). The
+// default is a 200 kg boulder at 10 m/s (dropped from 5 m): 2000 kg m/s over 1000 kg/m^3, the
+// smallest that the default camera shows in the program's 6 m/s breeze: its splash is steeper than a wave
+// can stand, and foams, within the first second, and its rings are linear waves a few
+// centimetres high (how_we_know.md).
+inline constexpr double kStoneImpulse = 2;   // m^4/s
+inline constexpr double kStoneRadius = 0.5;  // m
+
 // Where the patch's pressure is: p / rho = g draft exp(-(a^2 / (2 (L/4)^2) + b^2 / (2 (B/4)^2)))
 // at a metres along the hull from its middle and b across, so 86 % of it lies within the waterline
 // (L long, B = L / 3 wide).
@@ -55,8 +65,8 @@ public:
     void press(double seconds, glm::dvec2 to, glm::dvec2 heading, const BoatSettings& hull,
                const FieldStep& step = {});
     // A stone's splash at `at` (x, z): an impulse of `impulse` m^4/s (its momentum over the
-    // water's density) spread over `radius` metres.
-    void drop_stone(glm::dvec2 at, double impulse = 0.02, double radius = 0.3);
+    // water's density) spread over `radius` metres. Outside the grid it pushes on nothing.
+    void drop_stone(glm::dvec2 at, double impulse = kStoneImpulse, double radius = kStoneRadius);
 
     const WaveField& field() const { return field_; }
     WaveField& field() { return field_; }  // for a program that sets parts of it (a calm patch)

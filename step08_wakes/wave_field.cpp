@@ -178,6 +178,11 @@ bool WaveField::bilinear_taps(glm::dvec2 at, Taps& taps) const {
     return true;
 }
 
+bool WaveField::covers(glm::dvec2 at) const {
+    Taps taps;
+    return bilinear_taps(at, taps);
+}
+
 double WaveField::height_at(glm::dvec2 at) const {
     Taps taps;
     if (!bilinear_taps(at, taps)) return 0;

@@ -74,6 +74,8 @@ public:
 
     // Cell (i, j)'s centre in the world (x, z); i along x, j along z.
     glm::dvec2 cell_centre(int i, int j) const;
+    // Whether a world point (x, z) lies within the grid (between its outermost cell centres).
+    bool covers(glm::dvec2 at) const;
     // The height at a world point, bilinear between cell centres; 0 outside the grid.
     double height_at(glm::dvec2 at) const;
     // The four cells around a world point (x, z) and their bilinear weights, as height_at reads

@@ -1,6 +1,7 @@
 // The program's boat and stones, as a learner would check them: the boat goes where it is steered,
 // its wake lies behind it (none ahead), the grid keeps up with it, and a stone makes rings around
-// where it fell.
+// where it fell, high enough for the default camera to show.
+#include "step08_wakes/wake_maps.hpp"
 #include "step08_wakes/wake_scene.hpp"
 
 #include "common/constants.hpp"
@@ -87,6 +88,69 @@ TEST(Step08WakeScene, AStoneMakesRingsAroundWhereItFell) {
     at_3m = std::max(north, east);
     EXPECT_GT(at_3m, 1e-4) << "the rings reached 2 to 4 m in 2 s";
     EXPECT_NEAR(north / east, 1, 0.02) << "round rings";
+}
+
+// The default stone (a click's) on the program's default grid (128 cells of 0.5 m) shows from the
+// program's default camera: 45 m from the boat, 50 degrees of view over 720 rows, where one pixel
+// spans 2 x 45 tan 25 / 720 = 5.8 cm. Screenshots of step06's breeze 1 s after a click
+// (how_we_know.md) showed a splash of 3 pixels from crest to trough (a 1 m^4/s stone) hardly, and
+// one of 6 plainly, foaming: so, a second on, the heap where it fell and the trough around it span
+// 4 pixels, and within that second the splash's own Jacobian (at the sea's default choppiness,
+// 1.3) falls below step06's foam threshold, 0.64, so that it foams on any sea. Two seconds on, the
+// ring beyond 1.5 m spans 2 pixels; from then on, 1.5 m and more from the splash, the rings are
+// linear waves, their slopes below 0.44, the k A at which a Stokes wave breaks.
+TEST(Step08WakeScene, TheDefaultStonesRingsShowFromTheDefaultCamera) {
+    step08::WakeScene scene(step08::WaveFieldSettings{});
+    step08::BoatSettings still;  // a boat at rest that does not touch the water: only the stone
+    still.speed = 0;
+    still.draft = 0;
+    scene.sail(0.1, still, 0);
+    const glm::dvec2 stone = scene.field().cell_centre(64, 64);
+    scene.drop_stone(stone);
+    const double pixel = 2 * 45 * std::tan(25 * ocean::kPi / 180) / 720;
+    const step08::WaveField& f = scene.field();
+    const int n = f.n();
+    const auto height = [&](int i, int j) { return f.heights()[std::size_t(j * n + i)]; };
+    const auto distance = [&](int i, int j) { return glm::length(f.cell_centre(i, j) - stone); };
+    // The span (highest minus lowest) of the cells `from` to `to` metres from the stone.
+    const auto span = [&](double from, double to) {
+        double high = 0, low = 0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                if (distance(i, j) >= from && distance(i, j) <= to)
+                    high = std::max(high, height(i, j)), low = std::min(low, height(i, j));
+        return high - low;
+    };
+    double lowest_jacobian = 1, steepest_ring = 0;
+    for (int frame = 1; frame <= 180; ++frame) {  // 3 s
+        scene.sail(1.0 / 60, still, 0);
+        if (frame <= 60) {
+            const step06::ExtraWaveMaps maps = step08::wake_maps(f, 1.3);
+            for (std::size_t c = 0; c < maps.slopes.size() / 4; ++c) {
+                const double dxx = maps.slopes[4 * c + 2], dzz = maps.slopes[4 * c + 3], dxz = maps.displacement[4 * c + 3];
+                lowest_jacobian = std::min(lowest_jacobian, (1 + dxx) * (1 + dzz) - dxz * dxz);
+            }
+        }
+        if (frame == 60) {
+            std::cout << "1 s after the stone, within 3 m: " << span(0, 3) << " m crest to trough (a pixel: " << pixel
+                      << " m); the lowest Jacobian so far " << lowest_jacobian << std::endl;
+            EXPECT_GT(span(0, 3), 4 * pixel) << "the splash's heap and trough, 1 s on";
+            EXPECT_LT(lowest_jacobian, 0.64) << "the splash foams within a second";
+        }
+        if (frame == 120) {
+            std::cout << "2 s after the stone, 1.5 to 4 m out: " << span(1.5, 4) << " m crest to trough" << std::endl;
+            EXPECT_GT(span(1.5, 4), 2 * pixel) << "the ring, 2 s on";
+        }
+        if (frame >= 60)
+            for (int j = 1; j + 1 < n; ++j)
+                for (int i = 1; i + 1 < n; ++i)
+                    if (distance(i, j) >= 1.5)
+                        steepest_ring = std::max(steepest_ring, std::hypot(height(i + 1, j) - height(i - 1, j),
+                                                                           height(i, j + 1) - height(i, j - 1)) /
+                                                                    (2 * f.settings().cell));
+    }
+    std::cout << "the rings' steepest slope 1.5 m out or more, 1 to 3 s on: " << steepest_ring << std::endl;
+    EXPECT_LT(steepest_ring, 0.44) << "the rings steeper than a wave can stand";
 }
 
 }  // namespace

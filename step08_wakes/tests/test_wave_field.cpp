@@ -2,6 +2,7 @@
 // the conservation of energy, Cauchy and Poisson's ring waves, Kelvin's angle and Rabaud and
 // Moisy's narrower wakes, and an absorbing layer that sends back almost nothing.
 #include "step08_wakes/wake_experiments.hpp"
+#include "step08_wakes/wake_scene.hpp"
 #include "step08_wakes/wave_field.hpp"
 
 #include "common/constants.hpp"
@@ -178,6 +179,46 @@ TEST(Step08WaveField, RingWavesHaveTheLocalWavenumberOfStationaryPhase) {
         if (c > 0) {
             EXPECT_GT(r2 - r1, crests[c] - crests[c - 1]) << "the leading waves are the longest";
         }
+    }
+}
+
+// Cauchy and Poisson's rings in height, not only in spacing: an impulse I spread as a Gaussian of
+// radius a on deep water at rest has, in linear theory, the height
+//     eta(r, t) = -(I / 2 pi) integral over k of k^2 / omega sin(omega t) exp(-k^2 a^2 / 2) J0(k r) dk
+// (each mode's potential starts at -I exp(-k^2 a^2 / 2), its height turns up as K phi sin(omega t) / omega,
+// omega = sqrt(g k); J0 sums the modes of one wavenumber over every direction). The program's default
+// stone on the program's default grid (128 cells of 0.5 m), against the integral along a ray.
+double ring_height(double impulse, double radius, double r, double t) {
+    const double k_end = 12 / radius, dk = k_end / 6000;  // the Gaussian is exp(-72) there
+    double sum = 0;
+    for (double k = 0.5 * dk; k < k_end; k += dk) {
+        const double omega = std::sqrt(g * k);
+        sum += k * k / omega * std::sin(omega * t) * std::exp(-0.5 * k * k * radius * radius) * std::cyl_bessel_j(0.0, k * r);
+    }
+    return -impulse / ocean::kTwoPi * sum * dk;
+}
+
+TEST(Step08WaveField, TheDefaultStonesRingsRiseAsCauchyAndPoissonsIntegral) {
+    step08::WaveField field(step08::WaveFieldSettings{});
+    const glm::dvec2 stone = field.cell_centre(64, 64);
+    field.add_impulse(stone, step08::kStoneImpulse, step08::kStoneRadius);
+    double t = 0;
+    for (double until : {1.0, 2.0, 3.0}) {
+        for (; t < until - 1e-9; t += 1.0 / 60) field.step(1.0 / 60);
+        double worst = 0, largest = 0;
+        // At cell centres (bilinear reading between them would blur 2 m waves), along x and along
+        // the diagonal: the rings are round on the square grid. Out to 6 m.
+        for (int m = 0; m <= 12; ++m)
+            for (int diagonal = 0; diagonal < 2; ++diagonal) {
+                const int i = 64 + m, j = 64 + diagonal * m;
+                const double r = glm::length(field.cell_centre(i, j) - stone);
+                const double expected = ring_height(step08::kStoneImpulse, step08::kStoneRadius, r, until);
+                worst = std::max(worst, std::abs(field.heights()[std::size_t(j * field.n() + i)] - expected));
+                largest = std::max(largest, std::abs(expected));
+            }
+        std::cout << until << " s after the default stone: largest height " << largest << " m, the field off by "
+                  << worst << " m at most" << std::endl;
+        EXPECT_LT(worst, 0.05 * largest) << until << " s after the stone";
     }
 }
 

@@ -1,10 +1,11 @@
 # window_input: a step's real window driven by xdotool on Xvfb (tests/smoke/window_input.sh): key
 # taps shorter than a frame act (F1 toggles the panel on every tap, Esc quits), a drag turns the
 # camera from where the button went down, step01's mouse pans and zooms its plot, step07's arrows
-# leave F1 working and a right click pushes the raft, step01's Next button hands over to step02
-# with both steps' lines in a log file, step04's --split names both variants, a drag within one
-# frame prints its line of flags (step01's plot:, step04's camera:), Next from a paused step01
-# starts step02 paused. Skipped (77) without
+# leave F1 working and a right click pushes the raft, step08's left click drops a stone on the sea
+# and says why it drops none on the sky or beyond the wave field, step01's Next button hands over
+# to step02 with both steps' lines in a log file, step04's --split names both variants, a drag
+# within one frame prints its line of flags (step01's plot:, step04's camera:), Next from a paused
+# step01 starts step02 paused. Skipped (77) without
 # xvfb-run or xdotool.
 set(_window_input "${CMAKE_CURRENT_SOURCE_DIR}/smoke/window_input.sh")
 # Every chapter's keys (step07's through steer_push, which taps them too), then what users do most.
@@ -16,7 +17,8 @@ foreach(_step IN LISTS OCEAN_STEPS)
 endforeach()
 foreach(_case IN LISTS _cases ITEMS "step07_buoyancy;steer_push" "step04_fbm;drag" "step01_sine2d;plot"
                                     "step01_sine2d;next" "step04_fbm;split"
-                                    "step01_sine2d;quick_drag" "step04_fbm;quick_drag" "step01_sine2d;next_paused")
+                                    "step01_sine2d;quick_drag" "step04_fbm;quick_drag" "step01_sine2d;next_paused"
+                                    "step08_wakes;stone")
   list(GET _case 0 _step)
   list(GET _case 1 _kind)
   set(_flags)

@@ -25,6 +25,10 @@
 #          follows (step01's "plot:", a 3D step's "camera:"), as after a drag over several frames.
 #   next_paused  (step01, --paused) next, from a paused step01: step02 starts with --paused (its
 #          command line, /proc/PID/cmdline: the exec keeps the pid), so its clock stays where it was.
+#   stone  (step08) a left click on the sea in front of the camera (the picture's middle, right of
+#          the panel), within one frame, drops a stone there: its "stone: dropped at" line (clicked
+#          again while the wave field waits for the first sea); a click near the horizon, on sea
+#          far beyond the field's 64 m, and one on the sky each say so and drop nothing; Esc quits.
 #   split  (step04, --split) the split view's line names both variants ("left sine | right
 #          exp(sin - 1)"), before F1 tapped within one frame hides the panel; Esc quits with 0.
 # What reaches the step within one frame must show within FRAME_WAIT_S seconds (default 10; 30
@@ -73,6 +77,14 @@ fail() {
 wait_for() {
   for _ in $(seq 1 $(($2 * 10))); do
     grep -E -- "$1" "$out/log" && return 0
+    sleep 0.1
+  done
+  return 1
+}
+# Waits up to $3 seconds for the $2-th log line matching $1 (grep -E); prints it.
+nth_line() {
+  for _ in $(seq 1 $(($3 * 10))); do
+    [ "$(grep -c -E -- "$1" "$out/log")" -ge "$2" ] && grep -E -- "$1" "$out/log" | sed -n "$2p" && return 0
     sleep 0.1
   done
   return 1
@@ -276,6 +288,31 @@ case "$case_name" in
     [ "$first" -lt "$second" ] || fail "step01's line (line $first) is not before step02's (line $second)"
     [ "$second" -lt "$(line_of "^panel: hidden")" ] || fail "the panel line is not step02's"
     echo "ok: Next handed over to step02 in a 640x360 window, both steps' lines in the log, Esc quit"
+    ;;
+  stone)
+    # The default camera looks down 22 degrees, its field of view 50 degrees high: in a 640x360
+    # window the horizon is at row 24. Row 200 is sea about 36 m from the camera, a few metres
+    # short of the boat (42 m); row 40 is sea about 470 m out, far beyond the field; row 5 is sky.
+    clicks=0
+    for _ in $(seq 1 60); do
+      within_one_frame xdotool mousemove --window "$window" 420 200 click 1
+      clicks=$((clicks + 1))
+      line=$(nth_line "^stone: " "$clicks" "$frame_wait") || fail "a left click on the sea said nothing (no stone line)"
+      case "$line" in *"not made yet"*) sleep 1 ;; *) break ;; esac  # the field waits for the first sea
+    done
+    echo "$line"
+    echo "$line" | grep -qE "^stone: dropped at \([-0-9.]+, [-0-9.]+\) m, 2 m\^4/s$" ||
+      fail "a left click on the sea in front of the camera dropped no stone"
+    within_one_frame xdotool mousemove --window "$window" 420 40 click 1
+    line=$(nth_line "^stone: " $((clicks + 1)) "$frame_wait") && echo "$line" | grep -q "outside the wave field" ||
+      fail "a click on the sea far beyond the field did not say it was outside the field"
+    echo "$line"
+    within_one_frame xdotool mousemove --window "$window" 420 5 click 1
+    line=$(nth_line "^stone: " $((clicks + 2)) "$frame_wait") && echo "$line" | grep -q "on the sky" || fail "a click on the sky did not say it missed the sea"
+    echo "$line"
+    [ "$(grep -c '^stone: dropped' "$out/log")" -eq 1 ] || fail "a click off the field dropped a stone"
+    quit_with_esc
+    echo "ok: a click on the sea dropped a stone, clicks beyond the field and on the sky said why they did not"
     ;;
   split)
     within_one_frame xdotool key F1
