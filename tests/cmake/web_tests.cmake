@@ -32,3 +32,9 @@ add_test(NAME step02_sine3d.web.address_sets_a_parameter
           --query=amplitude=2.5)
 set_tests_properties(step02_sine3d.web.address_sets_a_parameter PROPERTIES LABELS "web;step02_sine3d" TIMEOUT 240
                      SKIP_RETURN_CODE 77)
+# The lessons as the index leads to them: each chapter's README, and every page of the site a link
+# leads to from there, an HTML page (web/render_lessons.mjs) whose pictures load and whose links
+# answer, served by web/serve.py as ./ocean web serves them (tests/web/lessons.js).
+add_test(NAME web.lessons_from_the_index
+  COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/web/lessons.sh" "${PROJECT_SOURCE_DIR}" "${OCEAN_WEB_SITE}")
+set_tests_properties(web.lessons_from_the_index PROPERTIES LABELS "web" TIMEOUT 120 SKIP_RETURN_CODE 77)
