@@ -4,12 +4,12 @@
 #   ./ocean web [--port N] [--no-serve]
 #
 # Installs what the browser build needs (Debian's emscripten and chromium; from npm, playwright-core
-# for the browser tests and marked for the lessons' pages), fetches Dear ImGui 1.86's sources from Debian's archive (checked by
-# their hash: the native build links the same version), builds every chapter to WebAssembly in
-# build/web/site (cmake/Web.cmake: the portable profile, without compute shaders), renders the lessons
-# as HTML pages (web/render_lessons.mjs, in build/web/site/lessons), writes the index page
-# (web/make_index.py) and serves it on http://127.0.0.1:PORT/ (web/serve.py; default 8080) until
-# Ctrl-C. --no-serve stops after the build (CI: the tests in tests/web drive the pages then).
+# for the browser tests and marked for the lessons' pages), fetches Dear ImGui 1.86's sources from
+# Debian's archive (checked by their hash: the native build links the same version), builds every
+# chapter to WebAssembly in build/web/site (cmake/Web.cmake: the portable profile, without compute
+# shaders), renders the lessons as HTML pages (web/render_lessons.mjs, in build/web/site/lessons),
+# writes the index page (web/make_index.py) and serves it on http://127.0.0.1:PORT/ (web/serve.py;
+# default 8080) until Ctrl-C. --no-serve stops after the build (CI: the tests in tests/web drive the pages then).
 
 WEB_PACKAGES=(emscripten chromium python3 curl)
 WEB_DIR=build/web

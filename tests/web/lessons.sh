@@ -11,6 +11,7 @@ missing() {
   echo "skipped: $1 (./ocean web builds the pages and installs what drives them)"; exit 77
 }
 [ -f "$site/index.html" ] || missing "no index page in $site"
+[ -d "$site/lessons" ] || missing "no lessons' pages in $site/lessons (./ocean web renders them where npm installed marked)"
 modules=$(cd "$site/.." 2> /dev/null && pwd)/node_modules
 [ -d "$modules/playwright-core" ] || missing "no playwright-core in $modules"
 [ -x /usr/bin/chromium ] && command -v node > /dev/null || missing "no /usr/bin/chromium or no node"
