@@ -54,7 +54,13 @@ function want(relative) {
 function siteHref(from, href) {
   if (/^([a-z]+:|#)/i.test(href)) return href;  // a web address or a place on the same page
   const [target, fragment] = href.split('#', 2);
-  let file = path.resolve(repo, path.dirname(from), decodeURIComponent(target));
+  let decoded;
+  try {
+    decoded = decodeURIComponent(target);
+  } catch {  // a stray % in the address
+    return null;
+  }
+  let file = path.resolve(repo, path.dirname(from), decoded);
   if (!inRepo(file) || !fs.existsSync(file)) return null;
   if (fs.statSync(file).isDirectory()) {
     file = path.join(file, 'README.md');
