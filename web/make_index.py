@@ -3,7 +3,8 @@
 
 Every chapter in order, each with its title and the notes' sections it follows (the first and
 third lines of its README), a link to its page where the web build has one, else what it needs,
-and a link to its lesson (served from the repository by web/serve.py under /lessons/). The
+and a link to its lesson: its page (web/render_lessons.mjs) or, where there is none, its README as
+text (served from the repository by web/serve.py under /lessons/). The
 licences of what the pages hold are copied beside them: the project's and Dear ImGui's."""
 import html
 import pathlib
@@ -18,7 +19,7 @@ def markdown_to_text(line):
     return line.replace("`", "").replace("*", "").strip()
 
 
-def chapter_row(step, readme, has_page):
+def chapter_row(step, readme, has_page, lesson):
     lines = readme.read_text(encoding="utf-8").splitlines() if readme.is_file() else []
     title = markdown_to_text(lines[0].lstrip("# ")) if lines else step
     title = title.removeprefix(step).lstrip(" —-")
@@ -30,7 +31,13 @@ def chapter_row(step, readme, has_page):
                      f'<code>./ocean run {step}</code> natively</span>')
     return (f"<tr><td><b>{html.escape(step)}</b><br>{html.escape(title)}"
             f'<div class="notes">{html.escape(notes)}</div></td>'
-            f'<td>{open_link}</td><td><a href="lessons/{step}/README.md">lesson</a></td></tr>')
+            f'<td>{open_link}</td><td><a href="{lesson}">lesson</a></td></tr>')
+
+
+def lesson_link(site, step):
+    """The chapter's lesson: its rendered page where the build made one, else its Markdown text."""
+    page = f"lessons/{step}/README.html"
+    return page if (site / page).is_file() else f"lessons/{step}/README.md"
 
 
 def main():
@@ -38,7 +45,8 @@ def main():
         sys.exit("usage: make_index.py REPO SITE")
     repo, site = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
     steps = sorted(p.parent.name for p in repo.glob("step[0-9][0-9]_*/CMakeLists.txt"))
-    rows = "\n".join(chapter_row(s, repo / s / "README.md", (site / f"{s}.html").is_file()) for s in steps)
+    rows = "\n".join(chapter_row(s, repo / s / "README.md", (site / f"{s}.html").is_file(), lesson_link(site, s))
+                     for s in steps)
     shutil.copyfile(repo / "LICENSE", site / "LICENSE.txt")
     imgui_licence = next(site.parent.glob("web_deps/imgui-*/LICENSE.txt"), None)
     if imgui_licence is None:

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """serve.py REPO SITE PORT: serves the browser build on http://127.0.0.1:PORT/ (./ocean web).
 
-SITE's pages at the root; under /lessons/, files of the repository's step and docs folders (the
-chapters' READMEs, as plain text, and the pictures they show); nothing else of REPO. Local only
-(127.0.0.1); Ctrl-C stops it."""
+SITE's pages at the root, the lessons among them (SITE/lessons/, web/render_lessons.mjs). Where a
+lesson has no page there (./ocean web found no marked to render them), /lessons/ serves the
+repository's step and docs folders instead (the chapters' READMEs, as plain text, and the pictures
+they show); nothing else of REPO. Local only (127.0.0.1); Ctrl-C stops it."""
 import functools
 import http.server
 import pathlib
@@ -23,9 +24,10 @@ class Handler(http.server.SimpleHTTPRequestHandler):
 
     def translate_path(self, path):
         clean = urllib.parse.unquote(path.split("?", 1)[0].split("#", 1)[0])
-        if clean.startswith("/lessons/"):
+        rendered = super().translate_path(path)
+        if clean.startswith("/lessons/") and not pathlib.Path(rendered).is_file():
             return str(self.lesson_file(clean[len("/lessons/"):]))
-        return super().translate_path(path)
+        return rendered
 
     def lesson_file(self, relative):
         """The repository's file at `relative` if it is one inside a step or docs folder, else a

@@ -32,3 +32,20 @@ add_test(NAME step02_sine3d.web.address_sets_a_parameter
           --query=amplitude=2.5)
 set_tests_properties(step02_sine3d.web.address_sets_a_parameter PROPERTIES LABELS "web;step02_sine3d" TIMEOUT 240
                      SKIP_RETURN_CODE 77)
+# The lessons as the index leads to them: each chapter's README, and every page of the site a link
+# leads to from there, an HTML page (web/render_lessons.mjs) whose pictures load and whose links
+# answer, served by web/serve.py as ./ocean web serves them (tests/web/lessons.js).
+add_test(NAME web.lessons_from_the_index
+  COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/web/lessons.sh" "${PROJECT_SOURCE_DIR}" "${OCEAN_WEB_SITE}")
+set_tests_properties(web.lessons_from_the_index PROPERTIES LABELS "web" TIMEOUT 120 SKIP_RETURN_CODE 77)
+# The read-back of the sea (step07's map_readback.hpp), in step07 and in step08 which composes it
+# (step09 is step08's scene: the same read-back), 60 frames: chromium's warning about a read-back
+# buffer at most once, not once a frame (tests/web/readback_quiet.sh; about 15 s each).
+foreach(_step IN ITEMS step07_buoyancy step08_wakes)
+  if(_step IN_LIST OCEAN_STEPS)
+    add_test(NAME ${_step}.web.readback_quiet
+      COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/web/readback_quiet.sh" "${OCEAN_WEB_SITE}" ${_step}
+              "${CMAKE_BINARY_DIR}/test-output/web/${_step}")
+    set_tests_properties(${_step}.web.readback_quiet PROPERTIES LABELS "web;${_step}" TIMEOUT 240 SKIP_RETURN_CODE 77)
+  endif()
+endforeach()
