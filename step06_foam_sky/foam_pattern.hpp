@@ -96,8 +96,8 @@ constexpr double kResidualAlbedo = 0.5;
 // The wind combs the residual foam into lines (windrows, drawn by Langmuir circulation): from force
 // 7 it is drawn as streaks over the lace, the streaks' strength s = foam_streak_share(U), which is
 // 0 below force 7 and 1 from force 9. A streak is foam gathered into a line, denser than the lace it
-// came from: it takes three times the residual amount (at most 1), and the lace keeps 1 - 0.8 s of
-// its cover (the wind took the rest into the lines).
+// came from: it takes three times the foam it gathered (at most kStreakMost, below), and the lace
+// keeps 1 - 0.8 s of its cover (the wind took the rest into the lines).
 constexpr double kStreaksFrom = 13.9, kDenseStreaksFrom = 20.8;  // m/s
 inline double foam_streak_share(double wind_speed) {
     return std::clamp((wind_speed - kStreaksFrom) / (kDenseStreaksFrom - kStreaksFrom), 0.0, 1.0);

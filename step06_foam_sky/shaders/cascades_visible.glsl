@@ -242,16 +242,15 @@ vec2 pattern_statistics(vec4 texel) { return vec2(texel.r, max(texel.b - texel.r
 vec2 mix_statistics(vec2 a, vec2 b, float w) { return vec2(w * a.x + (1.0 - w) * b.x, w * w * a.y + (1.0 - w) * (1.0 - w) * b.y); }
 
 // foam_pattern.hpp's streaks: what a line gathers from about and upwind of it
-// (streak_gathered), the line's cover at a value of the cells' pattern (streak_line; the renderer
-// reads it filtered from u_streak_lines), the foam's thickness on the line where it is not broken
-// (streak_thickness), and the cover: the line's times its foam laid on the bubble cells as lace is
-// (linear in the line's cover, so exact filtered).
-const float STREAK_LINE_FROM = 0.5, STREAK_LINE_TO = 0.8, BREAK_FROM = 0.3, BREAK_TO = 0.45;
+// (streak_gathered), the foam's thickness on the line where it is not broken (streak_thickness),
+// and the cover: the line's cover (read filtered from u_streak_lines, where the CPU wrote the ramp
+// of the cells' pattern, foam_pattern.hpp's streak_line) times its foam laid on the bubble cells
+// as lace is; linear in the line's cover, so the line's share of a footprint is exact.
+const float BREAK_FROM = 0.3, BREAK_TO = 0.45;
 const float STREAK_NEAR = 6.0, STREAK_FAR = 18.0, STREAK_FADE = 15.0, STREAK_MOST = 0.8, STREAK_HOLES = 0.75;
 float streak_gathered(float here, float near, float far) {
     return max(here, max(near * exp(-STREAK_NEAR / STREAK_FADE), far * exp(-STREAK_FAR / STREAK_FADE)));
 }
-float streak_line(float pattern) { return clamp((pattern - STREAK_LINE_FROM) / (STREAK_LINE_TO - STREAK_LINE_FROM), 0.0, 1.0); }
 float streak_thickness(float gathered, float unbroken) {
     return clamp(3.0 * gathered, 0.0, STREAK_MOST) * smoothstep(BREAK_FROM, BREAK_TO, unbroken);
 }
