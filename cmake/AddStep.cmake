@@ -145,6 +145,7 @@ function(add_step name)
   add_test(NAME ${name}.smoke
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/smoke.sh" $<TARGET_FILE:${name}>
             $<TARGET_FILE:image_compare> "${golden}" "${CMAKE_BINARY_DIR}/test-output/smoke/${name}" ${ARG_SMOKE_FLAGS})
+  set_property(GLOBAL PROPERTY OCEAN_SMOKE_FLAGS_${name} ${ARG_SMOKE_FLAGS})  # the browser's smoke run takes them too
   set_tests_properties(${name}.smoke PROPERTIES LABELS "smoke;gpu;core;${name}" TIMEOUT 300)
 
   if(OCEAN_SANITIZE)

@@ -5,9 +5,10 @@
 set(OCEAN_WEB_SITE "${PROJECT_SOURCE_DIR}/build/web/site" CACHE PATH "the pages ./ocean web builds (tests/web)")
 set(_web_smoke "${CMAKE_CURRENT_SOURCE_DIR}/web/smoke.sh")
 foreach(_step IN LISTS OCEAN_STEPS)
+  get_property(_smoke_flags GLOBAL PROPERTY OCEAN_SMOKE_FLAGS_${_step})  # what the golden holds still
   add_test(NAME ${_step}.web.smoke
     COMMAND bash "${_web_smoke}" "${OCEAN_WEB_SITE}" ${_step} $<TARGET_FILE:image_compare>
-            "${PROJECT_SOURCE_DIR}/${_step}/golden.png" "${CMAKE_BINARY_DIR}/test-output/web/${_step}")
+            "${PROJECT_SOURCE_DIR}/${_step}/golden.png" "${CMAKE_BINARY_DIR}/test-output/web/${_step}" ${_smoke_flags})
   set_tests_properties(${_step}.web.smoke PROPERTIES LABELS "web;${_step}" TIMEOUT 240 SKIP_RETURN_CODE 77)
 endforeach()
 # step07's bodies read the sea a frame late without compute shaders, the golden's on FFTW's maps of
