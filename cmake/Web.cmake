@@ -20,7 +20,6 @@ add_library(ocean_stb STATIC "${PROJECT_SOURCE_DIR}/web/stb.c")  # the implement
 target_include_directories(ocean_stb SYSTEM PUBLIC "${OCEAN_WEB_DIR}/host/stb")
 add_library(PkgConfig::STB INTERFACE IMPORTED)
 target_link_libraries(PkgConfig::STB INTERFACE ocean_stb)
-add_library(PkgConfig::EGL INTERFACE IMPORTED)  # no headless contexts in a browser
 
 # GLFW and the GL: emscripten's own, chosen at link time.
 add_library(glfw INTERFACE)

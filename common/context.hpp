@@ -1,7 +1,8 @@
-// Where the pixels go: a GLFW window with a GL 4.5 core context, or a headless EGL context
-// (the device platform when a GPU driver offers one, Mesa's surfaceless platform otherwise)
-// rendering into an offscreen framebuffer. The app draws into target_framebuffer() and never
-// needs to know which.
+// Where the pixels go: a GLFW window with a context of the build's profile, or a headless context
+// rendering into an offscreen framebuffer: EGL's (the device platform when a GPU driver offers
+// one, Mesa's surfaceless platform otherwise), or, in a build without EGL (macOS, Windows,
+// OCEAN_EGL off), a hidden GLFW window's. The app draws into target_framebuffer() and never needs
+// to know which; the first line a step prints says which (describe_current_gl's platform).
 #pragma once
 
 #include "common/gl.hpp"

@@ -4,10 +4,12 @@
 #include "common/context.hpp"
 #include "common/error.hpp"
 #include "common/gl_profile.hpp"
+#include "common/offscreen_target.hpp"
 
 #include <glad/egl.h>
 
 #include <cstring>
+#include <optional>
 #include <vector>
 
 namespace ocean {
@@ -66,13 +68,11 @@ public:
         if (load_gl(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)) == 0)
             throw Error(std::string("cannot load the OpenGL ") + profile_name(kBuildProfile) + " functions through EGL");
         description_ = describe_current_gl(platform);
-        create_target();
+        target_.emplace(size_);
     }
 
     ~EglContext() override {
-        color_.reset();
-        depth_.reset();
-        framebuffer_.reset();
+        target_.reset();
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display_, context_);
         eglTerminate(display_);
@@ -85,7 +85,7 @@ public:
     void poll_events() override {}
     void swap_buffers() override {}
     glm::ivec2 framebuffer_size() const override { return size_; }
-    GLuint target_framebuffer() const override { return framebuffer_.id(); }
+    GLuint target_framebuffer() const override { return target_->id(); }
     GLFWwindow* window() const override { return nullptr; }
 
 private:
@@ -106,28 +106,10 @@ private:
         return EGL_NO_DISPLAY;
     }
 
-    void create_target() {
-        GLint max_side = 0;
-        glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_side);
-        if (size_.x > max_side || size_.y > max_side)
-            throw Error("--size " + std::to_string(size_.x) + "x" + std::to_string(size_.y) +
-                        " exceeds this GPU's limit of " + std::to_string(max_side) + " pixels a side");
-        color_ = make_renderbuffer();
-        renderbuffer_storage(color_, GL_RGBA8, size_.x, size_.y);
-        depth_ = make_renderbuffer();
-        renderbuffer_storage(depth_, GL_DEPTH24_STENCIL8, size_.x, size_.y);
-        framebuffer_ = make_framebuffer();
-        attach_renderbuffer(framebuffer_, GL_COLOR_ATTACHMENT0, color_);
-        if (!attach_renderbuffer(framebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depth_))
-            throw Error("the offscreen framebuffer of " + std::to_string(size_.x) + "x" +
-                        std::to_string(size_.y) + " is incomplete (too large for this GPU?)");
-    }
-
     glm::ivec2 size_;
     EGLDisplay display_ = EGL_NO_DISPLAY;
     EGLContext context_ = EGL_NO_CONTEXT;
-    Renderbuffer color_, depth_;
-    Framebuffer framebuffer_;
+    std::optional<OffscreenTarget> target_;
     bool close_requested_ = false;
 };
 

@@ -1,50 +1,66 @@
 // Windowed GL through GLFW: a debug context of the build's profile (GL 4.5 or 4.1 core, ES 3.0),
-// vsync on.
+// vsync on. And, where the build has no EGL (macOS, Windows, or OCEAN_EGL off), the headless
+// context too: a hidden GLFW window whose context draws into an offscreen framebuffer of the
+// requested size, as EGL's does, so screenshots and goldens are the same.
 #include "common/context.hpp"
 #include "common/error.hpp"
 #include "common/gl_profile.hpp"
+#include "common/offscreen_target.hpp"
 
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
+#include <optional>
 
 namespace ocean {
 
-#if !defined(__EMSCRIPTEN__)
+#if defined(OCEAN_EGL)
 std::unique_ptr<Context> make_egl_context(const ContextOptions& options);
 #endif
 
 namespace {
 
+// A GLFW window with a current context of the build's profile and the GL functions loaded; shown
+// or hidden. Throws ocean::Error with one line.
+GLFWwindow* open_window(const ContextOptions& options, bool visible) {
+    glfwSetErrorCallback(nullptr);  // failures are reported below, in one line
+    if (glfwInit() != GLFW_TRUE) throw Error("GLFW cannot start (is DISPLAY set to a running X server?)");
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, kBuildGlMajor);  // the build's profile (gl_profile.hpp)
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, kBuildGlMinor);
+    if (kBuildIsEs) {
+        glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    } else {
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);  // macOS gives 4.1 core only so
+    }
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SAMPLES, visible ? options.samples : 0);
+    glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
+    // Hidden, the window is only the context's home: the pixels go to an offscreen framebuffer.
+    GLFWwindow* window = visible ? glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr)
+                                 : glfwCreateWindow(64, 64, options.title.c_str(), nullptr, nullptr);
+    if (window == nullptr) {
+        const char* reason = nullptr;
+#if !defined(__EMSCRIPTEN__)  // emscripten's GLFW has no glfwGetError
+        glfwGetError(&reason);
+#endif
+        glfwTerminate();
+        throw Error(std::string("cannot open a ") + (visible ? "" : "hidden ") + "window with OpenGL " +
+                    profile_name(kBuildProfile) + (reason ? std::string(": ") + reason : std::string()));
+    }
+    glfwMakeContextCurrent(window);
+    if (load_gl(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0) {
+        glfwDestroyWindow(window);
+        glfwTerminate();
+        throw Error(std::string("cannot load the OpenGL ") + profile_name(kBuildProfile) + " functions through GLFW");
+    }
+    return window;
+}
+
 class GlfwContext final : public Context {
 public:
-    explicit GlfwContext(const ContextOptions& options) {
-        glfwSetErrorCallback(nullptr);  // failures are reported below, in one line
-        if (glfwInit() != GLFW_TRUE) throw Error("GLFW cannot start (is DISPLAY set to a running X server?)");
-        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, kBuildGlMajor);  // the build's profile (gl_profile.hpp)
-        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, kBuildGlMinor);
-        if (kBuildIsEs) {
-            glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
-        } else {
-            glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-            glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-        }
-        glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
-        glfwWindowHint(GLFW_SAMPLES, options.samples);
-        window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
-        if (window_ == nullptr) {
-            const char* reason = nullptr;
-#if !defined(__EMSCRIPTEN__)  // emscripten's GLFW has no glfwGetError
-            glfwGetError(&reason);
-#endif
-            glfwTerminate();
-            throw Error(std::string("cannot open a window with OpenGL ") + profile_name(kBuildProfile) +
-                        (reason ? std::string(": ") + reason : std::string()));
-        }
-        glfwMakeContextCurrent(window_);
+    explicit GlfwContext(const ContextOptions& options) : window_(open_window(options, true)) {
         glfwSwapInterval(1);
-        if (load_gl(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0)
-            throw Error(std::string("cannot load the OpenGL ") + profile_name(kBuildProfile) + " functions through GLFW");
         description_ = describe_current_gl("GLFW window");
     }
 
@@ -71,11 +87,45 @@ private:
     GLFWwindow* window_ = nullptr;
 };
 
+#if !defined(OCEAN_EGL) && !defined(__EMSCRIPTEN__)
+// Headless without EGL: a hidden window's context, drawing into an offscreen framebuffer of the
+// requested size. It needs a window system (on Linux a display: Xvfb where there is none).
+class HiddenWindowContext final : public Context {
+public:
+    explicit HiddenWindowContext(const ContextOptions& options)
+        : size_(options.width, options.height), window_(open_window(options, false)) {
+        description_ = describe_current_gl("hidden GLFW window");
+        target_.emplace(size_);
+    }
+
+    ~HiddenWindowContext() override {
+        target_.reset();
+        glfwDestroyWindow(window_);
+        glfwTerminate();
+    }
+
+    bool headless() const override { return true; }
+    bool should_close() const override { return close_requested_; }
+    void request_close() override { close_requested_ = true; }
+    void poll_events() override {}
+    void swap_buffers() override {}
+    glm::ivec2 framebuffer_size() const override { return size_; }
+    GLuint target_framebuffer() const override { return target_->id(); }
+    GLFWwindow* window() const override { return nullptr; }
+
+private:
+    glm::ivec2 size_;
+    GLFWwindow* window_;
+    std::optional<OffscreenTarget> target_;
+    bool close_requested_ = false;
+};
+#endif
+
 }  // namespace
 
 bool display_available() {
-#if defined(__EMSCRIPTEN__)
-    return true;  // the page's canvas
+#if defined(__EMSCRIPTEN__) || defined(__APPLE__) || defined(_WIN32)
+    return true;  // the page's canvas; the desktop of macOS and of Windows
 #endif
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
@@ -102,8 +152,14 @@ std::string describe_current_gl(const std::string& platform) {
 std::unique_ptr<Context> Context::create(const ContextOptions& options) {
 #if defined(__EMSCRIPTEN__)
     if (options.headless) throw Error("a page has no headless mode: it draws into its canvas");
-#else
+#elif defined(OCEAN_EGL)
     if (options.headless) return make_egl_context(options);
+#else
+    if (options.headless) {
+        if (!display_available())
+            throw Error("this build has no EGL: its headless runs need a display (on Linux: xvfb-run -a COMMAND)");
+        return std::make_unique<HiddenWindowContext>(options);
+    }
 #endif
     return std::make_unique<GlfwContext>(options);
 }

@@ -1,0 +1,27 @@
+// A headless context's framebuffer (offscreen_target.hpp).
+#include "common/offscreen_target.hpp"
+
+#include "common/error.hpp"
+
+#include <string>
+
+namespace ocean {
+
+OffscreenTarget::OffscreenTarget(glm::ivec2 size) : size_(size) {
+    GLint max_side = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_side);
+    if (size_.x > max_side || size_.y > max_side)
+        throw Error("--size " + std::to_string(size_.x) + "x" + std::to_string(size_.y) +
+                    " exceeds this GPU's limit of " + std::to_string(max_side) + " pixels a side");
+    color_ = make_renderbuffer();
+    renderbuffer_storage(color_, GL_RGBA8, size_.x, size_.y);
+    depth_ = make_renderbuffer();
+    renderbuffer_storage(depth_, GL_DEPTH24_STENCIL8, size_.x, size_.y);
+    framebuffer_ = make_framebuffer();
+    attach_renderbuffer(framebuffer_, GL_COLOR_ATTACHMENT0, color_);
+    if (!attach_renderbuffer(framebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depth_))
+        throw Error("the offscreen framebuffer of " + std::to_string(size_.x) + "x" + std::to_string(size_.y) +
+                    " is incomplete (too large for this GPU?)");
+}
+
+}  // namespace ocean
