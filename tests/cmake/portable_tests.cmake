@@ -18,3 +18,15 @@ else()
     COMMAND bash -c "h='${CMAKE_BINARY_DIR}/glad/include/glad/gl.h'; grep -q '^#define GL_VERSION_4_1 1' \"$h\" && ! grep -q 'GL_VERSION_4_2\\|glCreateBuffers\\|glDispatchCompute' \"$h\" && echo 'ok: GL 4.1 core, nothing newer'")
   set_tests_properties(portable.loader_is_gl41 PROPERTIES LABELS "profile;core")
 endif()
+
+if(NOT OCEAN_EGL)
+  # Built as a Mac builds (no EGL): the loader has no EGL part, a headless run says it draws in a
+  # hidden GLFW window (the first line, under the Xvfb ./ocean starts), and without a display a
+  # headless run says in one line what it needs.
+  add_test(NAME portable.headless_without_egl
+    COMMAND bash -c "! test -e '${CMAKE_BINARY_DIR}/glad/include/glad/egl.h' && out=$('$<TARGET_FILE:step01_sine2d>' --headless --frames 1 2>&1) && echo \"$out\" | head -n 1 | grep -q '(hidden GLFW window' && echo 'ok: no EGL loader; headless in a hidden GLFW window'")
+  set_tests_properties(portable.headless_without_egl PROPERTIES LABELS "profile;core")
+  add_test(NAME portable.headless_without_egl_needs_a_display
+    COMMAND bash -c "out=$(env -u DISPLAY -u WAYLAND_DISPLAY '$<TARGET_FILE:step01_sine2d>' --headless --frames 1 2>&1 >/dev/null); status=$?; echo \"$out\"; [ $status -eq 1 ] && [ $(echo \"$out\" | grep -c '') -eq 1 ] && echo \"$out\" | grep -q 'no EGL: its headless runs need a display'")
+  set_tests_properties(portable.headless_without_egl_needs_a_display PROPERTIES LABELS "profile;bad_input")
+endif()
