@@ -38,6 +38,7 @@ if(EXISTS "${_glad_stamp}")
 endif()
 if(NOT "${_glad_previous}" STREQUAL "${_glad_args}" OR NOT EXISTS "${OCEAN_GLAD_DIR}/src/${_glad_gl_source}")
   message(STATUS "Generating the loader with glad (${_glad_api})")
+  file(REMOVE_RECURSE "${OCEAN_GLAD_DIR}")  # no file of another configuration's loader (egl.h) stays
   execute_process(COMMAND "${GLAD_EXECUTABLE}" ${_glad_args}
                   RESULT_VARIABLE _glad_result ERROR_VARIABLE _glad_error)
   if(NOT _glad_result EQUAL 0)

@@ -4,12 +4,11 @@
 #include "common/context.hpp"
 #include "common/error.hpp"
 #include "common/gl_profile.hpp"
-#include "common/offscreen_target.hpp"
+#include "common/headless_context.hpp"
 
 #include <glad/egl.h>
 
 #include <cstring>
-#include <optional>
 #include <vector>
 
 namespace ocean {
@@ -24,9 +23,9 @@ bool has_extension(const char* list, const char* name) {
     return false;
 }
 
-class EglContext final : public Context {
+class EglContext final : public HeadlessContext {
 public:
-    explicit EglContext(const ContextOptions& options) : size_(options.width, options.height) {
+    explicit EglContext(const ContextOptions& options) : HeadlessContext({options.width, options.height}) {
         // First load: only the client functions, enough to choose a platform.
         if (gladLoaderLoadEGL(EGL_NO_DISPLAY) == 0)
             throw Error("cannot load libEGL.so.1 (install libegl1 and libegl-mesa0)");
@@ -68,25 +67,16 @@ public:
         if (load_gl(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)) == 0)
             throw Error(std::string("cannot load the OpenGL ") + profile_name(kBuildProfile) + " functions through EGL");
         description_ = describe_current_gl(platform);
-        target_.emplace(size_);
+        make_target();
     }
 
     ~EglContext() override {
-        target_.reset();
+        release_target();
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(display_, context_);
         eglTerminate(display_);
         gladLoaderUnloadEGL();
     }
-
-    bool headless() const override { return true; }
-    bool should_close() const override { return close_requested_; }
-    void request_close() override { close_requested_ = true; }
-    void poll_events() override {}
-    void swap_buffers() override {}
-    glm::ivec2 framebuffer_size() const override { return size_; }
-    GLuint target_framebuffer() const override { return target_->id(); }
-    GLFWwindow* window() const override { return nullptr; }
 
 private:
     // A device whose driver is not Mesa's software renderer, so a GPU server uses its GPU.
@@ -106,11 +96,8 @@ private:
         return EGL_NO_DISPLAY;
     }
 
-    glm::ivec2 size_;
     EGLDisplay display_ = EGL_NO_DISPLAY;
     EGLContext context_ = EGL_NO_CONTEXT;
-    std::optional<OffscreenTarget> target_;
-    bool close_requested_ = false;
 };
 
 }  // namespace

@@ -5,12 +5,11 @@
 #include "common/context.hpp"
 #include "common/error.hpp"
 #include "common/gl_profile.hpp"
-#include "common/offscreen_target.hpp"
+#include "common/headless_context.hpp"
 
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
-#include <optional>
 
 namespace ocean {
 
@@ -90,34 +89,22 @@ private:
 #if !defined(OCEAN_EGL) && !defined(__EMSCRIPTEN__)
 // Headless without EGL: a hidden window's context, drawing into an offscreen framebuffer of the
 // requested size. It needs a window system (on Linux a display: Xvfb where there is none).
-class HiddenWindowContext final : public Context {
+class HiddenWindowContext final : public HeadlessContext {
 public:
     explicit HiddenWindowContext(const ContextOptions& options)
-        : size_(options.width, options.height), window_(open_window(options, false)) {
+        : HeadlessContext({options.width, options.height}), window_(open_window(options, false)) {
         description_ = describe_current_gl("hidden GLFW window");
-        target_.emplace(size_);
+        make_target();
     }
 
     ~HiddenWindowContext() override {
-        target_.reset();
+        release_target();
         glfwDestroyWindow(window_);
         glfwTerminate();
     }
 
-    bool headless() const override { return true; }
-    bool should_close() const override { return close_requested_; }
-    void request_close() override { close_requested_ = true; }
-    void poll_events() override {}
-    void swap_buffers() override {}
-    glm::ivec2 framebuffer_size() const override { return size_; }
-    GLuint target_framebuffer() const override { return target_->id(); }
-    GLFWwindow* window() const override { return nullptr; }
-
 private:
-    glm::ivec2 size_;
     GLFWwindow* window_;
-    std::optional<OffscreenTarget> target_;
-    bool close_requested_ = false;
 };
 #endif
 

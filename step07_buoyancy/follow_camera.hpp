@@ -1,7 +1,7 @@
 // The camera kept on the boat: each frame the view's target moves as the boat moved along the
 // water (x, z), so the boat stays where it is in the picture wherever it sails, and the angles and
 // the distance stay the user's (drag, wheel). Without it a boat under way leaves the view in
-// seconds. `follow_boat` turns it on or off; a program chooses where it starts.
+// seconds. On from the start; `follow_boat` turns it off and on.
 #pragma once
 
 #include "common/camera.hpp"
@@ -13,7 +13,6 @@ namespace step07 {
 
 class FollowCamera {
 public:
-    explicit FollowCamera(bool on) : on_(on) {}
     void declare(ocean::ParamRegistry& p) {
         p.add_bool("follow_boat", &on_, "the camera keeps the boat where it is in the view");
     }
@@ -24,7 +23,7 @@ public:
     }
 
 private:
-    bool on_;
+    bool on_ = true;
 };
 
 }  // namespace step07

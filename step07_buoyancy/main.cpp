@@ -199,7 +199,7 @@ private:
     step07::BodyParams body_params_;
     step07::Steering steering_;
     // The camera kept on the boat from the start: a boat under way leaves a still view in seconds.
-    step07::FollowCamera follow_{true};
+    step07::FollowCamera follow_;
     step07::Arrows arrows_;  // held this frame
     double bodies_ms_ = 0;
     step07::QueryGrid queries_;

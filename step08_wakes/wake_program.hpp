@@ -60,7 +60,7 @@ private:
     step07::Steering steering_;
     unsigned bodies_made_for_ = 0;
     PlanView plan_view_;
-    step07::FollowCamera follow_{true};  // the camera kept on the boat, under way from the start
+    step07::FollowCamera follow_;  // the camera kept on the boat, under way from the start
     bool plan_ = false, show_wake_ = true;
     float depth_ = 1000, cell_ = 0.5, warm_up_ = 20;
     float stone_impulse_ = float(kStoneImpulse);  // m^4/s

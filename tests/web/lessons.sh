@@ -6,13 +6,8 @@
 set -u
 repo=$1 site=$2
 here=$(cd "$(dirname "$0")" && pwd)
-missing() {
-  if [ "${CI:-}" = true ]; then echo "FAIL: $1 (CI builds the pages first: ./ocean web --no-serve)"; exit 1; fi
-  echo "skipped: $1 (./ocean web builds the pages and installs what drives them)"; exit 77
-}
+. "$here/browser_ready.sh"  # missing, browser_ready
 [ -f "$site/index.html" ] || missing "no index page in $site"
 [ -d "$site/lessons" ] || missing "no lessons' pages in $site/lessons (./ocean web renders them where npm installed marked)"
-modules=$(cd "$site/.." 2> /dev/null && pwd)/node_modules
-[ -d "$modules/playwright-core" ] || missing "no playwright-core in $modules"
-[ -x /usr/bin/chromium ] && command -v node > /dev/null || missing "no /usr/bin/chromium or no node"
+browser_ready "$site"
 NODE_PATH=$modules exec node "$here/lessons.js" "$repo" "$site"

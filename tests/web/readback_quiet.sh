@@ -10,14 +10,9 @@
 set -u
 site=$1 step=$2 out=$3
 here=$(cd "$(dirname "$0")" && pwd)
-missing() {
-  if [ "${CI:-}" = true ]; then echo "FAIL: $1 (CI builds the pages first: ./ocean web --no-serve)"; exit 1; fi
-  echo "skipped: $1 (./ocean web builds the pages and installs what drives them)"; exit 77
-}
+. "$here/browser_ready.sh"  # missing, browser_ready
 [ -f "$site/$step.js" ] || missing "no web build of $step in $site"
-modules=$(cd "$site/.." 2> /dev/null && pwd)/node_modules
-[ -d "$modules/playwright-core" ] || missing "no playwright-core in $modules"
-[ -x /usr/bin/chromium ] && command -v node > /dev/null || missing "no /usr/bin/chromium or no node"
+browser_ready "$site"
 mkdir -p "$out"
 NODE_PATH=$modules node "$here/page.js" "$site" "$step" "$out" readback_quiet \
   --no-ui --frames 60 --set resolution=64 --time 0.5 --dt 0.05 --size 160x90 > /dev/null || { cat "$out/readback_quiet.log"; exit 1; }

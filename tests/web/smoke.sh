@@ -16,14 +16,9 @@ site=$1 step=$2 compare=$3 golden=$4 out=$5 query=
 shift 5
 if [ $# -gt 0 ] && [ "${1#--query=}" != "$1" ]; then query=$1; shift; fi
 here=$(cd "$(dirname "$0")" && pwd)
-missing() {
-  if [ "${CI:-}" = true ]; then echo "FAIL: $1 (CI builds the pages first: ./ocean web --no-serve)"; exit 1; fi
-  echo "skipped: $1 (./ocean web builds the pages and installs what drives them)"; exit 77
-}
+. "$here/browser_ready.sh"  # missing, browser_ready
 [ -f "$site/$step.js" ] || missing "no web build of $step in $site"
-modules=$(cd "$site/.." 2> /dev/null && pwd)/node_modules
-[ -d "$modules/playwright-core" ] || missing "no playwright-core in $modules"
-[ -x /usr/bin/chromium ] && command -v node > /dev/null || missing "no /usr/bin/chromium or no node"
+browser_ready "$site"
 name=$(basename "$golden" .png)${query:+.query}
 mkdir -p "$out"
 rm -f "$out/$name.png" "$out/$name.diff.png"

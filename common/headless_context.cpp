@@ -1,5 +1,5 @@
-// A headless context's framebuffer (offscreen_target.hpp).
-#include "common/offscreen_target.hpp"
+// A headless context's framebuffer (headless_context.hpp).
+#include "common/headless_context.hpp"
 
 #include "common/error.hpp"
 
@@ -7,7 +7,7 @@
 
 namespace ocean {
 
-OffscreenTarget::OffscreenTarget(glm::ivec2 size) : size_(size) {
+void HeadlessContext::make_target() {
     GLint max_side = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_side);
     if (size_.x > max_side || size_.y > max_side)
@@ -22,6 +22,12 @@ OffscreenTarget::OffscreenTarget(glm::ivec2 size) : size_(size) {
     if (!attach_renderbuffer(framebuffer_, GL_DEPTH_STENCIL_ATTACHMENT, depth_))
         throw Error("the offscreen framebuffer of " + std::to_string(size_.x) + "x" + std::to_string(size_.y) +
                     " is incomplete (too large for this GPU?)");
+}
+
+void HeadlessContext::release_target() {
+    color_.reset();
+    depth_.reset();
+    framebuffer_.reset();
 }
 
 }  // namespace ocean
