@@ -2,9 +2,9 @@
 
 #include "common/camera.hpp"
 #include "common/cli.hpp"
+#include "common/platform.hpp"
 #include "common/text.hpp"
 
-#include <unistd.h>
 #if defined(__EMSCRIPTEN__)
 #include <emscripten.h>
 #endif
@@ -24,10 +24,9 @@ std::string step_executable(const std::string& step) {
 #if defined(__EMSCRIPTEN__)
     return step;  // a page: its name is the chapter's, and run_next_step opens STEP.html
 #endif
-    std::error_code ec;
-    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) return "";
-    const fs::path candidate = self.parent_path().parent_path() / step / step;
+    const fs::path self = platform::executable_path();
+    if (self.empty()) return "";
+    const fs::path candidate = self.parent_path().parent_path() / step / (step + platform::kExecutableSuffix);
     return fs::exists(candidate) ? candidate.string() : "";
 }
 
@@ -67,10 +66,7 @@ std::string url_encoded(const std::string& text) {
 
 int run_next_step(int status, const std::vector<std::string>& command) {
     if (command.empty()) return status;
-    std::vector<char*> argv;
-    for (const auto& a : command) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    // execv replaces the process without running its exit: what is still buffered (stdout to a
+    // The next step replaces the process without running its exit: what is still buffered (stdout to a
     // file or a pipe is fully buffered) would vanish. Flush the C++ streams, then C's.
     std::cout.flush();
     std::cerr.flush();
@@ -87,8 +83,8 @@ int run_next_step(int status, const std::vector<std::string>& command) {
 #pragma clang diagnostic pop
     return status;
 #endif
-    execv(argv[0], argv.data());
-    std::cerr << "error: cannot start " << command[0] << ": " << std::strerror(errno) << std::endl;
+    const std::error_code error = platform::replace_process(command);
+    std::cerr << "error: cannot start " << command[0] << ": " << error.message() << std::endl;
     return kExitRuntimeError;
 }
 

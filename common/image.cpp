@@ -11,18 +11,19 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
-#include <sys/stat.h>
+#include <filesystem>
 #include <unordered_set>
 
 namespace ocean {
 
 std::optional<Image> load_image(const std::string& path, std::string* error) {
-    struct stat info {};
-    if (stat(path.c_str(), &info) != 0) {
-        *error = "'" + path + "': " + std::strerror(errno);
+    std::error_code missing;
+    const auto status = std::filesystem::status(path, missing);
+    if (missing) {
+        *error = "'" + path + "': " + missing.message();
         return std::nullopt;
     }
-    if (S_ISDIR(info.st_mode)) {
+    if (std::filesystem::is_directory(status)) {
         *error = "'" + path + "': is a directory";
         return std::nullopt;
     }

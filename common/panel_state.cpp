@@ -138,8 +138,13 @@ std::optional<fs::path> panel_state_path(const std::string& step) {
         base = xdg;
     } else {
         const char* home = std::getenv("HOME");
-        if (home == nullptr || *home == '\0') return std::nullopt;
-        base = fs::path(home) / ".config";
+        if (home != nullptr && *home != '\0') {
+            base = fs::path(home) / ".config";
+        } else if (const char* app_data = std::getenv("APPDATA"); app_data != nullptr && *app_data != '\0') {
+            base = app_data;  // Windows, where no HOME is set: the user's roaming settings
+        } else {
+            return std::nullopt;
+        }
     }
     return base / "sin_waves_into_water" / (step + ".panel.ini");
 }

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/gl.hpp"
+#include "common/platform.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -11,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <unistd.h>
 
 namespace ocean {
 
@@ -100,16 +100,8 @@ glm::ivec2 TestProbes::framebuffer_size(Context& context, int frame, glm::ivec2 
 
 void TestProbes::after_frame(int frame) const {
     if (resource_log_ > 0 && (frame + 1) % resource_log_ == 0)
-        std::cout << "resources: frame " << frame + 1 << " rss_kb " << resident_kilobytes() << " gl_objects "
+        std::cout << "resources: frame " << frame + 1 << " rss_kb " << platform::resident_kilobytes().value_or(-1) << " gl_objects "
                   << live_gl_objects() << std::endl;
-}
-
-long resident_kilobytes() {
-    // /proc/self/statm: size, resident, ... in pages.
-    std::ifstream statm("/proc/self/statm");
-    long pages = 0, resident = 0;
-    statm >> pages >> resident;
-    return resident * (sysconf(_SC_PAGESIZE) / 1024);
 }
 
 std::string bench_csv_line(const std::string& step, glm::ivec2 size, GpuTimers& timers, double wall_seconds,

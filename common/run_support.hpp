@@ -90,9 +90,6 @@ private:
     int resource_log_;
 };
 
-// Resident memory of this process, kB (the soak test's sample).
-long resident_kilobytes();
-
 // The --bench results as one CSV row, the format ./ocean bench collects (said here only):
 //   bench-csv-header: step,size,fps,total_ms,passes,<extra labels>
 //   bench-csv: <step>,<WxH>,<fps>,<sum of the passes' wall ms>,<pass=ms;...>,<extra ms...>

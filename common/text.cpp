@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/stat.h>
 
 namespace ocean {
 
@@ -67,11 +67,13 @@ std::string format_double(double value) {
 }
 
 std::optional<std::string> read_text_file(const std::string& path, std::string* text, std::size_t max_bytes) {
-    struct stat info {};
-    if (stat(path.c_str(), &info) != 0) return "'" + path + "': " + std::strerror(errno);
-    if (S_ISDIR(info.st_mode)) return "'" + path + "': is a directory";
-    if (!S_ISREG(info.st_mode)) return "'" + path + "': not a regular file (a pipe or a device is not read)";
-    if (std::size_t(info.st_size) > max_bytes)
+    std::error_code missing;
+    const auto status = std::filesystem::status(path, missing);
+    if (missing) return "'" + path + "': " + missing.message();
+    if (std::filesystem::is_directory(status)) return "'" + path + "': is a directory";
+    if (!std::filesystem::is_regular_file(status))
+        return "'" + path + "': not a regular file (a pipe or a device is not read)";
+    if (std::filesystem::file_size(path, missing) > max_bytes)
         return "'" + path + "': larger than " + std::to_string(max_bytes / 1024) + " KiB";
     std::ifstream file(path, std::ios::binary);
     if (!file) return "'" + path + "': " + std::strerror(errno);

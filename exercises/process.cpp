@@ -1,8 +1,12 @@
+// exercises/process.hpp on Linux and macOS (POSIX: fork, exec, process groups, rlimits). Windows has
+// none of these: there process_unsupported.cpp says so, and ./ocean check is not offered.
 #include "exercises/process.hpp"
 
 #include <fcntl.h>
 #include <poll.h>
-#include <sys/prctl.h>
+#if defined(__linux__)
+#include <sys/prctl.h>  // PR_SET_PDEATHSIG: Linux only
+#endif
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -56,7 +60,9 @@ Fd open_or_throw(const std::filesystem::path& path, int flags) {
 // limit sends at their default. Async-signal-safe calls only: nothing else is safe after a fork.
 void become_limited_child(pid_t parent) {
     ::setpgid(0, 0);
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+#if defined(__linux__)
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // macOS has no such call: there the time limit alone ends it
+#endif
     if (::getppid() != parent) ::_exit(127);  // the tool died before prctl
     const rlimit no_core{0, 0};
     ::setrlimit(RLIMIT_CORE, &no_core);
@@ -124,6 +130,18 @@ std::string read_until(int fd, Clock::time_point deadline) {
     return text;
 }
 
+// A pipe whose ends close at exec (pipe2 where there is one; macOS has only pipe and fcntl).
+bool make_pipe(int ends[2]) {
+#if defined(__linux__)
+    return ::pipe2(ends, O_CLOEXEC) == 0;
+#else
+    if (::pipe(ends) != 0) return false;
+    ::fcntl(ends[0], F_SETFD, FD_CLOEXEC);
+    ::fcntl(ends[1], F_SETFD, FD_CLOEXEC);
+    return true;
+#endif
+}
+
 }  // namespace
 
 Ending run_program(const std::vector<std::string>& argv, const std::filesystem::path& stdout_file,
@@ -140,7 +158,7 @@ Ending run_program(const std::vector<std::string>& argv, const std::filesystem::
     ::getrlimit(RLIMIT_FSIZE, &file_size);
     file_size.rlim_cur = file_size.rlim_max = std::min<rlim_t>(rlim_t(max_file_bytes), file_size.rlim_max);
     int exec_report[2];  // the child's errno when exec fails; closed by a successful exec (O_CLOEXEC)
-    if (::pipe2(exec_report, O_CLOEXEC) != 0)
+    if (!make_pipe(exec_report))
         throw ocean::Error(std::string("cannot make a pipe: ") + std::strerror(errno));
     Fd report_in(exec_report[0]), report_out(exec_report[1]);
 
@@ -173,7 +191,7 @@ Ending run_program(const std::vector<std::string>& argv, const std::filesystem::
 
 ChildResult run_in_child(const std::function<std::string()>& task, double seconds) {
     int channel[2];
-    if (::pipe2(channel, O_CLOEXEC) != 0)
+    if (!make_pipe(channel))
         throw ocean::Error(std::string("cannot make a pipe: ") + std::strerror(errno));
     Fd from_child(channel[0]), to_parent(channel[1]);
     std::fflush(nullptr);  // else what stdio holds would be written twice, once by each process
@@ -204,11 +222,6 @@ ChildResult run_in_child(const std::function<std::string()>& task, double second
     if (result.ending.kind == Ending::Exited && result.ending.code == kTaskThrew)
         throw ocean::Error(result.text);
     return result;
-}
-
-std::string time_limit_verdict(const std::string& what, double seconds) {
-    return what + " ran longer than " + ocean::format_number(seconds) +
-           " s and was stopped: an endless loop?";
 }
 
 std::string signal_name(int signal) {

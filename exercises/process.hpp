@@ -3,6 +3,8 @@
 // size of the files it writes, and nothing left running when the tool itself is stopped.
 #pragma once
 
+#include "common/text.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -35,7 +37,9 @@ struct ChildResult {
 ChildResult run_in_child(const std::function<std::string()>& task, double seconds);
 
 // "WHAT ran longer than 5 s and was stopped: an endless loop?"
-std::string time_limit_verdict(const std::string& what, double seconds);
+inline std::string time_limit_verdict(const std::string& what, double seconds) {
+    return what + " ran longer than " + ocean::format_number(seconds) + " s and was stopped: an endless loop?";
+}
 // "signal 6 (Aborted)"
 std::string signal_name(int signal);
 

@@ -1,6 +1,7 @@
 #include "step05_fft/cpu_simulation.hpp"
 
 #include "common/error.hpp"
+#include "common/platform.hpp"
 
 #include <fftw3.h>
 
@@ -11,7 +12,6 @@
 #include <thread>
 #include <unordered_map>
 
-#include <unistd.h>
 
 namespace step05 {
 
@@ -25,9 +25,8 @@ int fftw_thread_count() {
 }
 
 std::string default_wisdom_file() {
-    std::error_code error;
-    const auto exe = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (error) return "";
+    const auto exe = ocean::platform::executable_path();
+    if (exe.empty()) return "";
     return (exe.parent_path() / "fftwf.wisdom").string();
 }
 
@@ -46,7 +45,7 @@ CpuSimulation::CpuSimulation(int n, int cascades, std::string wisdom_file)
                                 FFTW_MEASURE);
     if (plan_ == nullptr) throw ocean::Error("FFTW could not plan the CPU simulation");
     if (!wisdom_file.empty()) {
-        const std::string temporary = wisdom_file + "." + std::to_string(getpid()) + "." +
+        const std::string temporary = wisdom_file + "." + std::to_string(ocean::platform::process_id()) + "." +
                                       std::to_string(reinterpret_cast<std::uintptr_t>(this));
         std::error_code ignored;
         if (fftwf_export_wisdom_to_filename(temporary.c_str()) != 0)

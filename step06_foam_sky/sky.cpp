@@ -13,8 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
-#include <sys/stat.h>
 
 namespace step06 {
 
@@ -67,10 +67,10 @@ std::optional<std::string> Sky::use_image(const std::string& path) {
     equirect_.reset();
     image_rendered_ = false;
     if (path.empty()) return std::nullopt;
-    struct stat info {};
-    if (stat(path.c_str(), &info) != 0)
-        return "sky_image '" + path + "': " + std::strerror(errno) + "; using the procedural sky";
-    if (S_ISDIR(info.st_mode)) return "sky_image '" + path + "' is a directory; using the procedural sky";
+    std::error_code missing;
+    const auto status = std::filesystem::status(path, missing);
+    if (missing) return "sky_image '" + path + "': " + missing.message() + "; using the procedural sky";
+    if (std::filesystem::is_directory(status)) return "sky_image '" + path + "' is a directory; using the procedural sky";
     int w = 0, h = 0, channels = 0;
     // .hdr loads as linear radiance; an LDR image (PNG, JPEG) is sRGB, which stb turns into
     // linear floats with its gamma (2.2 by default). Four channels: ES cannot filter RGB32F.

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "common/panel_state.hpp"
+#include "common/platform.hpp"
 
 #include <imgui_internal.h>  // the panel's clip rectangle (EndsBelowAWholeRowNeverAcrossOne)
 
@@ -370,18 +371,25 @@ TEST(PanelStatePath, XdgConfigHomeThenHomeDotConfig) {
     const char* old_xdg = std::getenv("XDG_CONFIG_HOME");
     const char* old_home = std::getenv("HOME");
     const std::string saved_xdg = old_xdg ? old_xdg : "", saved_home = old_home ? old_home : "";
-    ::setenv("XDG_CONFIG_HOME", "/tmp/xdg", 1);
-    ::setenv("HOME", "/home/learner", 1);
+    ocean::platform::set_environment("XDG_CONFIG_HOME", "/tmp/xdg");
+    ocean::platform::set_environment("HOME", "/home/learner");
     EXPECT_EQ(ocean::panel_state_path("step01_sine2d"),
               fs::path("/tmp/xdg/sin_waves_into_water/step01_sine2d.panel.ini"));
-    ::setenv("XDG_CONFIG_HOME", "relative", 1);  // the XDG spec: ignored
+    ocean::platform::set_environment("XDG_CONFIG_HOME", "relative");  // the XDG spec: ignored
     EXPECT_EQ(ocean::panel_state_path("step01_sine2d"),
               fs::path("/home/learner/.config/sin_waves_into_water/step01_sine2d.panel.ini"));
-    ::unsetenv("XDG_CONFIG_HOME");
-    ::unsetenv("HOME");
+    ocean::platform::set_environment("XDG_CONFIG_HOME", std::nullopt);
+    ocean::platform::set_environment("HOME", std::nullopt);
+    const char* old_app_data = std::getenv("APPDATA");
+    const std::string saved_app_data = old_app_data ? old_app_data : "";
+    ocean::platform::set_environment("APPDATA", "C:\\Users\\learner\\AppData\\Roaming");  // Windows: no HOME
+    EXPECT_EQ(ocean::panel_state_path("step01_sine2d"),
+              fs::path("C:\\Users\\learner\\AppData\\Roaming") / "sin_waves_into_water" / "step01_sine2d.panel.ini");
+    ocean::platform::set_environment("APPDATA", std::nullopt);
     EXPECT_FALSE(ocean::panel_state_path("step01_sine2d").has_value());
-    if (old_xdg) ::setenv("XDG_CONFIG_HOME", saved_xdg.c_str(), 1);
-    if (old_home) ::setenv("HOME", saved_home.c_str(), 1);
+    if (old_xdg) ocean::platform::set_environment("XDG_CONFIG_HOME", saved_xdg);
+    if (old_home) ocean::platform::set_environment("HOME", saved_home);
+    if (old_app_data) ocean::platform::set_environment("APPDATA", saved_app_data);
 }
 
 }  // namespace
