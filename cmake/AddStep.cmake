@@ -74,6 +74,19 @@ function(add_step name)
     set(OCEAN_STEP ${name} PARENT_SCOPE)
     return()
   endif()
+  set(golden "${CMAKE_CURRENT_SOURCE_DIR}/golden.png")
+  if(ARG_GOLDEN)
+    set(golden "${CMAKE_CURRENT_SOURCE_DIR}/${ARG_GOLDEN}")
+  endif()
+  if(OCEAN_PROGRAMS_ONLY)
+    # No ctest here: the smoke run is listed for the script that drives these programs (./ocean
+    # windows --smoke runs each under wine): the step, its golden, its SMOKE_FLAGS.
+    string(JOIN " " _smoke_line ${name} "${golden}" ${ARG_SMOKE_FLAGS})
+    file(APPEND "${CMAKE_BINARY_DIR}/smoke_runs.txt" "${_smoke_line}\n")
+    set_property(GLOBAL APPEND PROPERTY OCEAN_STEPS ${name})
+    set(OCEAN_STEP ${name} PARENT_SCOPE)
+    return()
+  endif()
 
   # The chapter's test executables: NAME_tests (CPU) and NAME_gpu_tests (a headless GL context),
   # both in the core tier. Each build declares (and so builds) only the tests worth running in it
@@ -136,10 +149,6 @@ function(add_step name)
   list(TRANSFORM ARG_TEST_SHADERS PREPEND "${CMAKE_CURRENT_SOURCE_DIR}/")
   set_property(GLOBAL APPEND PROPERTY OCEAN_SHADERS ${ARG_TEST_SHADERS})
 
-  set(golden "${CMAKE_CURRENT_SOURCE_DIR}/golden.png")
-  if(ARG_GOLDEN)
-    set(golden "${CMAKE_CURRENT_SOURCE_DIR}/${ARG_GOLDEN}")
-  endif()
   set(OCEAN_STEP ${name} PARENT_SCOPE)
 
   add_test(NAME ${name}.smoke

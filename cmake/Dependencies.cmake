@@ -1,9 +1,15 @@
 # Every dependency is a Debian package; ./ocean installs the missing ones (see its PACKAGES list).
+# On macOS they come from Homebrew (./ocean names them), except Dear ImGui 1.86 and stb, which it
+# has not: there they are compiled from their checked sources (cmake/SourceTrees.cmake).
+include(SourceTrees)
 find_package(glfw3 3.3 REQUIRED)          # libglfw3-dev: windows, input
 find_package(glm REQUIRED)                # libglm-dev: vectors and matrices
 find_package(PkgConfig REQUIRED)
-pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)  # libimgui-dev 1.86, backends included
-pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)      # libstb-dev: stb_image, stb_image_write
+pkg_check_modules(IMGUI QUIET IMPORTED_TARGET imgui)  # libimgui-dev 1.86, backends included
+pkg_check_modules(STB QUIET IMPORTED_TARGET stb)      # libstb-dev: stb_image, stb_image_write
+if(NOT STB_FOUND)
+  ocean_stb_from_source()
+endif()
 # Headless runs: EGL where the system has it (libegl-dev), a hidden GLFW window where it has none
 # (macOS, Windows) or where OCEAN_EGL is turned off (the CI's portable pass, as a Mac builds).
 pkg_check_modules(EGL QUIET IMPORTED_TARGET egl)
@@ -21,6 +27,12 @@ find_program(GLSLANG_VALIDATOR glslangValidator)         # glslang-tools (a test
 find_program(XVFB_RUN xvfb-run)                          # xvfb (windowed tests, optional)
 
 # imgui.a holds the GLFW and OpenGL3 backends, which call into GLFW.
+if(NOT IMGUI_FOUND)
+  if(OCEAN_GL_ES)
+    message(FATAL_ERROR "the ES build takes ImGui's ES backend from libimgui-dev (Debian/Ubuntu)")
+  endif()
+  ocean_imgui_from_source()
+else()
 add_library(ocean_imgui INTERFACE)
 if(OCEAN_GL_ES)
   # imgui.a's OpenGL3 backend is built for desktop GL (glPolygonMode, primitive restart): an ES
@@ -44,9 +56,15 @@ if(OCEAN_GL_ES)
   target_link_libraries(ocean_imgui INTERFACE ocean_imgui_es_renderer)
 endif()
 target_link_libraries(ocean_imgui INTERFACE PkgConfig::IMGUI glfw ${CMAKE_DL_LIBS})
-pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET fftw3)    # libfftw3-dev: the CPU FFT (step05), double
-pkg_check_modules(FFTWF REQUIRED IMPORTED_TARGET fftw3f)  # the same package: single precision, and
-find_library(FFTWF_THREADS fftw3f_threads REQUIRED)      # its threads (the FFTW backend, the floor)
+endif()
+# libfftw3-dev: the CPU FFT (step05) in double, in single precision and its threads (the FFTW
+# backend, the benchmark's floor). Without it (-DOCEAN_FFTW=OFF) step05 runs its own radix 2.
+option(OCEAN_FFTW "The CPU FFT through FFTW; OFF: the chapter's own radix 2" ON)
+if(OCEAN_FFTW)
+  pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET fftw3)
+  pkg_check_modules(FFTWF REQUIRED IMPORTED_TARGET fftw3f)
+  find_library(FFTWF_THREADS fftw3f_threads REQUIRED)
+endif()
 find_package(Threads REQUIRED)
 # libwebp-dev: tools/animate encodes the READMEs' animations (animated WebP, WebPAnimEncoder) and
 # reads them back (WebPAnimDecoder) to check them.

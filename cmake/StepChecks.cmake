@@ -18,8 +18,8 @@ set(OCEAN_SANITIZER_KINDS bad_input physics export)
 # the kinds above. COMMAND may use the shared harness scripts (OCEAN_TESTS_DIR) and the tools'
 # targets ($<TARGET_FILE:...>).
 function(step_test kind case)
-  if(EMSCRIPTEN)
-    return()  # the browser build has its own tests (tests/web)
+  if(OCEAN_PROGRAMS_ONLY)
+    return()  # a programs-only build (the browser, Windows) has no ctest tests
   endif()
   cmake_parse_arguments(ARG "" "TIMEOUT" "COMMAND;LABELS;PROPERTIES" ${ARGN})
   if(NOT OCEAN_STEP)
@@ -50,7 +50,7 @@ endfunction()
 # shared figure code, to the chapter's library when it has one, and to LINKS. The default build's
 # only, as the tools are.
 function(step_figures)
-  if(OCEAN_GL_PORTABLE OR EMSCRIPTEN)
+  if(OCEAN_GL_PORTABLE OR OCEAN_PROGRAMS_ONLY)
     return()
   endif()
   cmake_parse_arguments(ARG "" "" "LINKS" ${ARGN})
@@ -75,8 +75,8 @@ endfunction()
 
 # step_refuses(CASE EXPECT ARGS...): step_bad_input's test, in every build.
 function(step_refuses case expect)
-  if(EMSCRIPTEN)
-    return()  # the browser build has its own tests (tests/web)
+  if(OCEAN_PROGRAMS_ONLY)
+    return()  # a programs-only build (the browser, Windows) has no ctest tests
   endif()
   step_test(bad_input ${case}
     COMMAND bash "${OCEAN_TESTS_DIR}/cli/bad_input.sh" ${case} $<TARGET_FILE:${OCEAN_STEP}>
@@ -95,8 +95,8 @@ endfunction()
 # step_smoke(CASE GOLDEN ARGS...): a headless run with ARGS compared with the chapter's GOLDEN
 # (tests/smoke/smoke.sh), as add_step's own smoke test: STEP.smoke.CASE.
 function(step_smoke case golden)
-  if(EMSCRIPTEN)
-    return()  # the browser build has its own tests (tests/web)
+  if(OCEAN_PROGRAMS_ONLY)
+    return()  # a programs-only build (the browser, Windows) has no ctest tests
   endif()
   step_test(smoke ${case} LABELS gpu TIMEOUT 300
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/smoke.sh" $<TARGET_FILE:${OCEAN_STEP}> $<TARGET_FILE:image_compare>
@@ -106,8 +106,8 @@ endfunction()
 # step_split(LEFT RIGHT [ARGS...]): --split against two plain renders of its variants, the
 # parameter assignments LEFT and RIGHT (tests/smoke/split.sh, tests/split_check): STEP.split.
 function(step_split left right)
-  if(EMSCRIPTEN)
-    return()  # the browser build has its own tests (tests/web)
+  if(OCEAN_PROGRAMS_ONLY)
+    return()  # a programs-only build (the browser, Windows) has no ctest tests
   endif()
   step_test(split "" LABELS gpu TIMEOUT 300
     COMMAND bash "${OCEAN_TESTS_DIR}/smoke/split.sh" $<TARGET_FILE:${OCEAN_STEP}> $<TARGET_FILE:split_check>
@@ -118,8 +118,8 @@ endfunction()
 # apart (t = 3 s and 3.1 s); tests/physics_check, which knows no spectrum, measures where the
 # surface moved and holds it to DEGREES within TOLERANCE: STEP.physics.waves_travel_with_the_wind.CASE.
 function(step_waves_travel case degrees tolerance)
-  if(EMSCRIPTEN)
-    return()  # the browser build has its own tests (tests/web)
+  if(OCEAN_PROGRAMS_ONLY)
+    return()  # a programs-only build (the browser, Windows) has no ctest tests
   endif()
   string(REPLACE ";" " " flags "${ARGN}")
   set(run "'$<TARGET_FILE:${OCEAN_STEP}>' --headless --size 64x64 ${flags}")

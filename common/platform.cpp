@@ -10,7 +10,9 @@
 
 #if defined(_WIN32)
 #define WIN32_LEAN_AND_MEAN
+#ifndef NOMINMAX  // libstdc++ for mingw defines it already
 #define NOMINMAX
+#endif
 #include <windows.h>
 #include <psapi.h>  // GetProcessMemoryInfo (kernel32's K32 form: no extra library)
 #include <io.h>

@@ -3,8 +3,6 @@
 #include "common/error.hpp"
 #include "common/platform.hpp"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,17 +10,7 @@
 #include <thread>
 #include <unordered_map>
 
-
 namespace step05 {
-
-int fftw_thread_count() {
-    static const int count = [] {
-        const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-        if (fftwf_init_threads() == 0) return 1;
-        return cores;
-    }();
-    return count;
-}
 
 std::string default_wisdom_file() {
     const auto exe = ocean::platform::executable_path();
@@ -31,34 +19,11 @@ std::string default_wisdom_file() {
 }
 
 CpuSimulation::CpuSimulation(int n, int cascades, std::string wisdom_file)
-    : n_(n), layers_(4 * cascades), threads_(fftw_thread_count()) {
-    const std::size_t values = std::size_t(layers_) * n * n;
-    data_ = reinterpret_cast<std::complex<float>*>(fftwf_malloc(values * sizeof(fftwf_complex)));
-    if (data_ == nullptr) throw ocean::Error("out of memory for the CPU simulation");
-    // Wisdom first: a size measured before plans at once. Another process may write the file at
-    // the same moment, so it is written to a private name and renamed (atomic on one file system).
-    if (!wisdom_file.empty()) fftwf_import_wisdom_from_filename(wisdom_file.c_str());
-    fftwf_plan_with_nthreads(threads_);
-    const int size[2] = {n, n};
-    auto* data = reinterpret_cast<fftwf_complex*>(data_);
-    plan_ = fftwf_plan_many_dft(2, size, layers_, data, nullptr, 1, n * n, data, nullptr, 1, n * n, FFTW_BACKWARD,
-                                FFTW_MEASURE);
-    if (plan_ == nullptr) throw ocean::Error("FFTW could not plan the CPU simulation");
-    if (!wisdom_file.empty()) {
-        const std::string temporary = wisdom_file + "." + std::to_string(ocean::platform::process_id()) + "." +
-                                      std::to_string(reinterpret_cast<std::uintptr_t>(this));
-        std::error_code ignored;
-        if (fftwf_export_wisdom_to_filename(temporary.c_str()) != 0)
-            std::filesystem::rename(temporary, wisdom_file, ignored);
-        std::filesystem::remove(temporary, ignored);
-    }
-    std::fill(data_, data_ + values, std::complex<float>(0, 0));  // MEASURE wrote over it
+    : n_(n), layers_(4 * cascades), fft_(n, 4 * cascades, wisdom_file), data_(fft_.data()) {
+    threads_ = fft_.threads();
 }
 
-CpuSimulation::~CpuSimulation() {
-    if (plan_ != nullptr) fftwf_destroy_plan(static_cast<fftwf_plan>(plan_));
-    fftwf_free(data_);
-}
+CpuSimulation::~CpuSimulation() = default;
 
 void CpuSimulation::set_spectra(const std::vector<const InitialSpectrum*>& cascades) {
     if (int(cascades.size()) * 4 != layers_) throw ocean::Error("CPU simulation: cascade count changed");
@@ -148,7 +113,7 @@ void CpuSimulation::run(double time) {
         const std::size_t count = modes_.size();
         evolve_range(count * std::size_t(part) / std::size_t(parts), count * std::size_t(part + 1) / std::size_t(parts));
     });
-    fftwf_execute(static_cast<fftwf_plan>(plan_));
+    fft_.run();
 }
 
 void CpuSimulation::assemble_layer(int cascade, float l) {
@@ -192,7 +157,7 @@ void CpuSimulation::assemble(float choppiness) {
     in_parallel(cascades, [&](int cascade) { assemble_layer(cascade, choppiness); });
 }
 
-void CpuSimulation::transform_only() { fftwf_execute(static_cast<fftwf_plan>(plan_)); }
+void CpuSimulation::transform_only() { fft_.run(); }
 
 const float* CpuSimulation::fields() const { return reinterpret_cast<const float*>(data_); }
 

@@ -1,13 +1,13 @@
-// The simulation on the CPU, fast: the FFTW backend of OceanSimulation. The double-precision reference
+// The simulation on the CPU, fast: the FFTW backend of OceanSimulation (the chapter's own radix 2
+// where a build has no FFTW: cpu_fft.hpp). The double-precision reference
 // (ocean_maps.hpp) is what the tests hold every path to; this is the same evolution and the same
 // transforms in single precision, laid out as the GPU's buffers are, so that one upload hands
 // the GPU exactly what its own FFT would have made:
 //   - the initial spectrum's per-mode factors are computed once per spectrum, in float;
 //   - each frame the phase omega t is reduced modulo 2 pi in double (t may be days), then the
 //     16 complex fields (4 a cascade) are formed in one pass over the modes;
-//   - one FFTW plan transforms all of them (fftwf_plan_many_dft, in place), with as many threads
-//     as the machine has cores, planned with FFTW_MEASURE once and remembered in a wisdom file
-//     beside the executable (the first run of a size measures; later runs start at once);
+//   - one CpuFft transforms all of them in place on every core (cpu_fft.hpp: FFTW's plan, planned
+//     with FFTW_MEASURE once and remembered in a wisdom file beside the executable);
 //   - e^{i omega t} is computed once per distinct omega: omega depends on |k| only, and the
 //     square grid holds each |k| up to 8 times (+-kx, +-kz, swapped), so 8 times fewer sines;
 //   - assemble() unpacks the fields into the renderer's two textures and box-filters their
@@ -15,6 +15,7 @@
 //     pass and glGenerateMipmap cost 8 ms of a 13 ms simulation).
 #pragma once
 
+#include "step05_fft/cpu_fft.hpp"
 #include "step05_fft/spectrum.hpp"
 
 #include <complex>
@@ -72,13 +73,8 @@ private:
     std::vector<double> omegas_;       // the distinct omegas
     std::vector<std::complex<float>> phases_;  // e^{i omega t} for each, this frame
     std::vector<MipLevel> levels_;
-    std::complex<float>* data_ = nullptr;  // fftwf_malloc'd, cascades x 4 x n x n
-    void* plan_ = nullptr;
+    CpuFft fft_;                       // the fields, cascades x 4 x n x n, and their transform
+    std::complex<float>* data_;        // fft_.data()
 };
-
-// The process's FFTW threads: set up once (fftwf_init_threads), the count used for every plan.
-int fftw_thread_count();
-// Where the wisdom lives: beside the running executable, in the build folder (empty if unknown).
-std::string default_wisdom_file();
 
 }  // namespace step05

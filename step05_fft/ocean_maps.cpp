@@ -1,7 +1,7 @@
 #include "step05_fft/ocean_maps.hpp"
 
-// The maps' definitions; their transforms through FFTW are in ocean_maps_fftw.cpp, which the
-// browser build (no GPL code) leaves out.
+// The maps' definitions and the reference's transforms; the inverse FFT itself is FFTW's
+// (ocean_maps_fftw.cpp) or, in the builds without FFTW, the chapter's own (ocean_maps_radix2.cpp).
 
 #include <algorithm>
 #include <cmath>
@@ -79,6 +79,28 @@ std::array<double, 3> OceanMaps::normal(std::size_t index, double choppiness) co
     const double length = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     if (length < 1e-12) return {0.0, 1.0, 0.0};  // folded edge-on: no normal (ocean_maps.glsl's guess)
     return {c[0] / length, c[1] / length, c[2] / length};
+}
+
+OceanMaps transform_cpu(const std::array<ComplexField, 4>& spectra, int n, double patch_size) {
+    OceanMaps maps;
+    maps.n = n;
+    maps.patch_size = patch_size;
+    for (std::size_t t = 0; t < 4; ++t) {
+        const ComplexField result = inverse_fft_2d(spectra[t], n);
+        auto& real_part = maps.fields[kPacking[t][0]];
+        auto& imaginary_part = maps.fields[kPacking[t][1]];
+        real_part.resize(result.size());
+        imaginary_part.resize(result.size());
+        for (std::size_t i = 0; i < result.size(); ++i) {
+            real_part[i] = result[i].real();
+            imaginary_part[i] = result[i].imag();
+        }
+    }
+    return maps;
+}
+
+OceanMaps simulate_cpu(const InitialSpectrum& s, double time) {
+    return transform_cpu(packed_spectra(s, time), s.n, s.patch_size);
 }
 
 }  // namespace step05

@@ -1,5 +1,6 @@
 // Chapter 4.3-4.5 on the CPU, in double precision: the spectrum at time t and the eight real
-// maps the renderer needs, through FFTW. This is the reference for the GPU's DFT and FFT, and
+// maps the renderer needs, through an inverse FFT (FFTW's, or the chapter's own radix 2 where a
+// build has no FFTW). This is the reference for the GPU's DFT and FFT, and
 // the third backend of the step (computed here, then uploaded).
 //
 //   h~(k, t) = h0(k) e^{-i omega t} + conj(h0(-k)) e^{i omega t}      (Hermitian: h is real)
@@ -46,7 +47,7 @@ std::vector<std::string> map_view_names();
 
 // The phase omega t reduced to [0, 2 pi) in double precision, as the GPU receives it (the
 // rotation applied to h0(k) is then e^{-i phase}). Inline: the fragment simulation needs it and
-// none of this file's FFTW.
+// none of this file's CPU transforms.
 inline double reduced_phase(double omega, double time) {
     const double phase = std::fmod(omega * time, 2 * ocean::kPi);
     return phase < 0 ? phase + 2 * ocean::kPi : phase;
@@ -77,11 +78,12 @@ struct OceanMaps {
     std::array<double, 3> normal(std::size_t index, double choppiness) const;
 };
 
-// Inverse 2D transforms of the four packed spectra with FFTW (double), unpacked into 8 fields.
-OceanMaps transform_fftw(const std::array<ComplexField, 4>& spectra, int n, double patch_size);
+// Inverse 2D transforms of the four packed spectra (double), unpacked into 8 fields.
+OceanMaps transform_cpu(const std::array<ComplexField, 4>& spectra, int n, double patch_size);
 // The whole reference: evolve to t, transform.
 OceanMaps simulate_cpu(const InitialSpectrum& s, double time);
-// The inverse 2D DFT of one complex field with FFTW (for tests on arbitrary input).
+// The inverse 2D DFT of one complex field, unnormalised: FFTW's (ocean_maps_fftw.cpp), or where a
+// build has no FFTW the chapter's own radix 2 (ocean_maps_radix2.cpp). Also for tests on any input.
 ComplexField inverse_fft_2d(const ComplexField& input, int n);
 
 

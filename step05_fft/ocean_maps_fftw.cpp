@@ -1,5 +1,6 @@
-// ocean_maps.hpp's transforms through FFTW (double): the CPU reference's FFT. A file of its own
-// because FFTW is GPL: the browser build, which holds no GPL code, leaves it out.
+// ocean_maps.hpp's inverse FFT through FFTW (double): the CPU reference's FFT. A file of its own
+// because FFTW is GPL: the browser build, which holds no GPL code, and a build without FFTW take
+// ocean_maps_radix2.cpp instead.
 #include "step05_fft/ocean_maps.hpp"
 
 #include <fftw3.h>
@@ -16,28 +17,6 @@ ComplexField inverse_fft_2d(const ComplexField& input, int n) {
     fftw_execute(plan);
     fftw_destroy_plan(plan);
     return output;
-}
-
-OceanMaps transform_fftw(const std::array<ComplexField, 4>& spectra, int n, double patch_size) {
-    OceanMaps maps;
-    maps.n = n;
-    maps.patch_size = patch_size;
-    for (std::size_t t = 0; t < 4; ++t) {
-        const ComplexField result = inverse_fft_2d(spectra[t], n);
-        auto& real_part = maps.fields[kPacking[t][0]];
-        auto& imaginary_part = maps.fields[kPacking[t][1]];
-        real_part.resize(result.size());
-        imaginary_part.resize(result.size());
-        for (std::size_t i = 0; i < result.size(); ++i) {
-            real_part[i] = result[i].real();
-            imaginary_part[i] = result[i].imag();
-        }
-    }
-    return maps;
-}
-
-OceanMaps simulate_cpu(const InitialSpectrum& s, double time) {
-    return transform_fftw(packed_spectra(s, time), s.n, s.patch_size);
 }
 
 }  // namespace step05

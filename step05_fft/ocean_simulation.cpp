@@ -291,7 +291,10 @@ std::vector<std::string> BackendTimes::lines() const {
     out.push_back(format_ms("GPU FFT", gpu_fft_ms) + " (radix 4, Stockham, stages in shared memory)");
     out.push_back(format_ms("radix 2", gpu_radix2_ms) + " (one dispatch a stage, through memory)");
     char line[200];
-    std::snprintf(line, sizeof line, "FFTW floor (fftwf, %d threads, FFTW_MEASURE) %10.3f ms", threads, fftw_ms);
+    if (std::string(CpuFft::kName) == "FFTW")
+        std::snprintf(line, sizeof line, "FFTW floor (fftwf, %d threads, FFTW_MEASURE) %10.3f ms", threads, fftw_ms);
+    else  // a build without FFTW has no floor: its CPU transform stands in, and says what it is
+        std::snprintf(line, sizeof line, "CPU floor: %s, %d threads %10.3f ms", CpuFft::kName, threads, fftw_ms);
     out.push_back(line);
     if (n <= kMaxDftSize) {
         std::snprintf(line, sizeof line, "DFT / GPU FFT = %.1f", dft_ms / gpu_fft_ms);

@@ -4,17 +4,16 @@
 #   ./ocean web [--port N] [--no-serve]
 #
 # Installs what the browser build needs (Debian's emscripten and chromium; from npm, playwright-core
-# for the browser tests and marked for the lessons' pages), fetches Dear ImGui 1.86's sources from
-# Debian's archive (checked by their hash: the native build links the same version), builds every
+# for the browser tests and marked for the lessons' pages), fetches Dear ImGui 1.86's sources
+# through apt-get source (tools/source_archives.sh: checked by their hashes; the native build links
+# the same version), builds every
 # chapter to WebAssembly in build/web/site (cmake/Web.cmake: the portable profile, without compute
 # shaders), renders the lessons as HTML pages (web/render_lessons.mjs, in build/web/site/lessons),
 # writes the index page (web/make_index.py) and serves it on http://127.0.0.1:PORT/ (web/serve.py;
 # default 8080) until Ctrl-C. --no-serve stops after the build (CI: the tests in tests/web drive the pages then).
 
-WEB_PACKAGES=(emscripten chromium python3 curl)
+WEB_PACKAGES=(emscripten chromium python3)
 WEB_DIR=build/web
-IMGUI_TARBALL_URL=http://deb.debian.org/debian/pool/main/i/imgui/imgui_1.86+ds.orig.tar.xz
-IMGUI_TARBALL_SHA256=0dace0e8e57d298eb6e93af12dc19420cb96330832f6495c733b90aeeef11f64
 # From npm, at the versions the tests were written on: playwright-core drives /usr/bin/chromium;
 # marked turns the lessons' Markdown into HTML.
 NPM_PACKAGES=(playwright-core@1.65.1 marked@18.3.0)
@@ -36,7 +35,7 @@ web() {
   PACKAGES+=("${WEB_PACKAGES[@]}")
   command -v npm > /dev/null || PACKAGES+=(npm)  # Debian's Node.js comes without it (NodeSource's has it)
   install_missing_packages
-  web_fetch_imgui
+  fetch_sources imgui-1.86
   web_install_npm_packages
   # Debian's emscripten finds its JavaScript tools (acorn, terser) through NODE_PATH.
   export NODE_PATH=/usr/share/nodejs
@@ -49,19 +48,6 @@ web() {
   python3 web/make_index.py . "$WEB_DIR/site" || refuse "cannot write the index page"
   [ "$serve" = 1 ] || return 0
   hand_over python3 web/serve.py . "$WEB_DIR/site" "$port"
-}
-
-# Dear ImGui's sources, once: Debian's tarball of 1.86, checked against its hash before use.
-web_fetch_imgui() {
-  local tarball="$WEB_DIR/web_deps/imgui_1.86+ds.orig.tar.xz"
-  mkdir -p "$WEB_DIR/web_deps" || refuse "cannot make $WEB_DIR/web_deps"
-  if [ ! -f "$tarball" ]; then
-    say "downloading Dear ImGui 1.86's sources: $IMGUI_TARBALL_URL"
-    curl -fsSL -o "$tarball.part" "$IMGUI_TARBALL_URL" || { rm -f "$tarball.part"; refuse "cannot download $IMGUI_TARBALL_URL"; }
-    mv "$tarball.part" "$tarball"
-  fi
-  echo "$IMGUI_TARBALL_SHA256  $tarball" | sha256sum --check --status ||
-    { rm -f "$tarball"; refuse "$tarball is not Debian's imgui 1.86+ds tarball (its sha256 differs); removed, run again"; }
 }
 
 # playwright-core for the browser tests (tests/web) and marked for the lessons, in

@@ -6,6 +6,7 @@
 # and its screenshot must not be blank and must match GOLDEN.png within image_compare's stated
 # tolerance (RMSE <= 2.5/255, at most 0.5% of pixels off by more than 24/255; a test may set
 # SMOKE_RMSE to another RMSE limit and SMOKE_BAD_FRACTION to another share, saying why where it does).
+# OCEAN_RUNNER, when set, runs the program (./ocean windows --smoke: wine, for a Windows .exe).
 # OCEAN_UPDATE_GOLDEN=1 copies the new screenshot over the golden instead: only after looking at
 # both and understanding why the picture changed.
 set -u
@@ -16,7 +17,7 @@ mkdir -p "$out"
 shot="$out/$name.png"
 rm -f "$shot" "$out/$name.diff.png"
 
-"$exe" --headless --frames 6 --time 0.5 --dt 0.2 --size 320x180 --screenshot "$shot" "$@" > "$out/$name.log" 2>&1
+${OCEAN_RUNNER:-} "$exe" --headless --frames 6 --time 0.5 --dt 0.2 --size 320x180 --screenshot "$shot" "$@" > "$out/$name.log" 2>&1
 status=$?
 cat "$out/$name.log"
 [ "$status" -eq 0 ] || { echo "FAIL: $name exited with status $status"; exit 1; }
