@@ -9,7 +9,7 @@
 
 namespace step05 {
 
-const char* const CpuFft::kName = "radix 2 (this build has no FFTW)";
+const char* const CpuFft::kName = "radix 2";  // this build has no FFTW
 
 CpuFft::CpuFft(int n, int layers, const std::string& /*wisdom_file: FFTW's only*/)
     : n_(n), layers_(layers), threads_(int(std::max(1u, std::thread::hardware_concurrency()))) {

@@ -280,7 +280,7 @@ void OceanSimulation::simulate_auto(double time, float choppiness, ocean::GpuTim
     }
     const int trial = auto_.next();
     auto_.record(trial, ocean::wall_ms_around_finish([&] { simulate(time, backend_of(trial), choppiness, timers); }));
-    if (!auto_.deciding()) auto_decision_ = "at N = " + std::to_string(n_) + ": " + auto_.verdict("FFTW", "GPU FFT");
+    if (!auto_.deciding()) auto_decision_ = "at N = " + std::to_string(n_) + ": " + auto_.verdict(CpuFft::kName, "GPU FFT");
 }
 
 std::vector<std::string> BackendTimes::lines() const {
@@ -294,7 +294,8 @@ std::vector<std::string> BackendTimes::lines() const {
     if (std::string(CpuFft::kName) == "FFTW")
         std::snprintf(line, sizeof line, "FFTW floor (fftwf, %d threads, FFTW_MEASURE) %10.3f ms", threads, fftw_ms);
     else  // a build without FFTW has no floor: its CPU transform stands in, and says what it is
-        std::snprintf(line, sizeof line, "CPU floor: %s, %d threads %10.3f ms", CpuFft::kName, threads, fftw_ms);
+        std::snprintf(line, sizeof line, "CPU floor (%s: this build has no FFTW, %d threads) %10.3f ms", CpuFft::kName,
+                      threads, fftw_ms);
     out.push_back(line);
     if (n <= kMaxDftSize) {
         std::snprintf(line, sizeof line, "DFT / GPU FFT = %.1f", dft_ms / gpu_fft_ms);

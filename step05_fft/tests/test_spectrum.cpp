@@ -1,6 +1,7 @@
 // Chapter 4's spectrum and its CPU transforms, in double precision.
 #include "step05_fft/donelan_banner.hpp"
 #include "step05_fft/ocean_maps.hpp"
+#include "step05_fft/radix2.hpp"
 #include "step05_fft/spectrum.hpp"
 #include "step05_fft/tests/spectrum_heights.hpp"
 #include "step03_lighting/normals.hpp"
@@ -177,6 +178,47 @@ TEST(Step05Spectrum, KZeroAndNyquistModesAreZero) {
     for (int i = 0; i < 64; ++i) {
         EXPECT_EQ(s.h0[std::size_t(32 * 64 + i)], Complex(0, 0));
         EXPECT_EQ(s.h0[std::size_t(i * 64 + 32)], Complex(0, 0));
+    }
+}
+
+// The chapter's own radix 2 (radix2.hpp: the CPU FFT of the builds without FFTW, such as the Windows
+// cross-build) against a closed form and against FFTW, which this build's inverse_fft_2d is.
+TEST(Step05Radix2, OneModeIsAPlaneWave) {
+    // A single 1 at (kx, kz) transforms to e^{+2 pi i (kx x + kz z) / n} at every (x, z), exactly
+    // up to rounding: the inverse's sign and its lack of 1/N, for both axes and the row order.
+    const int n = 32, kx = 3, kz = 29;
+    std::vector<std::complex<double>> field(std::size_t(n) * n);
+    field[std::size_t(kz) * n + kx] = 1.0;
+    InverseFft2d<double>(n).field(field.data());
+    double worst = 0;
+    for (int z = 0; z < n; ++z)
+        for (int x = 0; x < n; ++x) {
+            const double angle = 2 * kPi * (kx * x + kz * z) / n;
+            worst = std::max(worst, std::abs(field[std::size_t(z) * n + x] - std::polar(1.0, angle)));
+        }
+    EXPECT_LT(worst, 1e-13);
+}
+
+TEST(Step05Radix2, MatchesFftwOnRandomFields) {
+    std::mt19937 random(5);
+    std::normal_distribution<double> normal;
+    for (int n : {2, 16, 256}) {
+        ComplexField input(std::size_t(n) * n);
+        for (auto& v : input) v = {normal(random), normal(random)};
+        const ComplexField fftw = inverse_fft_2d(input, n);
+        std::vector<std::complex<double>> own = input;
+        InverseFft2d<double>(n).field(own.data());
+        std::vector<std::complex<float>> single(input.begin(), input.end());
+        InverseFft2d<float>(n).field(single.data());
+        double worst = 0, worst_single = 0, largest = 0;
+        for (std::size_t i = 0; i < input.size(); ++i) {
+            worst = std::max(worst, std::abs(own[i] - fftw[i]));
+            worst_single = std::max(worst_single, std::abs(std::complex<double>(single[i]) - fftw[i]));
+            largest = std::max(largest, std::abs(fftw[i]));
+        }
+        // Double: rounding of log2(n^2) stages; float (the CPU backend's): 1e-6 of the largest value.
+        EXPECT_LT(worst, 1e-13 * largest) << "n = " << n;
+        EXPECT_LT(worst_single, 1e-6 * largest) << "n = " << n;
     }
 }
 

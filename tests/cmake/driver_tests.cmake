@@ -20,3 +20,10 @@ add_test(NAME tools.driver_fuzz
 set_tests_properties(tools.driver_catalogue tools.driver_fuzz PROPERTIES COST 25
   LABELS "bad_input;tools" TIMEOUT 300
   ENVIRONMENT "OCEAN_NO_BUILD=1;OCEAN_BUILD_DIR=${CMAKE_BINARY_DIR}")
+
+# tools.driver_platforms: ./ocean where there is no apt (tests/cli/driver_platforms.sh): macOS
+# without Homebrew, and another system without cmake, each told in one line what to install.
+add_test(NAME tools.driver_platforms
+  COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/cli/driver_platforms.sh" "${PROJECT_SOURCE_DIR}/ocean"
+          "${CMAKE_BINARY_DIR}/test-output/driver_platforms")
+set_tests_properties(tools.driver_platforms PROPERTIES LABELS "bad_input;tools" TIMEOUT 60)
