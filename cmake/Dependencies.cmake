@@ -2,6 +2,11 @@
 # On macOS they come from Homebrew (./ocean names them), except Dear ImGui 1.86 and stb, which it
 # has not: there they are compiled from their checked sources (cmake/SourceTrees.cmake).
 include(SourceTrees)
+option(OCEAN_FFTW "The CPU FFT through FFTW; OFF: the chapter's own radix 2" ON)
+if(VCPKG_TOOLCHAIN)
+  include(VcpkgDependencies)  # Windows with Visual Studio: vcpkg's CMake packages
+  return()
+endif()
 find_package(glfw3 3.3 REQUIRED)          # libglfw3-dev: windows, input
 find_package(glm REQUIRED)                # libglm-dev: vectors and matrices
 find_package(PkgConfig REQUIRED)
@@ -20,7 +25,9 @@ endif()
 if(NOT OCEAN_EGL)
   message(STATUS "Headless runs: a hidden GLFW window (no EGL)")
 endif()
-find_package(GTest REQUIRED)              # libgtest-dev
+if(NOT OCEAN_PROGRAMS_ONLY)
+  find_package(GTest REQUIRED)            # libgtest-dev
+endif()
 
 find_program(GLAD_EXECUTABLE glad REQUIRED)              # python3-glad
 find_program(GLSLANG_VALIDATOR glslangValidator)         # glslang-tools (a test, optional to build)
@@ -59,7 +66,6 @@ target_link_libraries(ocean_imgui INTERFACE PkgConfig::IMGUI glfw ${CMAKE_DL_LIB
 endif()
 # libfftw3-dev: the CPU FFT (step05) in double, in single precision and its threads (the FFTW
 # backend, the benchmark's floor). Without it (-DOCEAN_FFTW=OFF) step05 runs its own radix 2.
-option(OCEAN_FFTW "The CPU FFT through FFTW; OFF: the chapter's own radix 2" ON)
 if(OCEAN_FFTW)
   pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET fftw3)
   pkg_check_modules(FFTWF REQUIRED IMPORTED_TARGET fftw3f)
@@ -68,4 +74,6 @@ endif()
 find_package(Threads REQUIRED)
 # libwebp-dev: tools/animate encodes the READMEs' animations (animated WebP, WebPAnimEncoder) and
 # reads them back (WebPAnimDecoder) to check them.
-pkg_check_modules(WEBP REQUIRED IMPORTED_TARGET libwebpmux libwebpdemux libwebp)
+if(NOT OCEAN_PROGRAMS_ONLY)
+  pkg_check_modules(WEBP REQUIRED IMPORTED_TARGET libwebpmux libwebpdemux libwebp)
+endif()
