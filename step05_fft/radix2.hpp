@@ -1,7 +1,6 @@
 // The chapter's own FFT on the CPU: radix 2, in place, for any power-of-two n. It stands in for
 // FFTW where a build has none (the Windows cross-build, whose toolchain has no FFTW package); the
-// tests hold it to FFTW and to a closed form (tests/test_spectrum.cpp). fft.md derives it; step08
-// writes the same transform out again as its own lesson.
+// tests hold it to FFTW and to a closed form (tests/test_spectrum.cpp). fft.md derives it.
 //
 // A transform of length N is two of length N/2 (the even samples and the odd) joined by N/2
 // butterflies X[j] = E[j] + w^j O[j], X[j + N/2] = E[j] - w^j O[j], w = e^{+2 pi i / N} for the

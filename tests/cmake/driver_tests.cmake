@@ -27,3 +27,10 @@ add_test(NAME tools.driver_platforms
   COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/cli/driver_platforms.sh" "${PROJECT_SOURCE_DIR}/ocean"
           "${CMAKE_BINARY_DIR}/test-output/driver_platforms")
 set_tests_properties(tools.driver_platforms PROPERTIES LABELS "bad_input;tools" TIMEOUT 60)
+
+# tools.source_archives: the sources some builds compile (tools/source_archives.sh) are refused,
+# in one line, when a file differs from its recorded hash; apt's deb822 sources become deb-src lines.
+add_test(NAME tools.source_archives
+  COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/cli/source_archives.sh" "${PROJECT_SOURCE_DIR}"
+          "${CMAKE_BINARY_DIR}/test-output/source_archives")
+set_tests_properties(tools.source_archives PROPERTIES LABELS "bad_input;tools" TIMEOUT 60)
