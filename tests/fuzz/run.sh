@@ -10,7 +10,8 @@ fi
 mkdir -p "$out/corpus"
 sources=("$repo/tests/fuzz/$target.cpp" "$repo/common/text.cpp")
 case "$target" in
-  fuzz_params) sources+=("$repo/common/params.cpp" "$repo/common/presets.cpp" "$repo/common/file_output.cpp") ;;
+  fuzz_params) sources+=("$repo/common/params.cpp" "$repo/common/presets.cpp" "$repo/common/file_output.cpp"
+                         "$repo/common/platform.cpp") ;;
   fuzz_cli) sources+=("$repo/common/cli.cpp") ;;
   fuzz_exercise_args) sources+=("$repo/exercises/arguments.cpp") ;;
   fuzz_exercise_output) sources+=("$repo/exercises/program_output.cpp") ;;

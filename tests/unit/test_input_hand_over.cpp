@@ -1,4 +1,4 @@
-// Previous/Next replaces the process (common/hand_over.cpp's execv): what the step printed before
+// Previous/Next replaces the process (platform::replace_process: execv, or _execv on Windows): what the step printed before
 // must reach a file or a pipe, where stdout is fully buffered and exec would drop the buffer.
 #include "common/hand_over.hpp"
 
