@@ -1,55 +1,65 @@
-// A new chapter, copied from step_template by `./ocean new stepNN_name` (README, "Adding a
-// chapter"). It draws one travelling wave as a band of colour, to be replaced by the chapter's own
-// technique: declare the parameters in the constructor, simulate in update(), draw in render().
+// step10_underwater: the sea from below.
+// Beyond the notes: every chapter so far looked at the sea from above.
+// New since step06: below the mean level the camera sees the surface from the water's side
+// (Snell's window: the whole sky squeezed into a cone of half-angle 48.6 degrees, the depths
+// mirrored outside it), the water's own colour (absorption and scattering per colour, Beer and
+// Lambert), and a seabed lit through caustics that the moving surface focuses.
+// Controls: as step06 (drag, wheel, C for the fly camera: dive and surface with it).
+//
+// The program is step06's SeaScene (the sea, the sky, the sea renderer, the image passes), with
+// one part of its own, Underwater (underwater.hpp), which takes over two moments of the frame while
+// the camera is below the surface.
 #include "common/app.hpp"
-#include "chapter.hpp"
+#include "step06_foam_sky/sea_scene.hpp"
+#include "step10_underwater/underwater.hpp"
 
 #include <imgui.h>
 
 namespace {
 
-// The title, the notes' sections and the paragraph the panel shows.
-ocean::StepInfo chapter_info() {
-    return {"A new chapter", "",
-            "The template every chapter starts from: one travelling wave, h = a sin(w (x - c t)), drawn as a "
-            "band of colour. Replace it with the chapter's technique."};
-}
-
-class Chapter : public ocean::App {
+class UnderwaterProgram : public ocean::App {
 public:
-    Chapter() : App(chapter_info()) {
-        // Each parameter bound to its member; the member's initialiser (below) is the default.
+    UnderwaterProgram()
+        : App({"Under the water", "",
+               "The sea from below: the sky through Snell's window, the depths mirrored beyond it, the "
+               "water's colour with depth, and caustics the waves focus on the seabed.",
+               /*window_samples=*/0}) {
         ocean::ParamRegistry& p = params();
-        p.add_float("amplitude", &amplitude_, 0, 10, "wave amplitude, metres");
-        p.add_float("wavelength", &wavelength_, 0.5f, 100, "distance between crests, metres").logarithmic();
-        p.add_float("speed", &speed_, -20, 20, "crest speed towards +x, metres per second");
-        p.add_float("x_span", &x_span_, 1, 1000, "metres of x across the screen");
+        scene_.declare(p);
+        underwater_.declare(p);
+        // 4 m down, looking up at 30 degrees: the edge of Snell's window (41.4 degrees above the
+        // horizontal) is in the picture.
+        use_camera({{0, -1, 0}, 6, 35, -30}, ocean::kOceanReach);
     }
 
 private:
-    step10::Wave wave() const { return {wavelength_, amplitude_, speed_}; }
+    void init() override {
+        scene_.init(program_factory());
+        underwater_.init(program_factory());
+    }
+
+    void update(double time, double dt) override { scene_.update(time, dt, camera(), timers()); }
 
     void render() override {
-        clear_target({0, 0, 0});
-        ocean::ShaderProgram* p = program("chapter", {"fullscreen.vert", "chapter.frag"});
-        const step10::Wave w = wave();
-        p->set("u_wavenumber", float(ocean::kTwoPi / w.wavelength));
-        p->set("u_amplitude", float(w.amplitude));
-        p->set("u_phase", float(step10::phase(w, time())));
-        p->set("u_x_span", x_span_);
-        ocean::GpuScope timed(timers(), "chapter");
-        glUseProgram(p->id());
-        draw_fullscreen_triangle();
+        const step06::SceneView view{camera(), framebuffer_size(), aspect(), fullscreen_vao(), [this] { bind_target(); }};
+        const glm::vec3 eye(camera().eye_world() - scene_.sea().world_origin());
+        if (eye.y >= 0) {  // above the mean level: step06's sea
+            scene_.render(view, timers());
+            return;
+        }
+        underwater_.update_caustics(scene_, eye, timers());
+        scene_.render(view, timers(), underwater_.additions(scene_, eye, fullscreen_vao()));
     }
 
     void ui() override {
         ImGui::Separator();
-        ImGui::Text("h(0, t) = %.3f m", step10::height(wave(), 0, time()));
+        ImGui::Text("%s, seabed %.0f m down", underwater_.water().name, double(underwater_.seabed_depth()));
     }
 
-    float amplitude_ = 1, wavelength_ = 8, speed_ = 2, x_span_ = 32;
+    step06::SeaScene scene_;
+    step10::Underwater underwater_;
 };
 
 }  // namespace
 
-OCEAN_MAIN(Chapter)
+OCEAN_MAIN(UnderwaterProgram)

@@ -1,0 +1,172 @@
+#include "step10_underwater/underwater.hpp"
+
+#include "common/gl_texture.hpp"
+#include "step03_lighting/light_params.hpp"
+#include "step06_foam_sky/far_plane.hpp"
+#include "step06_foam_sky/texture_units.h"
+#include "step10_underwater/underwater_units.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace step10 {
+
+namespace {
+constexpr float kWaterIndex = 1.333f;
+constexpr float kPi = 3.14159265358979f;
+
+// The unpolarised Fresnel transmittance from air into water at cos_i (water_colour.hpp's
+// reference is in double; this is the host's copy for the flat sea's beam).
+float transmitted_into_water(float cos_i) {
+    const float sin_t2 = (1 - cos_i * cos_i) / (kWaterIndex * kWaterIndex);
+    const float cos_t = std::sqrt(1 - sin_t2);
+    const float rs = (cos_i - kWaterIndex * cos_t) / (cos_i + kWaterIndex * cos_t);
+    const float rp = (kWaterIndex * cos_i - cos_t) / (kWaterIndex * cos_i + cos_t);
+    return 1 - 0.5f * (rs * rs + rp * rp);
+}
+}  // namespace
+
+void Underwater::declare(ocean::ParamRegistry& p) {
+    const auto group = p.group("underwater");
+    std::vector<std::string> names;
+    for (const WaterType& w : kWaterTypes) names.emplace_back(w.name);
+    p.add_choice("water_type", &water_type_, names, "the water: its absorption and scattering per colour");
+    p.add_float("seabed_depth", &seabed_depth_, 1, 200, "metres from the mean level down to the sand").logarithmic();
+    p.add_color("seabed_colour", &seabed_colour_, "the sand's colour (sRGB)");
+    p.add_bool("show_caustics", &show_caustics_, "the sunlight the waves focus on the seabed");
+    p.add_float("caustic_size", &caustic_size_, 8, 200, "metres of seabed the caustics are computed over, around the camera");
+}
+
+void Underwater::init(ocean::ProgramFactory programs) { programs_ = std::move(programs); }
+
+glm::vec3 Underwater::sun_in_water(const glm::vec3& to_sun) {
+    const glm::vec3 travelling = -glm::normalize(to_sun);
+    const glm::vec3 refracted = glm::refract(travelling, glm::vec3(0, 1, 0), 1 / kWaterIndex);
+    return glm::length(refracted) > 0 ? refracted : glm::vec3(0, -1, 0);
+}
+
+glm::vec3 Underwater::sun_beam_in_water(const glm::vec3& to_sun, const glm::vec3& sun_radiance) {
+    const float cos_air = std::max(glm::normalize(to_sun).y, 0.0f);
+    const float cos_water = std::max(-sun_in_water(to_sun).y, 1e-3f);
+    // Through a level plane: the beam's irradiance times cos_air, of which T crosses; across the
+    // refracted beam, that over cos_water.
+    return sun_radiance * (cos_air * transmitted_into_water(cos_air) / cos_water);
+}
+
+void Underwater::bind_water(const ocean::ShaderProgram& p, const step06::SeaScene& scene) const {
+    const WaterType& w = water();
+    const step06::LookParams& look = scene.look();
+    p.set("u_absorption", w.absorption);
+    p.set("u_scattering", w.scattering);
+    p.set("u_phase_g", w.phase_g);
+    p.set("u_seabed_depth", seabed_depth_);
+    p.set("u_seabed_albedo", step03::srgb_to_linear(seabed_colour_));
+    p.set("u_sun_in_water", sun_in_water(look.to_sun()));
+    p.set("u_sun_beam", sun_beam_in_water(look.to_sun(), look.sun_radiance()));
+    // The sky's light on a level plane (pi times its mean radiance), of which about 93 % crosses
+    // (a diffuse sky's mean transmittance into water).
+    const glm::vec3 sky = step03::srgb_to_linear(glm::mix(look.horizon_colour, look.zenith_colour, 0.5f));
+    p.set("u_sky_down", look.ambient * kPi * 0.93f * sky);
+    p.set("u_caustic_centre", caustic_centre_);
+    p.set("u_caustic_size", caustic_size_);
+    p.set("u_show_caustics", int(show_caustics_ && caustics_.id() != 0));
+    ocean::bind_texture(UNIT_CAUSTICS, GL_TEXTURE_2D, caustics_.id());
+}
+
+void Underwater::make_grid() {
+    std::vector<GLuint> indices;
+    indices.reserve(std::size_t(grid_side_ - 1) * (grid_side_ - 1) * 6);
+    for (int j = 0; j + 1 < grid_side_; ++j)
+        for (int i = 0; i + 1 < grid_side_; ++i) {
+            const GLuint a = GLuint(j * grid_side_ + i), b = a + 1, c = a + GLuint(grid_side_), d = c + 1;
+            indices.insert(indices.end(), {a, b, c, b, d, c});
+        }
+    grid_indices_ = ocean::make_buffer();
+    ocean::buffer_data(grid_indices_, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), GL_STATIC_DRAW);
+    grid_vao_ = ocean::make_vertex_array();
+    ocean::element_buffer(grid_vao_, grid_indices_);
+    grid_index_count_ = GLsizei(indices.size());
+    grid_made_for_ = grid_side_;
+}
+
+void Underwater::update_caustics(const step06::SeaScene& scene, const glm::vec3& eye, ocean::GpuTimers& timers) {
+    if (!show_caustics_) return;
+    ocean::GpuScope timed(timers, "caustics");
+    if (caustics_.id() == 0) {
+        caustics_ = ocean::make_float_texture_2d(GL_RGBA16F, caustic_resolution_, caustic_resolution_);
+        caustic_target_ = ocean::make_framebuffer();
+        if (!ocean::attach_texture_2d(caustic_target_, GL_COLOR_ATTACHMENT0, caustics_))
+            throw ocean::Error("the caustics' texture cannot be drawn into (RGBA16F)");
+    }
+    if (grid_made_for_ != grid_side_) make_grid();
+    // The window follows the camera in whole texels, so the pattern does not swim as it moves.
+    const float texel = caustic_size_ / float(caustic_resolution_);
+    caustic_centre_ = glm::vec2(std::round(eye.x / texel), std::round(eye.z / texel)) * texel;
+    // The rays start over a margin of the window: light that the waves bend in from outside it.
+    const float step = caustic_size_ / float(grid_side_ - 1) * 1.25f;
+    const glm::vec2 origin = caustic_centre_ - 0.5f * step * float(grid_side_ - 1);
+
+    const step06::SeaRenderer& renderer = scene.renderer();
+    ocean::ShaderProgram* p = programs_("caustics", {"step10_underwater/shaders/caustics.vert",
+                                                     "step10_underwater/shaders/caustics.frag"},
+                                        renderer.shading_defines(scene.sea(), scene.look()));
+    if (p == nullptr) return;
+    ocean::OffscreenPassState pass(grid_vao_.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, caustic_target_.id());
+    glViewport(0, 0, caustic_resolution_, caustic_resolution_);
+    const float clear[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, clear);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    scene.sea().bind_maps(*p);
+    glUseProgram(p->id());
+    const glm::vec3 to_sun = glm::normalize(scene.look().to_sun());
+    p->set("u_grid_origin", origin);
+    p->set("u_grid_step", step);
+    p->set("u_grid_side", grid_side_);
+    p->set("u_sun_in_air", -to_sun);
+    p->set("u_seabed_depth", seabed_depth_);
+    p->set("u_caustic_centre", caustic_centre_);
+    p->set("u_caustic_size", caustic_size_);
+    p->set("u_flat_transmitted", transmitted_into_water(std::max(to_sun.y, 0.0f)));
+    glDrawElements(GL_TRIANGLES, grid_index_count_, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_BLEND);
+}
+
+step06::FrameAdditions Underwater::additions(const step06::SeaScene& scene, const glm::vec3& eye, GLuint fullscreen_vao) {
+    step06::FrameAdditions a;
+    const std::vector<std::string> defines = scene.renderer().shading_defines(scene.sea(), scene.look());
+    a.shade_sea = [this, &scene, defines](const step06::SeaFrame& frame) {
+        ocean::ShaderProgram* p = programs_("underwater_shade", {"fullscreen.vert", "step10_underwater/shaders/underwater_shade.frag"},
+                                            defines);
+        if (p == nullptr) return;
+        scene.renderer().bind_shading(*p, scene.sea(), scene.sky(), scene.look(), frame);
+        bind_water(*p, scene);
+        glUseProgram(p->id());
+        step06::draw_at_far_plane(GL_GREATER, frame.fullscreen_vao);
+    };
+    a.draw_into_scene = [this, &scene, eye, fullscreen_vao](const glm::mat4& view_projection) {
+        ocean::ShaderProgram* p = programs_("underwater_fill", {"fullscreen.vert", "step10_underwater/shaders/underwater_fill.frag"}, {});
+        if (p == nullptr) return;
+        bind_water(*p, scene);
+        p->set("u_inverse_view_projection", glm::inverse(view_projection));
+        p->set("u_eye", eye);
+        glUseProgram(p->id());
+        // Just in front of the far plane, where the mesh left the depth cleared: the sky, drawn at
+        // the far plane next, then finds these pixels taken.
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthRangef(0.999999f, 0.999999f);
+        glBindVertexArray(fullscreen_vao);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDepthRangef(0.0f, 1.0f);
+        glDisable(GL_DEPTH_TEST);
+    };
+    return a;
+}
+
+}  // namespace step10

@@ -1,0 +1,58 @@
+// The sea from below, the chapter's one new part. While the camera is under the mean level it
+// takes over step06's frame at two points (step06::FrameAdditions): the sea's pixels are shaded as
+// seen from the water (underwater_shade.frag: Snell's window, Fresnel from below, the depths
+// mirrored past the critical angle), and every other pixel is the water itself or the seabed
+// (underwater_fill.frag), lit through caustics the waves focus (caustics.vert/.frag, drawn into a
+// texture of the seabed under the camera before the frame).
+#pragma once
+
+#include "common/gl.hpp"
+#include "common/gpu_timer.hpp"
+#include "common/params.hpp"
+#include "common/shader.hpp"
+#include "step06_foam_sky/sea_scene.hpp"
+#include "step10_underwater/water_types.hpp"
+
+#include <glm/vec3.hpp>
+
+namespace step10 {
+
+class Underwater {
+public:
+    void declare(ocean::ParamRegistry& p);
+    void init(ocean::ProgramFactory programs);
+    // Before the frame, below the surface: the seabed's caustics under the camera (eye: metres from
+    // the sea's world origin).
+    void update_caustics(const step06::SeaScene& scene, const glm::vec3& eye, ocean::GpuTimers& timers);
+    // What the frame adds below the surface: the sea shaded from below, and the water around it.
+    step06::FrameAdditions additions(const step06::SeaScene& scene, const glm::vec3& eye, GLuint fullscreen_vao);
+
+    const WaterType& water() const { return kWaterTypes[std::size_t(water_type_)]; }
+    float seabed_depth() const { return seabed_depth_; }
+    // The sun's light just below a flat surface: its direction (refracted, downwards) and its
+    // irradiance across the beam (sun_radiance: across the beam above the surface).
+    static glm::vec3 sun_in_water(const glm::vec3& to_sun);
+    static glm::vec3 sun_beam_in_water(const glm::vec3& to_sun, const glm::vec3& sun_radiance);
+
+private:
+    void bind_water(const ocean::ShaderProgram& p, const step06::SeaScene& scene) const;
+    void make_grid();
+
+    ocean::ProgramFactory programs_;
+    int water_type_ = 0;
+    float seabed_depth_ = 12;
+    glm::vec3 seabed_colour_{0.76f, 0.70f, 0.50f};  // sand (sRGB)
+    bool show_caustics_ = true;
+    int caustic_resolution_ = 256;  // texels along the window's side
+    float caustic_size_ = 48;       // metres
+    int grid_side_ = 256;           // rays along each side of the window
+    glm::vec2 caustic_centre_{0.0f};
+    ocean::Texture caustics_;
+    ocean::Framebuffer caustic_target_;
+    ocean::Buffer grid_indices_;
+    ocean::VertexArray grid_vao_;
+    int grid_made_for_ = 0;
+    GLsizei grid_index_count_ = 0;
+};
+
+}  // namespace step10
