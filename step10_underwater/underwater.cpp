@@ -60,9 +60,10 @@ glm::vec3 Underwater::sun_beam_in_water(const glm::vec3& to_sun, const glm::vec3
 void Underwater::bind_water(const ocean::ShaderProgram& p, const step06::SeaScene& scene) const {
     const WaterType& w = water();
     const step06::LookParams& look = scene.look();
-    p.set("u_absorption", w.absorption);
-    p.set("u_scattering", w.scattering);
-    p.set("u_phase_g", w.phase_g);
+    p.set("u_absorption", glm::vec3(absorption(w)));
+    p.set("u_water_scattering", glm::vec3(pure_water_scattering()));
+    p.set("u_particle_scattering", glm::vec3(w.particle_scattering));
+    p.set("u_particle_g", float(w.particle_g));
     p.set("u_seabed_depth", seabed_depth_);
     p.set("u_seabed_albedo", step03::srgb_to_linear(seabed_colour_));
     p.set("u_sun_in_water", sun_in_water(look.to_sun()));

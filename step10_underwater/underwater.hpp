@@ -11,7 +11,7 @@
 #include "common/params.hpp"
 #include "common/shader.hpp"
 #include "step06_foam_sky/sea_scene.hpp"
-#include "step10_underwater/water_types.hpp"
+#include "step10_underwater/water_colour.hpp"
 
 #include <glm/vec3.hpp>
 

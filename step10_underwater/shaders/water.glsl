@@ -7,16 +7,18 @@
 const float WATER_INDEX = 1.333;
 const float PI = 3.14159265358979;
 
-uniform vec3 u_absorption;   // a, 1/m, per channel
-uniform vec3 u_scattering;   // b, 1/m
-uniform float u_phase_g;     // the scattering's Henyey-Greenstein asymmetry (forward: g > 0)
+uniform vec3 u_absorption;           // a, 1/m, per channel
+uniform vec3 u_water_scattering;     // b of the water's molecules (Morel), 1/m
+uniform vec3 u_particle_scattering;  // and of what is in it, 1/m
+uniform float u_particle_g;          // the particles' Henyey-Greenstein mean cosine (forward: g > 0)
 uniform float u_seabed_depth;  // metres below the mean level
 uniform vec3 u_seabed_albedo;
 uniform vec3 u_sun_in_water;   // the sun's beam below the surface: its direction (down, refracted)
 uniform vec3 u_sun_beam;       // and its irradiance across the beam just below a flat surface
 uniform vec3 u_sky_down;       // the sky's light through the surface, irradiance on a level plane
 
-vec3 extinction() { return u_absorption + u_scattering; }
+vec3 scattering() { return u_water_scattering + u_particle_scattering; }
+vec3 extinction() { return u_absorption + scattering(); }
 
 // Unpolarised Fresnel reflectance for light inside the water meeting the surface at cos_i (the
 // cosine from the normal, on the water side): the mean of the s and p parts.
@@ -29,10 +31,20 @@ float fresnel_from_water(float cos_i) {
     return 0.5 * (rs * rs + rp * rp);
 }
 
-// Henyey and Greenstein's phase function, per steradian: it integrates to 1 over the sphere.
-float phase(float cos_theta, float g) {
+// Where scattered light goes, per steradian (each integrates to 1 over the sphere): the water's
+// molecules as Morel measured, 1 + q cos^2 (q = 0.834), and particles mostly forward (Henyey and
+// Greenstein's), mixed in proportion to their scattering.
+float water_phase(float cos_theta) {
+    const float q = 0.834;
+    return (1.0 + q * cos_theta * cos_theta) / (4.0 * PI * (1.0 + q / 3.0));
+}
+float henyey_greenstein(float cos_theta, float g) {
     float d = 1.0 + g * g - 2.0 * g * cos_theta;
     return (1.0 - g * g) / (4.0 * PI * d * sqrt(d));
+}
+vec3 phase(float cos_theta) {
+    return (u_water_scattering * water_phase(cos_theta) + u_particle_scattering * henyey_greenstein(cos_theta, u_particle_g)) /
+           scattering();
 }
 
 // The light one beam (travelling along `beam`, downwards, with irradiance `across` across it just
@@ -40,20 +52,20 @@ float phase(float cos_theta, float g) {
 // of the eye's ray. At s metres along the ray the point is z_eye - s d.y deep; the beam has crossed
 // that depth over z / mu (mu = -beam.y), the scattered light crosses s back to the eye:
 //   L = b p(theta) across exp(-c z_eye / mu) (1 - exp(-k t)) / k,   k = c (1 - d.y / mu).
-vec3 beam_inscatter(float z_eye, vec3 d, float t, vec3 beam, vec3 across, float p) {
+vec3 beam_inscatter(float z_eye, vec3 d, float t, vec3 beam, vec3 across, vec3 p) {
     vec3 c = extinction();
     float mu = max(-beam.y, 1e-3);
     vec3 k = c * (1.0 - d.y / mu);
     vec3 along = vec3(t);  // k -> 0: the integral is t
     for (int i = 0; i < 3; ++i)
         if (abs(k[i]) * t > 1e-4) along[i] = (1.0 - exp(-k[i] * t)) / k[i];
-    return u_scattering * p * across * exp(-c * z_eye / mu) * along;
+    return scattering() * p * across * exp(-c * z_eye / mu) * along;
 }
 
 // Both beams: the sun's, and the sky's light taken as a beam from straight above, scattered evenly.
 vec3 inscatter(float z_eye, vec3 d, float t) {
-    return beam_inscatter(z_eye, d, t, u_sun_in_water, u_sun_beam, phase(dot(u_sun_in_water, -d), u_phase_g)) +
-           beam_inscatter(z_eye, d, t, vec3(0.0, -1.0, 0.0), u_sky_down, 1.0 / (4.0 * PI));
+    return beam_inscatter(z_eye, d, t, u_sun_in_water, u_sun_beam, phase(dot(u_sun_in_water, -d))) +
+           beam_inscatter(z_eye, d, t, vec3(0.0, -1.0, 0.0), u_sky_down, vec3(1.0 / (4.0 * PI)));
 }
 
 // The seabed's radiance at a point: Lambertian, lit by the sun's beam (its irradiance on the level
