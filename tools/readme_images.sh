@@ -11,7 +11,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build/release}
 for program in step01_sine2d/step01_sine2d step02_sine3d/step02_sine3d step03_lighting/step03_lighting \
                step04_fbm/step04_fbm step05_fft/step05_fft step06_foam_sky/step06_foam_sky step07_buoyancy/step07_buoyancy step08_wakes/step08_wakes \
-               step09_radiation/step09_radiation tools/image_panel; do
+               step09_radiation/step09_radiation step10_underwater/step10_underwater tools/image_panel; do
   [ -x "$build/$program" ] || die "$build/$program is not built"
 done
 # The intermediate pictures, removed however the script ends.
@@ -166,6 +166,12 @@ echo step09_radiation/screenshot.png
 shot step09_radiation "$root/step09_radiation/rings.png" --size 640x360 --frames 160 --time 0 --dt 0.05 \
   --set wind_speed=0 --set forced_heave=0.3 --set follow_boat=false --set camera_pitch=45 --set camera_distance=30
 echo step09_radiation/rings.png
+run step10_underwater screenshot.png
+# Snell's window on a flat sea, the sun overhead, the camera 5 m down looking up 41.4 degrees: the
+# window's edge across the middle of the picture.
+run step10_underwater window.png --set wind_speed=0 --set sun_elevation=90 --set camera_pitch=-41.4
+run step10_underwater seabed.png --set camera_pitch=35 --set camera_target_y=-6 --set seabed_depth=8
+run step10_underwater coastal.png --set water_type=coastal
 
 # step05's one Gerstner wave at three steepnesses Q k A (sea=gerstner), crests across the view.
 gerstner() {  # gerstner STEEPNESS
