@@ -1,6 +1,7 @@
 #include "step10_underwater/caustics_reference.hpp"
 
 #include "common/constants.hpp"
+#include "step10_underwater/lens.hpp"
 #include "step10_underwater/optics.hpp"
 
 #include <glm/geometric.hpp>
@@ -59,9 +60,6 @@ SeabedIrradiance seabed_irradiance(const CausticSea& sea) {
     return result;
 }
 
-double crest_focal_depth(const CausticSea& sea) {
-    const double radius = 1 / (sea.amplitude * sea.wavenumber * sea.wavenumber);
-    return kWaterIndex * radius / (kWaterIndex - 1);
-}
+double crest_focal_depth(const CausticSea& sea) { return crest_focal_depth(sea.amplitude, sea.wavenumber); }
 
 }  // namespace step10

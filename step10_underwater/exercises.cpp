@@ -1,0 +1,90 @@
+// step10_underwater's exercises (./ocean exercise step10_underwater N): Fresnel from below (GLSL,
+// held to optics.hpp's reflectance_water_to_air) and the depth at which a crest focuses the sun
+// (C++, held to lens.cpp's crest_focal_depth, which no page gives: the learner derives it). The
+// exercise tool (exercises/) gathers every chapter's.
+#include "exercises/exercise.hpp"
+
+#include "step10_underwater/lens.hpp"
+#include "step10_underwater/optics.hpp"
+
+#include <glm/vec4.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace exercises {
+
+namespace {
+
+// Exercise 2's cases: amplitudes 1 cm to 1 m, wavelengths 0.5 to 200 m.
+double case_amplitude(int index) { return 0.01 * std::pow(100.0, (index % 17) / 16.0); }
+double case_wavenumber(int index) { return 2 * 3.14159265358979323846 / (0.5 * std::pow(400.0, (index % 23) / 22.0)); }
+
+std::vector<double> focus_reference(int index) {
+    return {step10::crest_focal_depth(case_amplitude(index), case_wavenumber(index))};
+}
+const char* kFocusDriver = R"(#include "step10_underwater/lens.hpp"
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+int main(int argc, char** argv) {
+    const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
+    for (int index = 0; index < cases; ++index) {
+        const double a = 0.01 * std::pow(100.0, (index % 17) / 16.0);
+        const double k = 2 * 3.14159265358979323846 / (0.5 * std::pow(400.0, (index % 23) / 22.0));
+        std::printf("%.17g\n", step10::crest_focal_depth(a, k));
+    }
+}
+)";
+
+std::vector<Exercise> chapter() {
+    return {
+        {"step10_underwater", 1, "Fresnel from below", "water.glsl", "float fresnel_from_water(float cos_i) {",
+         "    // TODO (exercise 1): the share of the light, inside the water, that the surface reflects.\n"
+         "    return 0.0;\n",
+         "Write fresnel_from_water (water.glsl; README, section 2): light inside the water meets the surface\n"
+         "at cos_i, the cosine of its angle from the normal. Return the share R that reflects, for\n"
+         "unpolarised light: the mean of the s and p reflectances, from the angles on both sides (Snell's\n"
+         "law, WATER_INDEX to 1). Past the critical angle no ray gets out: R is 1. With the starter's 0 the\n"
+         "surface seen from below reflects nothing: the mirror around Snell's window goes black.\n"
+         "./ocean check compares 2048 angles from straight up to grazing.",
+         "Snell gives sin t = n sin i: when that passes 1 the light cannot leave. Otherwise write Fresnel's "
+         "two amplitude ratios with n on the water's side, square them, and take their mean.",
+         "sin_t2 = n^2 (1 - cos_i^2); R = 1 if sin_t2 >= 1; cos_t = sqrt(1 - sin_t2); "
+         "rs = (n cos_i - cos_t) / (n cos_i + cos_t); rp = (cos_i - n cos_t) / (cos_i + n cos_t); R = (rs^2 + rp^2) / 2",
+         {},
+         [](const fs::path& work) {
+             return check_values(
+                 work, "water.glsl", "fresnel_from_water(a.x)",
+                 [](const glm::dvec4& a, const glm::dvec4&) {
+                     return step10::reflectance_water_to_air(std::acos(std::min(a.x, 1.0)));
+                 },
+                 2e-3, 0, 1);
+         }},
+        // derived: the README gives the lens formula and leaves the crest's curvature to the learner
+        {"step10_underwater", 2, "How deep a crest focuses", "lens.cpp",
+         "double crest_focal_depth(double amplitude, double wavenumber) {",
+         "    // TODO (exercise 2): metres below the crest of a cos(k x) at which the sun comes to a focus.\n"
+         "    (void)amplitude, (void)wavenumber;\n"
+         "    return 0;\n",
+         "Write crest_focal_depth (C++, in lens.cpp; README, section 4): the sun straight overhead, a sine\n"
+         "wave a cos(k x) on the water. Near its top the crest is a lens: find its radius of curvature from\n"
+         "a and k, then where a refracting surface of that radius focuses parallel light in water of index\n"
+         "kWaterIndex (optics.hpp). ./ocean check compares 300 waves, 1 cm to 1 m high, 0.5 to 200 m long.\n"
+         "Then: how deep do 2 m waves 10 cm high focus, and why are the sharpest caustics in shallow water\n"
+         "made by the shortest waves?",
+         "A curve y = h(x) at a point where h' = 0 has radius of curvature 1 / |h''|. The lens formula is "
+         "in section 4.",
+         "R = 1 / (a k^2); depth = n R / (n - 1)",
+         {},
+         [](const fs::path& work) {
+             return check_cpp(work, "lens.cpp", kFocusDriver, 300, focus_reference, 1e-12);
+         }, kDerived},
+    };
+}
+
+const Registration registered(chapter);
+
+}  // namespace
+
+}  // namespace exercises
