@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include <cmath>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -74,7 +75,7 @@ void Underwater::bind_water(const ocean::ShaderProgram& p, const step06::SeaScen
     p.set("u_sky_down", look.ambient * kPi * 0.93f * sky);
     p.set("u_caustic_centre", caustic_centre_);
     p.set("u_caustic_size", caustic_size_);
-    p.set("u_show_caustics", int(show_caustics_ && caustics_.id() != 0));
+    p.set("u_show_caustics", int(show_caustics_ && !caustics_failed_ && caustics_.id() != 0));
     ocean::bind_texture(UNIT_CAUSTICS, GL_TEXTURE_2D, caustics_.id());
 }
 
@@ -95,13 +96,19 @@ void Underwater::make_grid() {
 }
 
 void Underwater::update_caustics(const step06::SeaScene& scene, const glm::vec3& eye, ocean::GpuTimers& timers) {
-    if (!show_caustics_) return;
+    if (!show_caustics_ || caustics_failed_) return;
     ocean::GpuScope timed(timers, "caustics");
     if (caustics_.id() == 0) {
         caustics_ = ocean::make_float_texture_2d(GL_RGBA16F, caustic_resolution_, caustic_resolution_);
         caustic_target_ = ocean::make_framebuffer();
-        if (!ocean::attach_texture_2d(caustic_target_, GL_COLOR_ATTACHMENT0, caustics_))
-            throw ocean::Error("the caustics' texture cannot be drawn into (RGBA16F)");
+        if (!ocean::attach_texture_2d(caustic_target_, GL_COLOR_ATTACHMENT0, caustics_)) {
+            // A GL that cannot draw into half floats: the seabed is lit evenly, as under a flat sea.
+            std::cerr << "warning: this GL cannot draw into an RGBA16F texture: the seabed is drawn without caustics"
+                      << std::endl;
+            caustics_failed_ = true;
+            caustics_.reset();
+            return;
+        }
     }
     if (grid_made_for_ != grid_side_) make_grid();
     // The window follows the camera in whole texels, so the pattern does not swim as it moves.

@@ -13,7 +13,7 @@ uniform float u_seabed_depth;
 uniform vec2 u_caustic_centre;
 uniform float u_caustic_size;
 
-out vec2 v_rest;      // where the ray started, and
+out vec2 v_source;    // where the ray crossed a level plane above the waves, and
 out vec2 v_landed;    // where it reached the seabed (metres)
 out float v_transmitted;  // the fraction of its light the surface let through
 
@@ -37,7 +37,10 @@ void main() {
     vec3 ray = refract(u_sun_in_air, n, 1.0 / WATER_INDEX);
     float down = max(-ray.y, 1e-3);
     vec3 landed = at + ray * ((at.y + u_seabed_depth) / down);
-    v_rest = rest;
+    // The sun's rays are parallel: where they cross the level plane y = 0 they are spread evenly, so
+    // the light a triangle of rays carries is its area there (traced back from the surface along
+    // the sun: the displaced, tilted surface catches what that area lets through).
+    v_source = at.xz - u_sun_in_air.xz * (at.y / u_sun_in_air.y);
     v_landed = landed.xz;
     v_transmitted = fresnel_into_water(max(dot(-u_sun_in_air, n), 0.0));
     gl_Position = vec4((landed.xz - u_caustic_centre) / (0.5 * u_caustic_size), 0.0, 1.0);

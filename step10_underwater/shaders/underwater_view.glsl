@@ -9,11 +9,14 @@ uniform float u_caustic_size;   // and its side
 uniform bool u_show_caustics;
 
 // The caustic texture at a point of the seabed, filtered bilinearly by hand (the texture is
-// nearest-filtered in every profile); 1 (a flat sea's light) outside its window.
+// nearest-filtered in every profile); towards its window's edge it fades to 1, a flat sea's light,
+// which is the pattern's mean: no seam where the window ends.
 float caustic_at(vec2 xz) {
     if (!u_show_caustics) return 1.0;
     vec2 uv = (xz - u_caustic_centre) / u_caustic_size + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    vec2 to_edge = min(uv, 1.0 - uv);
+    float inside = smoothstep(0.0, 0.15, min(to_edge.x, to_edge.y));
     ivec2 size = textureSize(u_caustics, 0);
     vec2 at = uv * vec2(size) - 0.5;
     ivec2 base = ivec2(floor(at));
@@ -23,7 +26,7 @@ float caustic_at(vec2 xz) {
     float b = texelFetch(u_caustics, clamp(base + ivec2(1, 0), ivec2(0), top), 0).r;
     float c = texelFetch(u_caustics, clamp(base + ivec2(0, 1), ivec2(0), top), 0).r;
     float d = texelFetch(u_caustics, clamp(base + ivec2(1, 1), ivec2(0), top), 0).r;
-    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+    return mix(1.0, mix(mix(a, b, f.x), mix(c, d, f.x), f.y), inside);
 }
 
 // The radiance reaching `origin` (depth -origin.y) along -d from the direction d: the seabed where
