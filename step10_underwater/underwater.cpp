@@ -4,6 +4,7 @@
 #include "step03_lighting/light_params.hpp"
 #include "step06_foam_sky/far_plane.hpp"
 #include "step06_foam_sky/texture_units.h"
+#include "step10_underwater/optics.hpp"
 #include "step10_underwater/underwater_units.h"
 
 #include <glm/geometric.hpp>
@@ -15,21 +16,6 @@
 #include <vector>
 
 namespace step10 {
-
-namespace {
-constexpr float kWaterIndex = 1.333f;
-constexpr float kPi = 3.14159265358979f;
-
-// The unpolarised Fresnel transmittance from air into water at cos_i (water_colour.hpp's
-// reference is in double; this is the host's copy for the flat sea's beam).
-float transmitted_into_water(float cos_i) {
-    const float sin_t2 = (1 - cos_i * cos_i) / (kWaterIndex * kWaterIndex);
-    const float cos_t = std::sqrt(1 - sin_t2);
-    const float rs = (cos_i - kWaterIndex * cos_t) / (cos_i + kWaterIndex * cos_t);
-    const float rp = (kWaterIndex * cos_i - cos_t) / (kWaterIndex * cos_i + cos_t);
-    return 1 - 0.5f * (rs * rs + rp * rp);
-}
-}  // namespace
 
 void Underwater::declare(ocean::ParamRegistry& p) {
     const auto group = p.group("underwater");
@@ -44,35 +30,21 @@ void Underwater::declare(ocean::ParamRegistry& p) {
 
 void Underwater::init(ocean::ProgramFactory programs) { programs_ = std::move(programs); }
 
-glm::vec3 Underwater::sun_in_water(const glm::vec3& to_sun) {
-    const glm::vec3 travelling = -glm::normalize(to_sun);
-    const glm::vec3 refracted = glm::refract(travelling, glm::vec3(0, 1, 0), 1 / kWaterIndex);
-    return glm::length(refracted) > 0 ? refracted : glm::vec3(0, -1, 0);
-}
-
-glm::vec3 Underwater::sun_beam_in_water(const glm::vec3& to_sun, const glm::vec3& sun_radiance) {
-    const float cos_air = std::max(glm::normalize(to_sun).y, 0.0f);
-    const float cos_water = std::max(-sun_in_water(to_sun).y, 1e-3f);
-    // Through a level plane: the beam's irradiance times cos_air, of which T crosses; across the
-    // refracted beam, that over cos_water.
-    return sun_radiance * (cos_air * transmitted_into_water(cos_air) / cos_water);
+WaterLight Underwater::light(const step06::LookParams& look) const {
+    return water_light(water(), seabed_depth_, glm::dvec3(step03::srgb_to_linear(seabed_colour_)), look);
 }
 
 void Underwater::bind_water(const ocean::ShaderProgram& p, const step06::SeaScene& scene) const {
-    const WaterType& w = water();
-    const step06::LookParams& look = scene.look();
-    p.set("u_absorption", glm::vec3(absorption(w)));
-    p.set("u_water_scattering", glm::vec3(pure_water_scattering()));
+    const WaterLight w = light(scene.look());
+    p.set("u_absorption", glm::vec3(w.absorption));
+    p.set("u_water_scattering", glm::vec3(w.water_scattering));
     p.set("u_particle_scattering", glm::vec3(w.particle_scattering));
     p.set("u_particle_g", float(w.particle_g));
-    p.set("u_seabed_depth", seabed_depth_);
-    p.set("u_seabed_albedo", step03::srgb_to_linear(seabed_colour_));
-    p.set("u_sun_in_water", sun_in_water(look.to_sun()));
-    p.set("u_sun_beam", sun_beam_in_water(look.to_sun(), look.sun_radiance()));
-    // The sky's light on a level plane (pi times its mean radiance), of which about 93 % crosses
-    // (a diffuse sky's mean transmittance into water).
-    const glm::vec3 sky = step03::srgb_to_linear(glm::mix(look.horizon_colour, look.zenith_colour, 0.5f));
-    p.set("u_sky_down", look.ambient * kPi * 0.93f * sky);
+    p.set("u_seabed_depth", float(w.seabed_depth));
+    p.set("u_seabed_albedo", glm::vec3(w.seabed_albedo));
+    p.set("u_sun_in_water", glm::vec3(w.sun_in_water));
+    p.set("u_sun_beam", glm::vec3(w.sun_beam));
+    p.set("u_sky_down", glm::vec3(w.sky_down));
     p.set("u_caustic_centre", caustic_centre_);
     p.set("u_caustic_size", caustic_size_);
     p.set("u_show_caustics", int(show_caustics_ && !caustics_failed_ && caustics_.id() != 0));
@@ -140,7 +112,7 @@ void Underwater::update_caustics(const step06::SeaScene& scene, const glm::vec3&
     p->set("u_seabed_depth", seabed_depth_);
     p->set("u_caustic_centre", caustic_centre_);
     p->set("u_caustic_size", caustic_size_);
-    p->set("u_flat_transmitted", transmitted_into_water(std::max(to_sun.y, 0.0f)));
+    p->set("u_flat_transmitted", float(1 - fresnel_reflectance(std::acos(std::max(to_sun.y, 0.0f)), 1.0, kWaterIndex)));
     glDrawElements(GL_TRIANGLES, grid_index_count_, GL_UNSIGNED_INT, nullptr);
     glDisable(GL_BLEND);
 }

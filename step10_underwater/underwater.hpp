@@ -12,6 +12,7 @@
 #include "common/shader.hpp"
 #include "step06_foam_sky/sea_scene.hpp"
 #include "step10_underwater/water_colour.hpp"
+#include "step10_underwater/water_light.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -29,10 +30,8 @@ public:
 
     const WaterType& water() const { return kWaterTypes[std::size_t(water_type_)]; }
     float seabed_depth() const { return seabed_depth_; }
-    // The sun's light just below a flat surface: its direction (refracted, downwards) and its
-    // irradiance across the beam (sun_radiance: across the beam above the surface).
-    static glm::vec3 sun_in_water(const glm::vec3& to_sun);
-    static glm::vec3 sun_beam_in_water(const glm::vec3& to_sun, const glm::vec3& sun_radiance);
+    // The water the shaders are given (water_light.hpp), under `look`'s sun and sky.
+    WaterLight light(const step06::LookParams& look) const;
 
 private:
     void bind_water(const ocean::ShaderProgram& p, const step06::SeaScene& scene) const;
