@@ -35,6 +35,10 @@ public:
         // 4 m down, looking up at 30 degrees: the edge of Snell's window (41.4 degrees above the
         // horizontal) is in the picture.
         use_camera({{0, -1, 0}, 6, 35, -30}, ocean::kOceanReach);
+#ifndef OCEAN_GL_PORTABLE  // step05's backends: GL 4.5 only
+        offer_bench_figures([this] { return scene_.sea().time_backends(time()); });
+        offer_warm_up([this] { return scene_.sea().choosing_backend(); });
+#endif
     }
 
 private:

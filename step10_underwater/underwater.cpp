@@ -60,9 +60,10 @@ void Underwater::make_grid() {
             indices.insert(indices.end(), {a, b, c, b, d, c});
         }
     grid_indices_ = ocean::make_buffer();
-    ocean::buffer_data(grid_indices_, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), GL_STATIC_DRAW);
     grid_vao_ = ocean::make_vertex_array();
+    // Made indices before they hold data (WebGL fixes a buffer's kind at its first binding).
     ocean::element_buffer(grid_vao_, grid_indices_);
+    ocean::buffer_data(grid_indices_, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), GL_STATIC_DRAW);
     grid_index_count_ = GLsizei(indices.size());
     grid_made_for_ = grid_side_;
 }

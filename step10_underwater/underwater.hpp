@@ -42,9 +42,9 @@ private:
     float seabed_depth_ = 12;
     glm::vec3 seabed_colour_{0.76f, 0.70f, 0.50f};  // sand (sRGB)
     bool show_caustics_ = true;
-    int caustic_resolution_ = 384;  // texels along the window's side: 8 cm
+    int caustic_resolution_ = 256;  // texels along the window's side: 12.5 cm
     float caustic_size_ = 32;       // metres
-    int grid_side_ = 384;           // rays along each side of the window (and its margin): 10 cm apart
+    int grid_side_ = 256;           // rays along each side of the window (and its margin): 16 cm apart
     glm::vec2 caustic_centre_{0.0f};
     ocean::Texture caustics_;
     bool caustics_failed_ = false;  // the GL could not draw into it: no caustics (a warning said so)
