@@ -27,6 +27,11 @@ endif()
 if(TEST step09_radiation.web.smoke)
   set_tests_properties(step09_radiation.web.smoke PROPERTIES ENVIRONMENT "SMOKE_RMSE=6.5")
 endif()
+# step10 seen from below: the ES profile's patches, cut on the CPU, flip isolated pixels of the
+# surface across the critical angle (step10_underwater/CMakeLists.txt). Measured 6.74, 1.01 %.
+if(TEST step10_underwater.web.smoke)
+  set_tests_properties(step10_underwater.web.smoke PROPERTIES ENVIRONMENT "SMOKE_RMSE=8;SMOKE_BAD_FRACTION=0.02")
+endif()
 add_test(NAME step02_sine3d.web.address_sets_a_parameter
   COMMAND bash "${_web_smoke}" "${OCEAN_WEB_SITE}" step02_sine3d $<TARGET_FILE:image_compare>
           "${PROJECT_SOURCE_DIR}/step02_sine3d/golden.png" "${CMAKE_BINARY_DIR}/test-output/web/step02_sine3d"

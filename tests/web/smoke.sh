@@ -5,7 +5,8 @@
 # same golden. The browser draws through SwiftShader, not llvmpipe: its far sparkles and the sea's
 # edge pixels land a little differently, so the tolerance is the native one widened (RMSE <= 4/255,
 # at most 1 % of pixels off by more than 24/255; measured: the README's tests table, STEP.web.smoke;
-# SMOKE_RMSE, where a test sets it, is its own limit, and where it is set says why).
+# SMOKE_RMSE and SMOKE_BAD_FRACTION, where a test sets them, are its own limits, and where they are
+# set says why).
 # With --query=Q the address also carries Q (name=value&...): the picture must then DIFFER from the
 # golden, the check that a parameter set from the address reaches the program. FLAGS go to the
 # program after the run's own (the step's SMOKE_FLAGS, add_step: what its golden holds still).
@@ -33,4 +34,5 @@ if [ -n "$query" ]; then
   echo "ok: ?${query#--query=} changes the picture"
   exit 0
 fi
-"$compare" "$out/$name.png" "$golden" --rmse "${SMOKE_RMSE:-4}" --bad-fraction 0.01 --diff "$out/$name.diff.png"
+"$compare" "$out/$name.png" "$golden" --rmse "${SMOKE_RMSE:-4}" --bad-fraction "${SMOKE_BAD_FRACTION:-0.01}" \
+  --diff "$out/$name.diff.png"
