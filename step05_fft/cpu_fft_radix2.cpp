@@ -29,11 +29,13 @@ void CpuFft::run() {
         std::vector<std::thread> workers;
         for (int t = 0; t < threads_; ++t)
             workers.emplace_back([&, t] {
-                for (int line = lines * t / threads_; line < lines * (t + 1) / threads_; ++line) {
+                // This thread's lines, a layer's run at a time: one call (one scratch line) each.
+                for (int line = lines * t / threads_, end = lines * (t + 1) / threads_; line < end;) {
                     std::complex<float>* layer = data_ + std::size_t(line / n_) * n_ * n_;
-                    const int i = line % n_;
-                    if (columns) fft.lines(layer + i, n_, 1, 1);
-                    else fft.lines(layer + std::size_t(i) * n_, 1, n_, 1);
+                    const int first = line % n_, count = std::min(end - line, n_ - first);
+                    if (columns) fft.lines(layer + first, n_, 1, count);
+                    else fft.lines(layer + std::size_t(first) * n_, 1, n_, count);
+                    line += count;
                 }
             });
         for (auto& w : workers) w.join();

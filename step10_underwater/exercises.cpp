@@ -4,6 +4,7 @@
 // exercise tool (exercises/) gathers every chapter's.
 #include "exercises/exercise.hpp"
 
+#include "step10_underwater/exercise_cases.hpp"
 #include "step10_underwater/lens.hpp"
 #include "step10_underwater/optics.hpp"
 
@@ -16,24 +17,17 @@ namespace exercises {
 
 namespace {
 
-// Exercise 2's cases: amplitudes 1 cm to 1 m, wavelengths 0.5 to 200 m.
-double case_amplitude(int index) { return 0.01 * std::pow(100.0, (index % 17) / 16.0); }
-double case_wavenumber(int index) { return 2 * 3.14159265358979323846 / (0.5 * std::pow(400.0, (index % 23) / 22.0)); }
-
 std::vector<double> focus_reference(int index) {
-    return {step10::crest_focal_depth(case_amplitude(index), case_wavenumber(index))};
+    return {step10::crest_focal_depth(step10::case_amplitude(index), step10::case_wavenumber(index))};
 }
-const char* kFocusDriver = R"(#include "step10_underwater/lens.hpp"
-#include <cmath>
+const char* kFocusDriver = R"(#include "step10_underwater/exercise_cases.hpp"
+#include "step10_underwater/lens.hpp"
 #include <cstdio>
 #include <cstdlib>
 int main(int argc, char** argv) {
     const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
-    for (int index = 0; index < cases; ++index) {
-        const double a = 0.01 * std::pow(100.0, (index % 17) / 16.0);
-        const double k = 2 * 3.14159265358979323846 / (0.5 * std::pow(400.0, (index % 23) / 22.0));
-        std::printf("%.17g\n", step10::crest_focal_depth(a, k));
-    }
+    for (int index = 0; index < cases; ++index)
+        std::printf("%.17g\n", step10::crest_focal_depth(step10::case_amplitude(index), step10::case_wavenumber(index)));
 }
 )";
 

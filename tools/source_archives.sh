@@ -23,7 +23,7 @@ SOURCE_ARCHIVES=(
 
 # fetch_sources NAME...: each NAME's tree in build/sources/NAME, fetched and checked if not yet there.
 fetch_sources() {
-  local name entry
+  local name entry candidate
   for name in "$@"; do
     entry=""
     for candidate in "${SOURCE_ARCHIVES[@]}"; do [ "${candidate%% *}" = "$name" ] && entry=$candidate; done
