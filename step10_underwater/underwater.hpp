@@ -11,6 +11,7 @@
 #include "common/params.hpp"
 #include "common/shader.hpp"
 #include "step06_foam_sky/sea_scene.hpp"
+#include "step10_underwater/caustics.hpp"
 #include "step10_underwater/water_colour.hpp"
 #include "step10_underwater/water_light.hpp"
 
@@ -35,24 +36,14 @@ public:
 
 private:
     void bind_water(const ocean::ShaderProgram& p, const step06::SeaScene& scene) const;
-    void make_grid();
 
     ocean::ProgramFactory programs_;
     int water_type_ = 0;
     float seabed_depth_ = 12;
     glm::vec3 seabed_colour_{0.76f, 0.70f, 0.50f};  // sand (sRGB)
     bool show_caustics_ = true;
-    int caustic_resolution_ = 256;  // texels along the window's side: 12.5 cm
-    float caustic_size_ = 32;       // metres
-    int grid_side_ = 256;           // rays along each side of the window (and its margin): 16 cm apart
-    glm::vec2 caustic_centre_{0.0f};
-    ocean::Texture caustics_;
-    bool caustics_failed_ = false;  // the GL could not draw into it: no caustics (a warning said so)
-    ocean::Framebuffer caustic_target_;
-    ocean::Buffer grid_indices_;
-    ocean::VertexArray grid_vao_;
-    int grid_made_for_ = 0;
-    GLsizei grid_index_count_ = 0;
+    CausticWindow caustic_window_;  // 32 m of seabed, 12.5 cm texels, rays 16 cm apart
+    Caustics caustics_;
 };
 
 }  // namespace step10

@@ -1,0 +1,88 @@
+#include "step10_underwater/caustics.hpp"
+
+#include "common/gl_texture.hpp"
+#include "step10_underwater/optics.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+namespace step10 {
+
+bool Caustics::make_texture(int resolution) {
+    texture_ = ocean::make_float_texture_2d(GL_RGBA16F, resolution, resolution);
+    target_ = ocean::make_framebuffer();
+    if (!ocean::attach_texture_2d(target_, GL_COLOR_ATTACHMENT0, texture_)) {
+        // A GL that cannot draw into half floats: the seabed is lit evenly, as under a flat sea.
+        std::cerr << "warning: this GL cannot draw into an RGBA16F texture: the seabed is drawn without caustics"
+                  << std::endl;
+        failed_ = true;
+        texture_.reset();
+        return false;
+    }
+    texture_resolution_ = resolution;
+    return true;
+}
+
+// Two triangles between each four neighbouring rays; the rays themselves are computed from
+// gl_VertexID, so the grid is indices alone.
+void Caustics::make_grid(int rays) {
+    std::vector<GLuint> indices;
+    indices.reserve(std::size_t(rays - 1) * std::size_t(rays - 1) * 6);
+    for (int j = 0; j + 1 < rays; ++j)
+        for (int i = 0; i + 1 < rays; ++i) {
+            const GLuint a = GLuint(j * rays + i), b = a + 1, c = a + GLuint(rays), d = c + 1;
+            indices.insert(indices.end(), {a, b, c, b, d, c});
+        }
+    grid_indices_ = ocean::make_buffer();
+    grid_vao_ = ocean::make_vertex_array();
+    // Made indices before they hold data (WebGL fixes a buffer's kind at its first binding).
+    ocean::element_buffer(grid_vao_, grid_indices_);
+    ocean::buffer_data(grid_indices_, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), GL_STATIC_DRAW);
+    grid_index_count_ = GLsizei(indices.size());
+    grid_rays_ = rays;
+}
+
+bool Caustics::update(const ocean::ProgramFactory& programs, const std::vector<std::string>& defines,
+                      const BindSea& bind_sea, const CausticWindow& window, const CausticLight& light) {
+    if (failed_) return false;
+    if (texture_resolution_ != window.resolution && !make_texture(window.resolution)) return false;
+    if (grid_rays_ != window.rays) make_grid(window.rays);
+    ocean::ShaderProgram* p =
+        programs("caustics", {"step10_underwater/shaders/caustics.vert", "step10_underwater/shaders/caustics.frag"}, defines);
+    if (p == nullptr) return false;
+
+    // The window follows the camera in whole texels, so the pattern does not swim as it moves.
+    const float texel = window.size / float(window.resolution);
+    centre_ = glm::vec2(std::round(light.around.x / texel), std::round(light.around.y / texel)) * texel;
+    size_ = window.size;
+    // The rays start over a margin of the window: light that the waves bend in from outside it.
+    const float step = window.size / float(window.rays - 1) * 1.25f;
+    const glm::vec2 origin = centre_ - 0.5f * step * float(window.rays - 1);
+
+    ocean::OffscreenPassState pass(grid_vao_.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_.id());
+    glViewport(0, 0, window.resolution, window.resolution);
+    const float clear[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, clear);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    bind_sea(*p);
+    glUseProgram(p->id());
+    const glm::vec3 to_sun = glm::normalize(light.to_sun);
+    p->set("u_grid_origin", origin);
+    p->set("u_grid_step", step);
+    p->set("u_grid_side", window.rays);
+    p->set("u_sun_in_air", -to_sun);
+    p->set("u_seabed_depth", light.seabed_depth);
+    p->set("u_caustic_centre", centre_);
+    p->set("u_caustic_size", window.size);
+    p->set("u_flat_transmitted", float(1 - fresnel_reflectance(std::acos(std::max(to_sun.y, 0.0f)), 1.0, kWaterIndex)));
+    glDrawElements(GL_TRIANGLES, grid_index_count_, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_BLEND);  // the pass state puts back only what was on before it
+    return true;
+}
+
+}  // namespace step10
