@@ -48,6 +48,11 @@ inline void upload_format_of(GLenum format, GLenum& upload_format, GLenum& type)
         type = GL_FLOAT;
         return;
     }
+    if (format == GL_RGBA8) {  // a picture drawn to be read back (step10's view below the waterline)
+        upload_format = GL_RGBA;
+        type = GL_UNSIGNED_BYTE;
+        return;
+    }
     type = format == GL_RGBA16F || format == GL_RG16F || format == GL_R16F ? GL_HALF_FLOAT : GL_FLOAT;
     upload_format = format == GL_RGBA32F || format == GL_RGBA16F ? GL_RGBA : format == GL_RG32F || format == GL_RG16F ? GL_RG : GL_RED;
 }

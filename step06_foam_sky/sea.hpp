@@ -64,6 +64,7 @@ public:
     glm::dvec3 world_origin() const { return {cascade_view_.origin.x, 0.0, cascade_view_.origin.y}; }
     // How far the waves can move a point, metres: the mesh's culling boxes are widened by it.
     double largest_displacement() const;
+    double height_variance() const { return height_variance_; }  // m^2, of the summed cascades' heights
     double choppiness() const { return params_.choppiness; }  // l: how far the crests are pulled together
     const step05::SpectrumParams& spectrum() const { return params_.spectrum; }
     double wind_direction() const { return params_.spectrum.wind_direction; }  // degrees, where it blows to
