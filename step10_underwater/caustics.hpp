@@ -1,8 +1,9 @@
-// The sunlight the waves focus on the seabed, computed as a lens makes it (caustics.vert/.frag):
-// a grid of the sun's rays, each refracted where it meets the moving surface and carried down to
-// the seabed, where the triangles between neighbouring rays are drawn into a texture of the seabed
-// around the camera. A texel holds the irradiance there over a flat sea's: 1 where the surface is
-// level, more where the crests gather light, less under the troughs that spread it.
+// The sunlight the waves focus on the seabed, computed as a lens makes it: a grid of the sun's
+// rays, each refracted where it meets the moving surface and carried down to the seabed
+// (caustic_rays.frag), where the light between neighbouring rays is drawn into a texture of the
+// seabed around the camera, as triangles or, where they land smaller than a texel, as points
+// (caustic_cells.glsl). A texel holds the irradiance there over a flat sea's: 1 where the surface
+// is level, more where the crests gather light, less under the troughs that spread it.
 #pragma once
 
 #include "common/gl.hpp"
@@ -50,12 +51,15 @@ public:
 
 private:
     bool make_texture(int resolution);
-    void make_grid(int rays);
+    bool make_grid(int rays);
+    bool cannot_draw();
 
     ocean::Texture texture_;
     ocean::Framebuffer target_;
     int texture_resolution_ = 0;
     bool failed_ = false;
+    ocean::Texture rays_, transmitted_;  // a texel a ray (caustic_rays.frag)
+    ocean::Framebuffer rays_target_;
     ocean::Buffer grid_indices_;
     ocean::VertexArray grid_vao_;
     int grid_rays_ = 0;
