@@ -1,6 +1,7 @@
 // step10_underwater's exercises (./ocean exercise step10_underwater N): Fresnel from below (GLSL,
-// held to optics.hpp's reflectance_water_to_air) and the depth at which a crest focuses the sun
-// (C++, held to lens.cpp's crest_focal_depth, which no page gives: the learner derives it). The
+// held to optics.hpp's reflectance_water_to_air), the depth at which a crest focuses the sun (C++,
+// held to lens.cpp's crest_focal_depth, which no page gives: the learner derives it), and the same
+// under a slanted sun (lens.cpp's slanted_crest_focal_depth, a variant no page shows). The
 // exercise tool (exercises/) gathers every chapter's.
 #include "exercises/exercise.hpp"
 
@@ -28,6 +29,22 @@ int main(int argc, char** argv) {
     const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
     for (int index = 0; index < cases; ++index)
         std::printf("%.17g\n", step10::crest_focal_depth(step10::case_amplitude(index), step10::case_wavenumber(index)));
+}
+)";
+
+std::vector<double> slanted_reference(int index) {
+    return {step10::slanted_crest_focal_depth(step10::case_amplitude(index), step10::case_wavenumber(index),
+                                              step10::case_sun_zenith(index))};
+}
+const char* kSlantedDriver = R"(#include "step10_underwater/exercise_cases.hpp"
+#include "step10_underwater/lens.hpp"
+#include <cstdio>
+#include <cstdlib>
+int main(int argc, char** argv) {
+    const int cases = argc > 1 ? std::atoi(argv[1]) : 0;
+    for (int index = 0; index < cases; ++index)
+        std::printf("%.17g\n", step10::slanted_crest_focal_depth(step10::case_amplitude(index), step10::case_wavenumber(index),
+                                                              step10::case_sun_zenith(index)));
 }
 )";
 
@@ -73,6 +90,28 @@ std::vector<Exercise> chapter() {
          {},
          [](const fs::path& work) {
              return check_cpp(work, "lens.cpp", kFocusDriver, 300, focus_reference, 1e-12);
+         }, kDerived},
+        // derived: a variant no page shows; the test against the ray tracing is the learner's to run
+        {"step10_underwater", 3, "A low sun focuses shallower", "lens.cpp",
+         "double slanted_crest_focal_depth(double amplitude, double wavenumber, double sun_zenith) {",
+         "    // TODO (exercise 3): metres below the crest at which a sun sun_zenith from the vertical comes to a focus.\n"
+         "    (void)amplitude, (void)wavenumber, (void)sun_zenith;\n"
+         "    return 0;\n",
+         "Write slanted_crest_focal_depth (C++, in lens.cpp), exercise 2 with the sun sun_zenith radians from\n"
+         "the vertical, shining along the wave. The light now meets the crest at an angle and leaves it at\n"
+         "another (Snell): a curved refracting surface met obliquely focuses the light that bends in its\n"
+         "curved plane at a distance along the refracted ray that an optics text gives (Coddington's\n"
+         "equations, the tangential one; Born and Wolf, or Hecht, on astigmatism). The wave's crest is\n"
+         "curved only that way, so that is the focal line: return how far below the crest it lies.\n"
+         "./ocean check compares 300 waves under suns 0 to 70 degrees from the vertical. Then: at what\n"
+         "depth do the caustics of the morning sun (60 degrees from the vertical) lie, for the 2 m waves\n"
+         "that focus 8.1 m down at noon? step10's tests trace rays to check the formula (test_optics.cpp).",
+         "Snell first: sin t = sin i / n. The tangential focus of parallel light: n cos^2 t / s = (n cos t - cos i) / R, "
+         "s measured along the refracted ray, which goes down at t from the vertical.",
+         "R = 1 / (a k^2); sin t = sin i / n; s = n R cos^2 t / (n cos t - cos i); depth = s cos t",
+         {},
+         [](const fs::path& work) {
+             return check_cpp(work, "lens.cpp", kSlantedDriver, 300, slanted_reference, 1e-12);
          }, kDerived},
     };
 }
