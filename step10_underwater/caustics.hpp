@@ -21,7 +21,7 @@ namespace step10 {
 // The patch of seabed the caustics are computed over, and how finely.
 struct CausticWindow {
     float size = 32;       // metres a side
-    int resolution = 256;  // texels a side: 12.5 cm at 32 m
+    int resolution = 200;  // texels a side: 16 cm at 32 m
     int rays = 256;        // rays a side, over the window and a margin of a quarter of it
 };
 

@@ -39,8 +39,6 @@ public:
         // A high sun, as divers choose: its beam reaches the seabed through less water, and the
         // caustics it draws there are sharp.
         p.set_default("sun_elevation", 45.0);
-        // An underwater camera exposes for the water, a stop darker than the sky above it.
-        p.set_default("exposure", 2.0);
         // 4 m down, looking up at 30 degrees: the edge of Snell's window (41.4 degrees above the
         // horizontal) is in the picture.
         use_camera({{0, -1, 0}, 6, 35, -30}, ocean::kOceanReach);

@@ -22,6 +22,8 @@ void Underwater::declare(ocean::ParamRegistry& p) {
     p.add_float("seabed_depth", &seabed_depth_, 1, 200, "metres from the mean level down to the sand").logarithmic();
     p.add_color("seabed_colour", &seabed_colour_, "the sand's colour (sRGB)");
     p.add_bool("show_caustics", &show_caustics_, "the sunlight the waves focus on the seabed");
+    p.add_float("below_exposure", &below_exposure_, 0.1f, 20, "how much more the camera lets in below the surface")
+        .logarithmic();
     p.add_float("caustic_size", &caustic_window_.size, 8, 200, "metres of seabed the caustics are computed over, around the camera");
 }
 
@@ -38,6 +40,7 @@ void Underwater::bind_water(const ocean::ShaderProgram& p, const step06::SeaScen
     p.set("u_particle_scattering", glm::vec3(w.particle_scattering));
     p.set("u_particle_g", float(w.particle_g));
     p.set("u_seabed_depth", float(w.seabed_depth));
+    p.set("u_below_exposure", below_exposure_);
     p.set("u_seabed_albedo", glm::vec3(w.seabed_albedo));
     p.set("u_sun_in_water", glm::vec3(w.sun_in_water));
     p.set("u_sun_beam", glm::vec3(w.sun_beam));

@@ -172,6 +172,8 @@ run step10_underwater screenshot.png
 run step10_underwater window.png --set wind_speed=0 --set sun_elevation=90 --set camera_pitch=-41.4
 run step10_underwater seabed.png --set camera_pitch=35 --set camera_target_y=-6 --set seabed_depth=8
 run step10_underwater coastal.png --set water_type=coastal
+# The waterline: a level camera whose lens a wave (8 m/s wind) half covers at t = 5 s.
+run step10_underwater waterline.png --set wind_speed=8 --set camera_target_y=0.58 --set camera_distance=0.5 --set camera_pitch=6
 
 # step05's one Gerstner wave at three steepnesses Q k A (sea=gerstner), crests across the view.
 gerstner() {  # gerstner STEEPNESS

@@ -14,5 +14,5 @@ void main() {
     vec3 d = normalize(far.xyz / far.w - u_eye);
     // A ray upwards that missed the mesh (beyond its patches): the surface stands in, far away.
     float reach = d.y > 1e-4 ? max(-u_eye.y, 0.0) / d.y : 1e4;
-    out_colour = vec4(water_ray(u_eye, d, reach), 1.0);
+    out_colour = vec4(u_below_exposure * water_ray(u_eye, d, reach), 1.0);
 }

@@ -41,5 +41,5 @@ void main() {
     vec3 mirrored = reflect(d, -n);
     light += r * water_ray(world.xyz, mirrored, 1e4);
     float depth = max(-u_eye.y, 0.0);
-    out_colour = vec4(light * exp(-extinction() * t) + inscatter(depth, d, t), 1.0);
+    out_colour = vec4(u_below_exposure * (light * exp(-extinction() * t) + inscatter(depth, d, t)), 1.0);
 }

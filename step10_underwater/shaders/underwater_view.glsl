@@ -7,6 +7,9 @@ layout(binding = UNIT_CAUSTICS) uniform sampler2D u_caustics;  // r: irradiance 
 uniform vec2 u_caustic_centre;  // the window of seabed the texture covers: its centre (metres, x z)
 uniform float u_caustic_size;   // and its side
 uniform bool u_show_caustics;
+// A camera below the surface exposes for the water, which holds far less light than the sky: the
+// light it records is scaled by this before step06's exposure (the sea above keeps its own).
+uniform float u_below_exposure;
 
 // The caustic texture at a point of the seabed, filtered bilinearly by hand (the texture is
 // nearest-filtered in every profile); towards its window's edge it fades to 1, a flat sea's light,

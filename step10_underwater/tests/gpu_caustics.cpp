@@ -9,7 +9,7 @@
 // meet the same thin triangles at the same place across it, and a triangle thinner than a texel
 // adds its light to the one texel whose centre it covers (right on average over many offsets,
 // not in one): slanted, the rows meet them at every offset. The caustic window is finer than the
-// program's (12.5 cm texels over 32 m): 4 m, two wavelengths, at 1024 texels (3.9 mm) from 1024
+// program's (16 cm texels over 32 m): 4 m, two wavelengths, at 1024 texels (3.9 mm) from 1024
 // rays a side (4.9 mm apart), so that the focus is resolved: a line's binned peak lies past the
 // focus by about the depth over which the folds leaving the cusp stay within one bin
 // (test_optics.cpp; at 512 bins a wavelength, about 5 %).
