@@ -82,8 +82,8 @@ std::vector<Exercise> chapter() {
          "wave a cos(k x) on the water. Near its top the crest is a lens: find its radius of curvature from\n"
          "a and k, then where a refracting surface of that radius focuses parallel light in water of index\n"
          "kWaterIndex (optics.hpp). ./ocean check compares 300 waves, 1 cm to 1 m high, 0.5 to 200 m long.\n"
-         "Then: how deep do 2 m waves 10 cm high focus, and why are the sharpest caustics in shallow water\n"
-         "made by the shortest waves?",
+         "Then: how deep do 10 m waves 40 cm from trough to crest (a = 20 cm) focus, and why are the\n"
+         "sharpest caustics in shallow water made by the shortest waves?",
          "A curve y = h(x) at a point where h' = 0 has radius of curvature 1 / |h''|. The lens formula is "
          "in section 4.",
          "R = 1 / (a k^2); depth = n R / (n - 1)",
@@ -92,7 +92,7 @@ std::vector<Exercise> chapter() {
              return check_cpp(work, "lens.cpp", kFocusDriver, 300, focus_reference, 1e-12);
          }, kDerived},
         // derived: a variant no page shows; the test against the ray tracing is the learner's to run
-        {"step10_underwater", 3, "A low sun focuses shallower", "lens.cpp",
+        {"step10_underwater", 3, "How deep a low sun focuses", "lens.cpp",
          "double slanted_crest_focal_depth(double amplitude, double wavenumber, double sun_zenith) {",
          "    // TODO (exercise 3): metres below the crest at which a sun sun_zenith from the vertical comes to a focus.\n"
          "    (void)amplitude, (void)wavenumber, (void)sun_zenith;\n"

@@ -68,7 +68,7 @@ Figure caustic_floor() {
         f.data << fraction << ' ' << seabed_irradiance(sea).contrast() << '\n';
     }
     f.script << "set terminal pngcairo size 1000,440 font \"DejaVu Sans,12\" linewidth 1.5\nset output 'caustic_floor.png'\n"
-             << "set multiplot layout 1,2 title sprintf(\"The floor under one wave, 2 m long and 5 cm high, the sun overhead: "
+             << "set multiplot layout 1,2 title sprintf(\"The floor under one wave, 2 m long, a = 5 cm, the sun overhead: "
                 "its crests focus %.1f m down (caustics\\\\_reference.hpp)\", "
              << focus << ")\n"
              << "set title \"the light across one wave, at four depths\"\n"

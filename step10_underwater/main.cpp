@@ -7,8 +7,9 @@
 // Controls: as step06 (drag, wheel, C for the fly camera: dive and surface with it).
 //
 // The program is step06's SeaScene (the sea, the sky, the sea renderer, the image passes), with
-// one part of its own, Underwater (underwater.hpp), which takes over two moments of the frame while
-// the camera is below the surface.
+// two parts of its own: Underwater (underwater.hpp), which takes over two moments of the frame
+// while the camera is below the surface, and Waterline (waterline.hpp), which decides which side
+// each pixel is drawn from and puts the two pictures together when the lens is at the surface.
 #include "common/app.hpp"
 #include "step06_foam_sky/sea_scene.hpp"
 #include "step10_underwater/underwater.hpp"

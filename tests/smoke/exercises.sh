@@ -46,7 +46,7 @@ refuses force-without-torque step07_buoyancy 2 hull_forces.cpp '    return {};' 
 refuses mode-without-sources step08_wakes 1 mode_step.cpp '    return mode;' '    if (K == 0) return mode; const double w = std::sqrt(9.81 * K); return {mode.eta * std::cos(w * dt) + (K / w) * mode.phi * std::sin(w * dt), mode.phi * std::cos(w * dt) - (9.81 / w) * mode.eta * std::sin(w * dt)};'
 # Kelvin's angle with the energy at the phase speed (n taken as 1 everywhere): every wake 90 degrees.
 refuses kelvin-phase-speed step08_wakes 2 kelvin.cpp '    return 0;' '    return std::asin(1.0);' 'value 0'
-# The overhead sun's focus kept for a slanted sun: right at noon, too deep for every other sun.
+# The overhead sun's focus kept for a slanted sun: right at noon, wrong for every other sun.
 refuses overhead-focus-for-a-low-sun step10_underwater 3 lens.cpp '    return 0;' '    return kWaterIndex / ((kWaterIndex - 1) * amplitude * wavenumber * wavenumber);' 'value 0'
 # The image a source instead of a sink (a rigid lid): phi is no longer 0 on the surface.
 refuses rigid-lid-image step09_radiation 1 image_source.cpp '    return {};' '    SourceAt at; for (int m = 0; m < 2; ++m) { const glm::dvec3 d = x - (m ? glm::dvec3(xi.x, -xi.y, xi.z) : xi); const double r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z); at.potential += -1 / (4 * ocean::kPi * r); at.along += (d.x * n.x + d.y * n.y + d.z * n.z) / (4 * ocean::kPi * r * r * r); } return at;' 'value 0'
