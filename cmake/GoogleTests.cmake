@@ -18,3 +18,23 @@ function(ocean_gtests target prefix)
        "if(${target}_list)\n  set_tests_properties(\${${target}_list} PROPERTIES LABELS \"${ARG_LABELS}\")\nendif()\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${label_script}")
 endfunction()
+
+# ocean_sanitizer_skips(TARGET TEST...): in the sanitizer build, these tests that ocean_gtests found
+# in TARGET (full names, as ctest lists them) are not run: unit tests that run the chapter's code for long simulated times
+# (tens of seconds each under ASan), each beside a shorter test of the same suite that takes the
+# same code through ASan and UBSan. The default builds run them all. Called in the chapter's
+# CMakeLists.txt after add_step (ctest reads this script after the discovered tests).
+function(ocean_sanitizer_skips target)
+  if(NOT OCEAN_SANITIZE)
+    return()
+  endif()
+  set(script "${CMAKE_CURRENT_BINARY_DIR}/${target}_sanitizer_skips.cmake")
+  set(lines "")
+  foreach(test ${ARGN})
+    # (list(FIND): ctest's scripts run without CMake's newer policies, IN_LIST among them)
+    string(APPEND lines "list(FIND ${target}_list \"${test}\" found)\n"
+                        "if(NOT found EQUAL -1)\n  set_tests_properties(\"${test}\" PROPERTIES DISABLED TRUE)\nendif()\n")
+  endforeach()
+  file(WRITE "${script}" "${lines}")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${script}")
+endfunction()

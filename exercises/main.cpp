@@ -46,10 +46,10 @@ Verdict check_on_gpu(const Exercise& e, const fs::path& work) {
             return std::string(verdict.pass ? "P" : "F") + (verdict.formula_hint ? "H" : "-") +
                    verdict.detail;
         },
-        kGpuCheckSeconds);
+        gpu_check_seconds());
     const Ending& ending = result.ending;
     if (ending.kind == Ending::TimedOut)
-        return {false, time_limit_verdict("the check of your shader", kGpuCheckSeconds), false};
+        return {false, time_limit_verdict("the check of your shader", gpu_check_seconds()), false};
     if (ending.kind == Ending::Signalled)
         return {false, "the check of your shader crashed: " + signal_name(ending.code), false};
     if (ending.code != 0 || result.text.size() < 2)
