@@ -14,6 +14,18 @@
 
 namespace step10 {
 
+void set_water(const ocean::ShaderProgram& p, const WaterLight& w) {
+    p.set("u_absorption", glm::vec3(w.absorption));
+    p.set("u_water_scattering", glm::vec3(w.water_scattering));
+    p.set("u_particle_scattering", glm::vec3(w.particle_scattering));
+    p.set("u_particle_g", float(w.particle_g));
+    p.set("u_seabed_depth", float(w.seabed_depth));
+    p.set("u_seabed_albedo", glm::vec3(w.seabed_albedo));
+    p.set("u_sun_in_water", glm::vec3(w.sun_in_water));
+    p.set("u_sun_beam", glm::vec3(w.sun_beam));
+    p.set("u_sky_down", glm::vec3(w.sky_down));
+}
+
 void Underwater::declare(ocean::ParamRegistry& p) {
     const auto group = p.group("underwater");
     std::vector<std::string> names;
@@ -34,17 +46,8 @@ WaterLight Underwater::light(const step06::LookParams& look) const {
 }
 
 void Underwater::bind_water(const ocean::ShaderProgram& p, const step06::SeaScene& scene) const {
-    const WaterLight w = light(scene.look());
-    p.set("u_absorption", glm::vec3(w.absorption));
-    p.set("u_water_scattering", glm::vec3(w.water_scattering));
-    p.set("u_particle_scattering", glm::vec3(w.particle_scattering));
-    p.set("u_particle_g", float(w.particle_g));
-    p.set("u_seabed_depth", float(w.seabed_depth));
+    set_water(p, light(scene.look()));
     p.set("u_below_exposure", below_exposure_);
-    p.set("u_seabed_albedo", glm::vec3(w.seabed_albedo));
-    p.set("u_sun_in_water", glm::vec3(w.sun_in_water));
-    p.set("u_sun_beam", glm::vec3(w.sun_beam));
-    p.set("u_sky_down", glm::vec3(w.sky_down));
     p.set("u_caustic_centre", caustics_.centre());
     p.set("u_caustic_size", caustics_.size());
     p.set("u_show_caustics", int(show_caustics_ && caustics_.texture() != 0 && !caustics_.failed()));

@@ -19,6 +19,9 @@
 
 namespace step10 {
 
+// Gives a program that includes water.glsl the water `w` describes (its uniforms, by name).
+void set_water(const ocean::ShaderProgram& p, const WaterLight& w);
+
 class Underwater {
 public:
     void declare(ocean::ParamRegistry& p);
