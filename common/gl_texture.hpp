@@ -48,11 +48,6 @@ inline void upload_format_of(GLenum format, GLenum& upload_format, GLenum& type)
         type = GL_FLOAT;
         return;
     }
-    if (format == GL_RGBA8) {  // a picture drawn to be read back (step10's view below the waterline)
-        upload_format = GL_RGBA;
-        type = GL_UNSIGNED_BYTE;
-        return;
-    }
     type = format == GL_RGBA16F || format == GL_RG16F || format == GL_R16F ? GL_HALF_FLOAT : GL_FLOAT;
     upload_format = format == GL_RGBA32F || format == GL_RGBA16F ? GL_RGBA : format == GL_RG32F || format == GL_RG16F ? GL_RG : GL_RED;
 }
@@ -302,7 +297,8 @@ inline void bind_texture(GLuint unit, GLenum target, GLuint texture) {
 #endif
 }
 
-// An 8-bit RGBA image as a 2D texture, one level, nearest (a figure the panel or a view shows).
+// An 8-bit RGBA image as a 2D texture, one level, nearest (a figure the panel or a view shows);
+// rgba null: no image yet, a picture to draw into.
 inline Texture make_colour_texture_2d(GLsizei width, GLsizei height, const void* rgba) {
     Texture texture = make_texture(GL_TEXTURE_2D);
 #if OCEAN_GL_BIND_TO_EDIT
@@ -313,7 +309,7 @@ inline Texture make_colour_texture_2d(GLsizei width, GLsizei height, const void*
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 #else
     glTextureStorage2D(texture.id(), 1, GL_RGBA8, width, height);
-    glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    if (rgba != nullptr) glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 #endif

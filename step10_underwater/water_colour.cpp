@@ -72,4 +72,10 @@ glm::dvec3 seen_through_water(const WaterType& water, const glm::dvec3& surface,
     return surface * t + limit * (1.0 - t);
 }
 
+const WaterType* water_type_named(const std::string& name) {
+    for (const WaterType& w : kWaterTypes)
+        if (name == w.name) return &w;
+    return nullptr;
+}
+
 }  // namespace step10

@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <string>
 
 namespace step10 {
 
@@ -58,6 +59,8 @@ constexpr WaterType kClearOcean{"clear_ocean", {0.005, 0.005, 0.01}, {0.03, 0.03
 constexpr WaterType kCoastal{"coastal", {0.05, 0.06, 0.25}, {0.5, 0.5, 0.5}, 0.9};
 // The program's `water_type` choices, in order.
 constexpr std::array<WaterType, 3> kWaterTypes = {kClearOcean, kCoastal, kPureSeaWater};
+// The water type of that name, or null.
+const WaterType* water_type_named(const std::string& name);
 
 glm::dvec3 absorption(const WaterType& water);  // a
 glm::dvec3 scattering(const WaterType& water);  // b

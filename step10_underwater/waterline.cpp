@@ -10,6 +10,9 @@
 
 namespace step10 {
 
+namespace {
+
+// The lens's lowest and highest points, metres above the mean level.
 glm::dvec2 lens_heights(const ocean::Camera& camera, float aspect, const glm::dvec3& origin) {
     const glm::dmat4 to_world = glm::inverse(glm::dmat4(camera.projection(aspect)) * glm::dmat4(camera.view(origin)));
     glm::dvec2 heights(1e30, -1e30);
@@ -21,6 +24,8 @@ glm::dvec2 lens_heights(const ocean::Camera& camera, float aspect, const glm::dv
         }
     return heights;
 }
+
+}  // namespace
 
 Sides sides_reached(const ocean::Camera& camera, float aspect, const glm::dvec3& origin, double reach) {
     const glm::dvec2 lens = lens_heights(camera, aspect, origin);
@@ -39,7 +44,7 @@ void Waterline::declare(ocean::ParamRegistry& p) {
 
 void Waterline::bind_below_target(glm::ivec2 size) {
     if (size != below_size_) {
-        below_picture_ = ocean::make_float_texture_2d(GL_RGBA8, size.x, size.y);
+        below_picture_ = ocean::make_colour_texture_2d(size.x, size.y, nullptr);
         below_target_ = ocean::make_framebuffer();
         ocean::attach_texture_2d(below_target_, GL_COLOR_ATTACHMENT0, below_picture_);
         below_size_ = size;

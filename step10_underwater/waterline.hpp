@@ -28,8 +28,6 @@ Sides sides_reached(const ocean::Camera& camera, float aspect, const glm::dvec3&
 // Gaussian of the sea's variance, and five standard deviations are passed about once in three
 // million looks (whatever sideways displacement does, it moves heights the field already has).
 double water_reach(const step06::Sea& sea);
-// The lens's lowest and highest points, metres above the mean level.
-glm::dvec2 lens_heights(const ocean::Camera& camera, float aspect, const glm::dvec3& origin);
 
 class Waterline {
 public:

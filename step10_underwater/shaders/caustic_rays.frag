@@ -4,25 +4,15 @@
 // the seabed. Each texel keeps where its ray came from and where it landed, for the passes that
 // gather the light (caustic_cells.glsl).
 #include "step06_foam_sky/shaders/cascades.glsl"
+// water.glsl: its Fresnel, and u_seabed_depth (metres from the mean level down to the seabed)
+#include "water.glsl"
 
 uniform vec2 u_grid_origin;  // metres: the first ray's rest position (x z), from the sea's origin
 uniform float u_grid_step;   // metres between rays
 uniform vec3 u_sun_in_air;   // the sun's light, travelling (down)
-uniform float u_seabed_depth;
 
 layout(location = 0) out vec4 out_ray;          // xy: where it crossed the level plane, zw: where it landed
 layout(location = 1) out vec4 out_transmitted;  // r: the share of its light the surface let through
-
-const float WATER_INDEX = 1.333;
-
-// Fresnel for the sunlight entering the water at cos_i from the normal (air side): 1 - R.
-float fresnel_into_water(float cos_i) {
-    float sin_t2 = (1.0 - cos_i * cos_i) / (WATER_INDEX * WATER_INDEX);
-    float cos_t = sqrt(1.0 - sin_t2);
-    float rs = (cos_i - WATER_INDEX * cos_t) / (cos_i + WATER_INDEX * cos_t);
-    float rp = (WATER_INDEX * cos_i - cos_t) / (WATER_INDEX * cos_i + cos_t);
-    return 1.0 - 0.5 * (rs * rs + rp * rp);
-}
 
 void main() {
     vec2 rest = u_grid_origin + u_grid_step * floor(gl_FragCoord.xy);
@@ -37,5 +27,7 @@ void main() {
     // the sun: the displaced, tilted surface catches what that area lets through).
     vec2 source = at.xz - u_sun_in_air.xz * (at.y / u_sun_in_air.y);
     out_ray = vec4(source, landed.xz);
-    out_transmitted = vec4(fresnel_into_water(max(dot(-u_sun_in_air, n), 0.0)), 0.0, 0.0, 1.0);
+    // What the surface lets in: a ray reflects the same share either way across it (Stokes), so
+    // from the air at the sun's angle it is water.glsl's Fresnel from below at the refracted one.
+    out_transmitted = vec4(1.0 - fresnel_from_water(max(-dot(ray, n), 0.0)), 0.0, 0.0, 1.0);
 }

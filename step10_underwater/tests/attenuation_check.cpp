@@ -14,20 +14,12 @@
 #include "common/image.hpp"
 #include "step06_foam_sky/look_params.hpp"
 #include "step10_underwater/water_light.hpp"
+#include "tests/picture_camera.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <string>
-
-namespace {
-
-double srgb_to_linear(double encoded) {
-    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     if (argc != 7) {
@@ -40,9 +32,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "attenuation_check: %s\n", error.c_str());
         return 2;
     }
-    const step10::WaterType* water = nullptr;
-    for (const auto& w : step10::kWaterTypes)
-        if (std::strcmp(w.name, argv[2]) == 0) water = &w;
+    const step10::WaterType* water = step10::water_type_named(argv[2]);
     if (water == nullptr) {
         std::fprintf(stderr, "attenuation_check: no water type '%s'\n", argv[2]);
         return 2;
@@ -61,7 +51,7 @@ int main(int argc, char** argv) {
     for (int y = image->height / 2 - 4; y <= image->height / 2 + 4; ++y)
         for (int x = image->width / 2 - 4; x <= image->width / 2 + 4; ++x)
             for (int c = 0; c < 3; ++c)
-                measured[c] += srgb_to_linear(image->rgba[(std::size_t(y) * image->width + x) * 4 + c] / 255.0) / 81;
+                measured[c] += ocean_test::srgb_to_linear(image->rgba[(std::size_t(y) * image->width + x) * 4 + c] / 255.0) / 81;
 
     int failures = 0, checked = 0;
     const char* names[3] = {"red", "green", "blue"};

@@ -27,7 +27,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numeric>
 #include <vector>
 
 namespace {
@@ -70,7 +69,7 @@ struct CausticsOnOneWave : ocean_test::GlTest {
     // The floor at `depth`, over a flat sea's, averaged along the crests and folded into one
     // wavelength: each texel's centre to its phase k . x, in kBins bins, bin 0 starting under a
     // crest (k . x = 0).
-    std::vector<double> floor_at(double depth) {
+    step10::SeabedIrradiance floor_at(double depth) {
         const bool drawn = caustics.update(
             cache.factory(), {"EXTRA_WAVES 0"},
             [this](const ocean::ShaderProgram& p) {
@@ -93,18 +92,9 @@ struct CausticsOnOneWave : ocean_test::GlTest {
                 count[bin] += 1;
             }
         for (std::size_t b = 0; b < sum.size(); ++b) sum[b] /= std::max(count[b], 1.0);
-        return sum;
+        return {sum};
     }
 };
-
-double mean_of(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); }
-double peak_of(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
-double contrast_of(const std::vector<double>& v) {
-    const double m = mean_of(v);
-    double sum = 0;
-    for (double e : v) sum += (e - m) * (e - m);
-    return std::sqrt(sum / double(v.size())) / m;
-}
 
 TEST_F(CausticsOnOneWave, TheFloorReceivesTheTransmittedLight) {
     // The mean over the floor is what the surface let through (the reference's mean, itself held
@@ -117,7 +107,7 @@ TEST_F(CausticsOnOneWave, TheFloorReceivesTheTransmittedLight) {
         step10::CausticSea at = sea;
         at.depth = depth;
         const double reference = step10::seabed_irradiance(at).mean();
-        const double gpu = mean_of(floor_at(depth)) * flat;
+        const double gpu = floor_at(depth).mean() * flat;
         std::printf("depth %5.2f m: mean %.5f (reference %.5f, %+.2f %%)\n", depth, gpu, reference, 100 * (gpu / reference - 1));
         EXPECT_NEAR(gpu / reference, 1, 0.02) << depth << " m";
     }
@@ -128,17 +118,17 @@ TEST_F(CausticsOnOneWave, ThePatternIsTheReferences) {
     // of the mean (the maps' bilinear slopes and the half floats' 0.1 % are what differ).
     const double focus = step10::crest_focal_depth(sea);
     for (double depth : {0.25 * focus, 0.5 * focus}) {
-        const std::vector<double> gpu = floor_at(depth);
+        const step10::SeabedIrradiance gpu = floor_at(depth);
         step10::CausticSea at = sea;
         at.depth = depth;
-        at.bins = int(gpu.size());
+        at.bins = int(gpu.irradiance.size());
         const step10::SeabedIrradiance reference = step10::seabed_irradiance(at);
         const double flat = 1 - step10::fresnel_reflectance(0, 1.0, step10::kWaterIndex);
         double worst = 0;
-        for (std::size_t i = 0; i < gpu.size(); ++i)
-            worst = std::max(worst, std::abs(gpu[i] * flat - reference.irradiance[i]) / reference.mean());
+        for (std::size_t i = 0; i < gpu.irradiance.size(); ++i)
+            worst = std::max(worst, std::abs(gpu.irradiance[i] * flat - reference.irradiance[i]) / reference.mean());
         std::printf("depth %5.2f m: peak/mean %.3f (reference %.3f), worst bin %.2f %% of the mean\n", depth,
-                    peak_of(gpu) / mean_of(gpu), reference.peak_over_mean(), 100 * worst);
+                    gpu.peak_over_mean(), reference.peak_over_mean(), 100 * worst);
         EXPECT_LT(worst, 0.03) << depth << " m";
     }
 }
@@ -149,10 +139,10 @@ TEST_F(CausticsOnOneWave, BrightestAtTheCrestsFocalDepthAndFadingPastIt) {
     const double focus = step10::crest_focal_depth(sea);
     std::vector<double> depths, peaks, contrasts;
     for (double d = 0.6 * focus; d < 1.41 * focus; d += 0.05 * focus) {
-        const std::vector<double> floor = floor_at(d);
+        const step10::SeabedIrradiance floor = floor_at(d);
         depths.push_back(d);
-        peaks.push_back(peak_of(floor) / mean_of(floor));
-        contrasts.push_back(contrast_of(floor));
+        peaks.push_back(floor.peak_over_mean());
+        contrasts.push_back(floor.contrast());
         std::printf("depth %5.2f m (%.2f f): peak/mean %6.2f, contrast %.3f\n", d, d / focus, peaks.back(), contrasts.back());
     }
     const std::size_t brightest = std::size_t(std::max_element(peaks.begin(), peaks.end()) - peaks.begin());

@@ -41,9 +41,7 @@ TEST_F(WaterOnTheGpu, WaterGlslIsItsCpuReference) {
     ASSERT_NE(p, nullptr);
     for (const char* water_name : {"clear_ocean", "coastal"})
         for (double sun_elevation : {45.0, 20.0}) {
-            const step10::WaterType* water = nullptr;
-            for (const auto& w : step10::kWaterTypes)
-                if (std::string(w.name) == water_name) water = &w;
+            const step10::WaterType* water = step10::water_type_named(water_name);
             ASSERT_NE(water, nullptr);
             step06::LookParams look;
             look.sun_elevation = float(sun_elevation);
